@@ -1,0 +1,48 @@
+// Checks that a triangle mesh is a valid closed surface, and measures it.
+#ifndef MeshValidation_h
+#define MeshValidation_h
+
+#include "SliceMeshTypes.h"
+
+#include <string>
+
+namespace slicemesh
+{
+
+struct MeshValidation
+{
+  std::size_t vertices = 0;
+  std::size_t triangles = 0;
+  std::size_t degenerateTriangles = 0;        ///< zero area or repeated vertex
+  std::size_t boundaryEdges = 0;              ///< edges with one triangle
+  std::size_t nonManifoldEdges = 0;           ///< edges with more than two triangles
+  std::size_t nonManifoldVertices = 0;        ///< vertices whose triangles form more than one fan
+  std::size_t inconsistentEdges = 0;          ///< edges used twice in the same direction
+  std::size_t selfIntersections = 0;          ///< pairs of triangles that intersect other than along shared simplices
+  bool selfIntersectionChecked = false;       ///< false when the mesh was not manifold enough to check
+  std::size_t components = 0;
+  long eulerCharacteristic = 0;               ///< V - E + F
+  double area = 0.0;                          ///< mm^2
+  double volume = 0.0;                        ///< signed enclosed volume, mm^3 (positive when outward)
+  double minAngleDegrees = 0.0;
+  double fractionAnglesBelow30 = 0.0;         ///< fraction of triangles with an angle under 30 degrees
+
+  bool closed() const { return boundaryEdges == 0; }
+  bool manifold() const { return nonManifoldEdges == 0 && nonManifoldVertices == 0; }
+  bool oriented() const { return inconsistentEdges == 0 && volume > 0.0; }
+  bool valid() const
+  {
+    return closed() && manifold() && oriented() && degenerateTriangles == 0 && selfIntersectionChecked &&
+           selfIntersections == 0;
+  }
+  /** One line such as "12840 triangles, closed, manifold, no self-intersections, volume 33400.1 mm^3". */
+  std::string summary() const;
+};
+
+/** Measures the mesh and checks it: boundary and non-manifold edges, non-manifold vertices,
+ *  consistent orientation, degenerate triangles and self-intersections (CGAL). */
+MeshValidation validateMesh(const TriangleMesh& mesh);
+
+} // namespace slicemesh
+
+#endif

@@ -1,0 +1,49 @@
+// The whole Logic path: a stack of slice contours in, a closed triangle surface out.
+#ifndef SurfaceReconstruction_h
+#define SurfaceReconstruction_h
+
+#include "SliceMeshTypes.h"
+
+#include <functional>
+
+namespace slicemesh
+{
+
+enum class CapPlacement
+{
+  HalfSliceBeyond, ///< caps half a slice beyond the last contour, where the voxels end (default)
+  AtSlice          ///< caps flat on the last contour's own slice
+};
+
+struct ReconstructionOptions
+{
+  CapPlacement capPlacement = CapPlacement::HalfSliceBeyond;
+  /** Vertical walls (coincident contours, cap rims) are cut into rows about this tall, in mm;
+   *  0 means: the median in-plane edge length of the stack, so wall triangles are well shaped. */
+  double wallRowHeight = 0.0;
+  /** Points of the same slice closer than this (mm) are one point. */
+  double mergeTolerance = 1e-6;
+  /** Called with a fraction 0..1 as slabs are tiled; may be empty. */
+  std::function<void(double)> progress;
+};
+
+struct ReconstructionStatistics
+{
+  std::size_t slabs = 0;
+  std::size_t crossingPoints = 0;   ///< points where a contour crosses its neighbour's contour
+  std::size_t steinerPoints = 0;    ///< interior points inserted to lift flat chords
+  std::size_t wallTriangles = 0;    ///< triangles on vertical walls (coincident contours, cap rims)
+  std::size_t capTriangles = 0;     ///< triangles closing the ends of components
+  std::size_t tilingTriangles = 0;  ///< triangles over difference polygons
+};
+
+/** Reconstructs the closed surface bounded by the contours of the stack.
+ *  Contours may come in any orientation; they are oriented and nested first.
+ *  Throws slicemesh::Error on input it cannot mesh. */
+TriangleMesh reconstructSurface(const ContourStack& stack,
+                                const ReconstructionOptions& options = {},
+                                ReconstructionStatistics* statistics = nullptr);
+
+} // namespace slicemesh
+
+#endif

@@ -1,0 +1,33 @@
+// Turns a label map or a grayscale volume into a binary mask (1 inside, 0 outside).
+#ifndef VolumeSegmentation_h
+#define VolumeSegmentation_h
+
+#include "VolumeReader.h"
+
+#include <optional>
+
+namespace slicemesh
+{
+
+enum class InputKind
+{
+  Automatic, ///< a label map when every voxel is a small non-negative integer, else grayscale
+  LabelMap,
+  Grayscale
+};
+
+struct SegmentationOptions
+{
+  InputKind kind = InputKind::Automatic;
+  /** Label map: the label to mesh; empty means every non-zero voxel. */
+  std::optional<int> label;
+  /** Grayscale: voxels >= threshold are inside; empty means Otsu's threshold. */
+  std::optional<double> threshold;
+};
+
+/** Throws slicemesh::Error when the mask would be empty (naming the labels that do occur). */
+MaskVolume::Pointer segmentVolume(const ScalarVolume* volume, const SegmentationOptions& options);
+
+} // namespace slicemesh
+
+#endif

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Installs SliceMesh's build and test dependencies from Debian 12's packages.
+# Idempotent and non-interactive; run as root (or through sudo).
+set -euo pipefail
+
+packages=(
+  cmake g++ make pkg-config
+  libinsighttoolkit5-dev libvtk9-dev libcgal-dev libeigen3-dev libgmp-dev libmpfr-dev
+  libgtest-dev libtclap-dev
+  libxml2-utils
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "SliceMesh dependencies: all installed"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -q
+$SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
