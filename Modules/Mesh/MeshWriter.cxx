@@ -1,0 +1,281 @@
+// Stack frame -> physical space, and VTK writers chosen by file extension, written atomically.
+#include "MeshWriter.h"
+
+#include <vtkAlgorithm.h>
+#include <vtkCallbackCommand.h>
+#include <vtkExecutive.h>
+#include <vtkCellArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPLYWriter.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataWriter.h>
+#include <vtkSTLWriter.h>
+#include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <unistd.h>
+
+namespace slicemesh
+{
+
+namespace
+{
+
+double determinant(const std::array<std::array<double, 3>, 3>& m)
+{
+  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+const char* spaceName(CoordinateSystem system)
+{
+  return system == CoordinateSystem::RAS ? "RAS" : "LPS";
+}
+
+/** "SPACE=LPS": the tag vtkMRMLModelStorageNode looks for in headers and comments. */
+std::string spaceTag(CoordinateSystem system)
+{
+  return std::string("SPACE=") + spaceName(system);
+}
+
+std::string lowercaseExtension(const std::filesystem::path& path)
+{
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+/** The mesh as vtkPolyData, with the SPACE string array in its field data (how Slicer tags .vtp). */
+vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh, CoordinateSystem system)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
+  for (std::size_t i = 0; i < mesh.points.size(); ++i)
+  {
+    const Point3& p = mesh.points[i];
+    points->SetPoint(static_cast<vtkIdType>(i), p.x, p.y, p.z);
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->AllocateExact(static_cast<vtkIdType>(mesh.triangles.size()), 3 * static_cast<vtkIdType>(mesh.triangles.size()));
+  for (const Triangle& t : mesh.triangles)
+  {
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    polys->InsertNextCell(3, ids);
+  }
+  auto polyData = vtkSmartPointer<vtkPolyData>::New();
+  polyData->SetPoints(points);
+  polyData->SetPolys(polys);
+
+  vtkNew<vtkStringArray> space;
+  space->SetName("SPACE");
+  space->InsertNextValue(spaceName(system));
+  polyData->GetFieldData()->AddArray(space);
+  return polyData;
+}
+
+/** Collects VTK's error messages instead of letting them go to the console, so the caller can
+ *  report one line. */
+class VTKErrorCollector
+{
+public:
+  explicit VTKErrorCollector(vtkAlgorithm* watched)
+  {
+    this->Callback->SetClientData(this);
+    this->Callback->SetCallback(
+      [](vtkObject*, unsigned long, void* clientData, void* callData)
+      {
+        auto* self = static_cast<VTKErrorCollector*>(clientData);
+        if (self->FirstMessage.empty() && callData)
+        {
+          std::string text = static_cast<const char*>(callData);
+          // VTK messages span several lines ("ERROR: In file, line ...\nvtkX (0x..): message"): keep the last.
+          while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+          {
+            text.pop_back();
+          }
+          const std::size_t lastBreak = text.find_last_of('\n');
+          self->FirstMessage = lastBreak == std::string::npos ? text : text.substr(lastBreak + 1);
+        }
+      });
+    // The executive reports a failed RequestData on its own, so watch it as well.
+    for (vtkObject* object : { static_cast<vtkObject*>(watched), static_cast<vtkObject*>(watched->GetExecutive()) })
+    {
+      object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+      object->AddObserver(vtkCommand::WarningEvent, this->Callback);
+    }
+  }
+  const std::string& firstMessage() const { return this->FirstMessage; }
+
+private:
+  vtkNew<vtkCallbackCommand> Callback;
+  std::string FirstMessage;
+};
+
+/** Runs a configured VTK writer (vtkWriter or vtkXMLWriter: both have Write() but share no base
+ *  that declares it); returns an empty string on success, else why it failed. */
+template <typename WriterType>
+std::string runVTKWriter(WriterType* writer)
+{
+  VTKErrorCollector errors(writer);
+  const int written = writer->Write();
+  if (written == 1 && writer->GetErrorCode() == 0 && errors.firstMessage().empty())
+  {
+    return {};
+  }
+  return errors.firstMessage().empty() ? std::string("the VTK writer failed") : errors.firstMessage();
+}
+
+/** Wavefront OBJ written directly: VTK 9.1's vtkOBJWriter has no way to add the SPACE comment
+ *  that vtkOBJReader::GetComment (and so Slicer) reads from the file's leading comment lines. */
+std::string writeOBJ(const TriangleMesh& mesh, CoordinateSystem system, const std::string& path)
+{
+  std::ofstream out(path, std::ios::binary);
+  if (!out)
+  {
+    return "cannot open the file for writing";
+  }
+  out << "# SliceMesh output. " << spaceTag(system) << "\n";
+  out << std::setprecision(std::numeric_limits<double>::max_digits10);
+  for (const Point3& p : mesh.points)
+  {
+    out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+  }
+  for (const Triangle& t : mesh.triangles)
+  {
+    out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+  }
+  out.flush();
+  return out ? std::string() : std::string("writing the file failed (disk full?)");
+}
+
+/** Writes to path in the format its extension names; returns an empty string on success. */
+std::string writeByExtension(const TriangleMesh& mesh, CoordinateSystem system, const std::string& extension,
+                             const std::string& path)
+{
+  if (extension == ".obj")
+  {
+    return writeOBJ(mesh, system, path);
+  }
+  const vtkSmartPointer<vtkPolyData> polyData = toPolyData(mesh, system);
+  const std::string header = "SliceMesh output. " + spaceTag(system);
+  if (extension == ".vtp")
+  {
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetInputData(polyData);
+    writer->SetFileName(path.c_str());
+    writer->SetDataModeToAppended();
+    writer->SetCompressorTypeToZLib();
+    return runVTKWriter(writer.GetPointer());
+  }
+  if (extension == ".vtk")
+  {
+    vtkNew<vtkPolyDataWriter> writer;
+    writer->SetInputData(polyData);
+    writer->SetFileName(path.c_str());
+    writer->SetFileTypeToBinary();
+    // Legacy 4.2, as Slicer writes it: 5.1 files are unreadable for VTK < 9 and most other tools.
+    writer->SetFileVersion(42);
+    writer->SetHeader(header.c_str());
+    return runVTKWriter(writer.GetPointer());
+  }
+  if (extension == ".stl")
+  {
+    vtkNew<vtkSTLWriter> writer;
+    writer->SetInputData(polyData);
+    writer->SetFileName(path.c_str());
+    writer->SetFileTypeToBinary();
+    writer->SetHeader(header.c_str());
+    return runVTKWriter(writer.GetPointer());
+  }
+  if (extension == ".ply")
+  {
+    vtkNew<vtkPLYWriter> writer;
+    writer->SetInputData(polyData);
+    writer->SetFileName(path.c_str());
+    writer->SetFileTypeToBinary();
+    writer->AddComment(spaceTag(system));
+    return runVTKWriter(writer.GetPointer());
+  }
+  return "unsupported extension";
+}
+
+} // namespace
+
+TriangleMesh mapToPhysicalSpace(const TriangleMesh& stackMesh, const SliceFrame& frame, CoordinateSystem system)
+{
+  const auto& d = frame.direction;
+  // LPS -> RAS negates x and y: a rotation by 180 degrees (determinant +1), so only the
+  // direction matrix can mirror the mesh.
+  const double sign = system == CoordinateSystem::RAS ? -1.0 : 1.0;
+  TriangleMesh physical;
+  physical.points.reserve(stackMesh.points.size());
+  for (const Point3& s : stackMesh.points)
+  {
+    Point3 p;
+    p.x = sign * (frame.origin[0] + d[0][0] * s.x + d[0][1] * s.y + d[0][2] * s.z);
+    p.y = sign * (frame.origin[1] + d[1][0] * s.x + d[1][1] * s.y + d[1][2] * s.z);
+    p.z = frame.origin[2] + d[2][0] * s.x + d[2][1] * s.y + d[2][2] * s.z;
+    physical.points.push_back(p);
+  }
+  physical.triangles = stackMesh.triangles;
+  if (determinant(d) < 0.0)
+  {
+    // A mirror turns outward normals inward; swapping two corners turns them back.
+    for (Triangle& t : physical.triangles)
+    {
+      std::swap(t[1], t[2]);
+    }
+  }
+  return physical;
+}
+
+void writeMesh(const TriangleMesh& physicalMesh, CoordinateSystem system, const std::string& path)
+{
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  const std::string extension = lowercaseExtension(target);
+  if (extension != ".vtp" && extension != ".vtk" && extension != ".stl" && extension != ".ply" && extension != ".obj")
+  {
+    throw Error("cannot write mesh '" + path + "': unknown extension '" + extension +
+                "' (use .vtp, .vtk, .stl, .ply or .obj)");
+  }
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec))
+  {
+    throw Error("cannot write mesh '" + path + "': folder '" + folder.string() + "' does not exist");
+  }
+  if (fs::is_directory(target, ec))
+  {
+    throw Error("cannot write mesh '" + path + "': it is a folder");
+  }
+
+  // Same folder, so the rename is atomic; hidden and unique per process, same extension for the writers.
+  const fs::path temporary =
+    folder / ("." + target.stem().string() + ".partial-" + std::to_string(::getpid()) + extension);
+  const std::string failure = writeByExtension(physicalMesh, system, extension, temporary.string());
+  if (!failure.empty())
+  {
+    fs::remove(temporary, ec);
+    throw Error("cannot write mesh '" + path + "': " + failure);
+  }
+  if (std::rename(temporary.c_str(), target.c_str()) != 0)
+  {
+    fs::remove(temporary, ec);
+    throw Error("cannot write mesh '" + path + "': renaming the finished file into place failed");
+  }
+}
+
+} // namespace slicemesh

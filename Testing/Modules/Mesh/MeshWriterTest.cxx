@@ -1,0 +1,230 @@
+// writeMesh: every format round-trips through VTK's readers, carries its SPACE tag, and a failed
+// write leaves an existing file untouched.
+#include "MeshWriter.h"
+#include "TestMeshes.h"
+
+#include <gtest/gtest.h>
+
+#include <vtkCellArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkOBJReader.h>
+#include <vtkPLYReader.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataReader.h>
+#include <vtkSTLReader.h>
+#include <vtkStringArray.h>
+#include <vtkXMLPolyDataReader.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace slicemesh
+{
+namespace
+{
+
+/** A fresh, empty folder per test under the build tree. */
+fs::path freshFolder(const std::string& name)
+{
+  const fs::path folder = fs::path(SLICEMESH_TEST_OUTPUT_DIR) / name;
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  return folder;
+}
+
+std::string fileText(const fs::path& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/** What a reader gives back: the polydata and the coordinate-system text Slicer would look at. */
+struct ReadBack
+{
+  vtkSmartPointer<vtkPolyData> polyData;
+  std::string spaceText;
+};
+
+std::string fieldDataSpace(vtkPolyData* polyData)
+{
+  auto* space = vtkStringArray::SafeDownCast(polyData->GetFieldData()->GetAbstractArray("SPACE"));
+  return space && space->GetNumberOfValues() == 1 ? "SPACE=" + space->GetValue(0) : std::string();
+}
+
+ReadBack readBack(const fs::path& path)
+{
+  const std::string extension = path.extension().string();
+  ReadBack result;
+  if (extension == ".vtp")
+  {
+    vtkNew<vtkXMLPolyDataReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    result.polyData = reader->GetOutput();
+    result.spaceText = fieldDataSpace(result.polyData);
+  }
+  else if (extension == ".vtk")
+  {
+    vtkNew<vtkPolyDataReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    result.polyData = reader->GetOutput();
+    result.spaceText = reader->GetHeader() ? reader->GetHeader() : "";
+  }
+  else if (extension == ".stl")
+  {
+    vtkNew<vtkSTLReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    result.polyData = reader->GetOutput();
+    result.spaceText = reader->GetHeader() ? reader->GetHeader() : "";
+  }
+  else if (extension == ".ply")
+  {
+    vtkNew<vtkPLYReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    result.polyData = reader->GetOutput();
+    vtkStringArray* comments = reader->GetComments();
+    for (vtkIdType i = 0; comments && i < comments->GetNumberOfValues(); ++i)
+    {
+      result.spaceText += comments->GetValue(i) + "\n";
+    }
+  }
+  else if (extension == ".obj")
+  {
+    vtkNew<vtkOBJReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    result.polyData = reader->GetOutput();
+    result.spaceText = reader->GetComment() ? reader->GetComment() : "";
+  }
+  return result;
+}
+
+/** Signed volume of what a reader returned (triangles only), to check the winding survived. */
+double signedVolumeOf(vtkPolyData* polyData)
+{
+  TriangleMesh mesh;
+  for (vtkIdType i = 0; i < polyData->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    polyData->GetPoint(i, p);
+    mesh.points.push_back({ p[0], p[1], p[2] });
+  }
+  vtkNew<vtkIdList> ids;
+  vtkCellArray* polys = polyData->GetPolys();
+  polys->InitTraversal();
+  while (polys->GetNextCell(ids))
+  {
+    if (ids->GetNumberOfIds() == 3)
+    {
+      mesh.triangles.push_back({ static_cast<std::int32_t>(ids->GetId(0)), static_cast<std::int32_t>(ids->GetId(1)),
+                                 static_cast<std::int32_t>(ids->GetId(2)) });
+    }
+  }
+  return testing::signedVolume(mesh);
+}
+
+class MeshWriterFormat : public ::testing::TestWithParam<std::string>
+{
+};
+
+TEST_P(MeshWriterFormat, RoundTripsWithCountsWindingAndSpaceTag)
+{
+  const std::string extension = GetParam();
+  const fs::path folder = freshFolder("roundtrip" + extension);
+  const TriangleMesh mesh = testing::box(2, 3, 4);
+  for (CoordinateSystem system : { CoordinateSystem::LPS, CoordinateSystem::RAS })
+  {
+    const std::string space = system == CoordinateSystem::LPS ? "LPS" : "RAS";
+    const fs::path path = folder / ("box-" + space + extension);
+    writeMesh(mesh, system, path.string());
+
+    const ReadBack back = readBack(path);
+    ASSERT_TRUE(back.polyData) << path;
+    EXPECT_EQ(back.polyData->GetNumberOfPoints(), 8) << path;
+    EXPECT_EQ(back.polyData->GetNumberOfPolys(), 12) << path;
+    EXPECT_NEAR(signedVolumeOf(back.polyData), 24.0, 1e-4) << path;
+    EXPECT_NE(back.spaceText.find("SPACE=" + space), std::string::npos) << path << ": '" << back.spaceText << "'";
+  }
+  // Only the two finished files: no temporary left behind.
+  EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()), 2);
+}
+
+INSTANTIATE_TEST_SUITE_P(AllFormats, MeshWriterFormat, ::testing::Values(".vtp", ".vtk", ".stl", ".ply", ".obj"),
+                         [](const auto& info) { return info.param.substr(1); });
+
+TEST(MeshWriter, LegacyVTKCarriesSpaceInFieldDataToo)
+{
+  const fs::path path = freshFolder("legacy") / "box.vtk";
+  writeMesh(testing::box(1, 1, 1), CoordinateSystem::LPS, path.string());
+  EXPECT_EQ(fieldDataSpace(readBack(path).polyData), "SPACE=LPS");
+}
+
+TEST(MeshWriter, ExtensionIsCaseInsensitive)
+{
+  const fs::path path = freshFolder("uppercase") / "box.STL";
+  writeMesh(testing::box(1, 1, 1), CoordinateSystem::LPS, path.string());
+  EXPECT_TRUE(fs::exists(path));
+}
+
+TEST(MeshWriter, UnknownExtensionIsAOneLineError)
+{
+  const fs::path path = freshFolder("unknown") / "box.xyz";
+  try
+  {
+    writeMesh(testing::box(1, 1, 1), CoordinateSystem::LPS, path.string());
+    FAIL() << "expected slicemesh::Error";
+  }
+  catch (const Error& e)
+  {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(".xyz"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+  EXPECT_FALSE(fs::exists(path));
+}
+
+TEST(MeshWriter, MissingFolderIsAnError)
+{
+  const fs::path path = freshFolder("missing") / "no-such-folder" / "box.vtp";
+  EXPECT_THROW(writeMesh(testing::box(1, 1, 1), CoordinateSystem::LPS, path.string()), Error);
+  EXPECT_FALSE(fs::exists(path.parent_path()));
+}
+
+TEST(MeshWriter, ReplacesAnExistingFileOnSuccess)
+{
+  const fs::path path = freshFolder("replace") / "box.vtp";
+  std::ofstream(path) << "old contents";
+  writeMesh(testing::box(1, 1, 1), CoordinateSystem::LPS, path.string());
+  EXPECT_EQ(readBack(path).polyData->GetNumberOfPolys(), 12);
+}
+
+TEST(MeshWriter, FailedWriteLeavesExistingFileUntouched)
+{
+  const fs::path folder = freshFolder("atomic");
+  for (const std::string extension : { ".vtp", ".vtk", ".stl", ".ply", ".obj" })
+  {
+    const fs::path path = folder / ("box" + extension);
+    std::ofstream(path) << "precious";
+    // Block the writer's temporary name (same folder, ".<stem>.partial-<pid><ext>") with a folder, so
+    // the format writer itself fails; permissions would not stop root.
+    const fs::path blocker = folder / (".box.partial-" + std::to_string(::getpid()) + extension);
+    fs::create_directory(blocker);
+    fs::create_directory(blocker / "keep-non-empty");
+    EXPECT_THROW(writeMesh(testing::box(1, 1, 1), CoordinateSystem::LPS, path.string()), Error) << extension;
+    EXPECT_EQ(fileText(path), "precious") << extension;
+    fs::remove_all(blocker);
+  }
+}
+
+} // namespace
+} // namespace slicemesh
