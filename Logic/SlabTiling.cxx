@@ -1,0 +1,827 @@
+#include "SlabTiling.h"
+
+#include "PlanarGeometry.h"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <map>
+#include <sstream>
+#include <unordered_map>
+
+namespace slicemesh
+{
+
+namespace
+{
+
+// Which slice a lifted point belongs to.
+enum Level : signed char
+{
+  NoLevel = -1,
+  LowerLevel = 0,
+  UpperLevel = 1
+};
+
+struct FaceData
+{
+  bool visited = false;
+  bool inLower = false;
+  bool inUpper = false;
+  int lowerInnermost = -1; ///< innermost lower contour containing the face
+  int upperInnermost = -1;
+  int component = -1;      ///< difference polygon the face belongs to, -1 outside the symmetric difference
+  std::array<signed char, 3> cornerLevel{ NoLevel, NoLevel, NoLevel }; ///< for corners on both slices
+  std::array<std::int32_t, 3> lifted{ -1, -1, -1 };                   ///< mesh ids, in output winding
+};
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
+using FaceBase =
+  CGAL::Constrained_triangulation_face_base_2<Kernel, CGAL::Triangulation_face_base_with_info_2<FaceData, Kernel>>;
+using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
+using CDT = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>;
+using VertexHandle = CDT::Vertex_handle;
+using FaceHandle = CDT::Face_handle;
+
+/** A point of the projected overlay: a vertex of the lower slice, of the upper slice, of both
+ *  (the slices meet there), or a Steiner point inside a difference polygon. */
+struct OverlayVertex
+{
+  Point2 p;
+  std::int32_t lowerId = -1; ///< mesh id on the lower slice
+  std::int32_t upperId = -1;
+  std::int32_t steinerId = -1;
+  bool onBoth() const { return lowerId >= 0 && upperId >= 0; }
+  bool isSteiner() const { return steinerId >= 0; }
+};
+
+/** What an overlay edge is: part of a lower contour, an upper contour, or both. `from` is the
+ *  endpoint the contour leaves from (its solid lies to the left). */
+struct OverlayEdge
+{
+  bool lower = false;
+  bool upper = false;
+  int lowerFrom = -1;
+  int upperFrom = -1;
+  int lowerContour = -1;
+  int upperContour = -1;
+};
+
+std::uint64_t edgeKey(int a, int b)
+{
+  if (a > b)
+    std::swap(a, b);
+  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
+}
+
+/** A difference polygon: a connected piece of (lower \ upper) or (upper \ lower). */
+struct Component
+{
+  bool lowerSide = false; ///< part of lower \ upper: the surface over it has the solid below
+  bool touchesLowerLevel = false;
+  bool touchesUpperLevel = false;
+  bool isCap() const { return touchesLowerLevel != touchesUpperLevel; }
+  Level capLevel() const { return touchesLowerLevel ? LowerLevel : UpperLevel; }
+};
+
+/** Faces around a vertex between two consecutive contour edges, in counter-clockwise order. */
+struct Sector
+{
+  VertexHandle vertex;
+  std::vector<FaceHandle> faces;
+  std::vector<VertexHandle> fan; ///< far ends of the interior edges between consecutive faces
+  Level startLevel = NoLevel;
+  Level endLevel = NoLevel;
+};
+
+double minAngle3(const Point3& a, const Point3& b, const Point3& c)
+{
+  auto angle = [](const Point3& o, const Point3& p, const Point3& q) {
+    const double ux = p.x - o.x, uy = p.y - o.y, uz = p.z - o.z;
+    const double vx = q.x - o.x, vy = q.y - o.y, vz = q.z - o.z;
+    const double cross = std::sqrt(std::pow(uy * vz - uz * vy, 2) + std::pow(uz * vx - ux * vz, 2) +
+                                   std::pow(ux * vy - uy * vx, 2));
+    return std::atan2(cross, ux * vx + uy * vy + uz * vz);
+  };
+  return std::min({ angle(a, b, c), angle(b, c, a), angle(c, a, b) });
+}
+
+} // namespace
+
+struct SlabOverlay::Impl
+{
+  const PreparedSlice* lower = nullptr;
+  const PreparedSlice* upper = nullptr;
+  double z0 = 0.0;
+  double z1 = 0.0;
+  double tolerance = 0.0;
+
+  std::vector<OverlayVertex> vertices;
+  std::unordered_map<std::uint64_t, OverlayEdge> edges;
+  CDT cdt;
+  std::vector<Component> components;
+  std::vector<char> lowerContinues, upperContinues;
+  std::vector<std::pair<int, int>> correspondences;
+
+  // Segments of each slice, for the distance interpolation of Steiner heights.
+  std::vector<std::pair<Point2, Point2>> lowerSegments, upperSegments;
+
+  void buildVertices();
+  void buildEdges();
+  void triangulate();
+  void classify();
+  std::vector<Sector> sectorsAround(VertexHandle v);
+  Level edgeLevel(const OverlayEdge& e, bool lowerSide) const
+  {
+    if (lowerSide)
+      return e.lower ? LowerLevel : UpperLevel;
+    return e.upper ? UpperLevel : LowerLevel;
+  }
+  const OverlayEdge* edgeBetween(VertexHandle a, VertexHandle b) const
+  {
+    auto it = edges.find(edgeKey(a->info(), b->info()));
+    return it == edges.end() ? nullptr : &it->second;
+  }
+  bool isDifference(FaceHandle f) const { return !cdt.is_infinite(f) && f->info().component >= 0; }
+  bool inMixed(FaceHandle f) const { return isDifference(f) && !components[f->info().component].isCap(); }
+  Level singleLevel(const OverlayVertex& v) const
+  {
+    if (v.isSteiner() || v.onBoth())
+      return NoLevel;
+    return v.lowerId >= 0 ? LowerLevel : UpperLevel;
+  }
+  double interpolatedHeight(const Point2& p) const;
+  std::vector<Sector> mixedSectors(bool assignCornerLevels);
+  std::size_t liftFlatChords(MeshBuilder& mesh);
+  std::vector<std::int32_t> wallChain(int vertex, std::map<int, std::vector<std::int32_t>>& chains, int rows,
+                                      MeshBuilder& mesh) const;
+  void addWallStrip(const std::vector<std::int32_t>& from, const std::vector<std::int32_t>& to, MeshBuilder& mesh,
+                    std::size_t& counter) const;
+};
+
+SlabOverlay::SlabOverlay(const PreparedSlice* lower, const PreparedSlice* upper, double z0, double z1,
+                         double tolerance)
+  : m_Impl(std::make_unique<Impl>())
+{
+  Impl& d = *m_Impl;
+  d.lower = lower && !lower->contours.empty() ? lower : nullptr;
+  d.upper = upper && !upper->contours.empty() ? upper : nullptr;
+  d.z0 = z0;
+  d.z1 = z1;
+  d.tolerance = tolerance;
+  d.lowerContinues.assign(d.lower ? d.lower->contours.size() : 0, 0);
+  d.upperContinues.assign(d.upper ? d.upper->contours.size() : 0, 0);
+  d.buildVertices();
+  d.buildEdges();
+  d.triangulate();
+  d.classify();
+}
+
+SlabOverlay::~SlabOverlay() = default;
+
+const std::vector<char>& SlabOverlay::lowerContinues() const
+{
+  return m_Impl->lowerContinues;
+}
+
+const std::vector<char>& SlabOverlay::upperContinues() const
+{
+  return m_Impl->upperContinues;
+}
+
+const std::vector<std::pair<int, int>>& SlabOverlay::correspondences() const
+{
+  return m_Impl->correspondences;
+}
+
+void SlabOverlay::Impl::buildVertices()
+{
+  // Points of the two slices closer than the tolerance are one overlay vertex: hash them on a grid
+  // of the tolerance's size and look in the neighbouring cells.
+  const double cell = std::max(tolerance, 1e-12);
+  std::unordered_map<std::uint64_t, std::vector<int>> grid;
+  auto key = [](long long x, long long y) {
+    return static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ULL ^ static_cast<std::uint64_t>(y);
+  };
+  auto findNear = [&](const Point2& p) -> int {
+    const long long cx = static_cast<long long>(std::floor(p.x / cell));
+    const long long cy = static_cast<long long>(std::floor(p.y / cell));
+    for (long long x = cx - 1; x <= cx + 1; ++x)
+      for (long long y = cy - 1; y <= cy + 1; ++y)
+      {
+        auto it = grid.find(key(x, y));
+        if (it == grid.end())
+          continue;
+        for (int index : it->second)
+          if (distance(vertices[index].p, p) <= tolerance)
+            return index;
+      }
+    return -1;
+  };
+  auto add = [&](const PreparedSlice* slice, bool isLower) {
+    if (!slice)
+      return;
+    for (std::size_t c = 0; c < slice->contours.size(); ++c)
+    {
+      const Polygon2& polygon = slice->contours[c];
+      for (std::size_t i = 0; i < polygon.size(); ++i)
+      {
+        const std::int32_t id = slice->firstVertexId[c] + static_cast<std::int32_t>(i);
+        int index = findNear(polygon[i]);
+        if (index >= 0 && (isLower ? vertices[index].lowerId : vertices[index].upperId) >= 0)
+        {
+          std::ostringstream message;
+          message << "contours of the slice at z = " << slice->z << " mm touch each other at (" << polygon[i].x
+                  << ", " << polygon[i].y << ")";
+          throw Error(message.str());
+        }
+        if (index < 0)
+        {
+          index = static_cast<int>(vertices.size());
+          vertices.push_back({ polygon[i] });
+          grid[key(static_cast<long long>(std::floor(polygon[i].x / cell)),
+                   static_cast<long long>(std::floor(polygon[i].y / cell)))]
+            .push_back(index);
+        }
+        (isLower ? vertices[index].lowerId : vertices[index].upperId) = id;
+      }
+    }
+  };
+  add(lower, true);
+  add(upper, false);
+}
+
+void SlabOverlay::Impl::buildEdges()
+{
+  // Overlay index of each contour vertex, by mesh id.
+  std::unordered_map<std::int32_t, int> lowerIndex, upperIndex;
+  for (int i = 0; i < static_cast<int>(vertices.size()); ++i)
+  {
+    if (vertices[i].lowerId >= 0)
+      lowerIndex[vertices[i].lowerId] = i;
+    if (vertices[i].upperId >= 0)
+      upperIndex[vertices[i].upperId] = i;
+  }
+  auto add = [&](const PreparedSlice* slice, bool isLower, std::unordered_map<std::int32_t, int>& index,
+                 std::vector<std::pair<Point2, Point2>>& segments) {
+    if (!slice)
+      return;
+    for (std::size_t c = 0; c < slice->contours.size(); ++c)
+    {
+      const std::size_t n = slice->contours[c].size();
+      for (std::size_t i = 0; i < n; ++i)
+      {
+        const int a = index.at(slice->firstVertexId[c] + static_cast<std::int32_t>(i));
+        const int b = index.at(slice->firstVertexId[c] + static_cast<std::int32_t>((i + 1) % n));
+        OverlayEdge& e = edges[edgeKey(a, b)];
+        (isLower ? e.lower : e.upper) = true;
+        (isLower ? e.lowerFrom : e.upperFrom) = a;
+        (isLower ? e.lowerContour : e.upperContour) = static_cast<int>(c);
+        segments.emplace_back(slice->contours[c][i], slice->contours[c][(i + 1) % n]);
+      }
+    }
+  };
+  add(lower, true, lowerIndex, lowerSegments);
+  add(upper, false, upperIndex, upperSegments);
+}
+
+void SlabOverlay::Impl::triangulate()
+{
+  std::vector<std::pair<Kernel::Point_2, int>> points;
+  points.reserve(vertices.size());
+  for (int i = 0; i < static_cast<int>(vertices.size()); ++i)
+    points.emplace_back(Kernel::Point_2(vertices[i].p.x, vertices[i].p.y), i);
+  cdt.insert(points.begin(), points.end());
+  if (cdt.number_of_vertices() != vertices.size())
+    throw Error("slab overlay: two contour points coincide in projection beyond the merge tolerance");
+  std::vector<VertexHandle> handles(vertices.size());
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    handles[v->info()] = v;
+  for (const auto& [key, edge] : edges)
+  {
+    (void)edge;
+    cdt.insert_constraint(handles[key >> 32], handles[key & 0xffffffffULL]);
+  }
+  if (cdt.number_of_vertices() != vertices.size())
+  {
+    std::ostringstream message;
+    message << "contours of the slices at z = " << z0 << " and " << z1
+            << " mm cross where they should only meet at common vertices";
+    throw Error(message.str());
+  }
+}
+
+void SlabOverlay::Impl::classify()
+{
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
+    f->info() = FaceData{};
+  auto lowerParent = [&](int c) { return lower->nesting.parent[c]; };
+  auto upperParent = [&](int c) { return upper->nesting.parent[c]; };
+
+  // Flood fill from the outside: crossing a contour edge toggles membership of that slice's region
+  // and steps in or out of that contour.
+  std::deque<FaceHandle> queue;
+  FaceHandle start = cdt.infinite_face();
+  start->info().visited = true;
+  queue.push_back(start);
+  while (!queue.empty())
+  {
+    FaceHandle f = queue.front();
+    queue.pop_front();
+    for (int i = 0; i < 3; ++i)
+    {
+      FaceHandle g = f->neighbor(i);
+      if (g->info().visited)
+        continue;
+      FaceData next = f->info();
+      next.component = -1;
+      if (f->is_constrained(i))
+      {
+        const OverlayEdge* e = edgeBetween(f->vertex(CDT::cw(i)), f->vertex(CDT::ccw(i)));
+        if (!e)
+          throw Error("slab overlay: a triangulation edge is not an edge of either slice");
+        if (e->lower)
+        {
+          next.inLower = !next.inLower;
+          next.lowerInnermost =
+            next.lowerInnermost == e->lowerContour ? lowerParent(e->lowerContour) : e->lowerContour;
+        }
+        if (e->upper)
+        {
+          next.inUpper = !next.inUpper;
+          next.upperInnermost =
+            next.upperInnermost == e->upperContour ? upperParent(e->upperContour) : e->upperContour;
+        }
+      }
+      next.visited = true;
+      g->info() = next;
+      queue.push_back(g);
+    }
+  }
+
+  // Correspondence: a contour continues into the other slice where a face inside (for an outer
+  // boundary) or inside its hole (for a hole) has the same status in the other slice.
+  std::fill(lowerContinues.begin(), lowerContinues.end(), 0);
+  std::fill(upperContinues.begin(), upperContinues.end(), 0);
+  std::map<std::pair<int, int>, bool> pairs;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+  {
+    const FaceData& info = f->info();
+    if (info.inLower == info.inUpper)
+    {
+      if (info.lowerInnermost >= 0)
+        lowerContinues[info.lowerInnermost] = 1;
+      if (info.upperInnermost >= 0)
+        upperContinues[info.upperInnermost] = 1;
+      if (info.inLower)
+        pairs[{ info.lowerInnermost, info.upperInnermost }] = true;
+    }
+  }
+  correspondences.clear();
+  for (const auto& entry : pairs)
+    correspondences.push_back(entry.first);
+
+  // Difference polygons: connected pieces of the symmetric difference, split by contour edges.
+  components.clear();
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+  {
+    if (f->info().inLower == f->info().inUpper || f->info().component >= 0)
+      continue;
+    const int id = static_cast<int>(components.size());
+    Component component;
+    component.lowerSide = f->info().inLower;
+    std::vector<FaceHandle> stack{ f };
+    f->info().component = id;
+    while (!stack.empty())
+    {
+      FaceHandle g = stack.back();
+      stack.pop_back();
+      for (int i = 0; i < 3; ++i)
+      {
+        if (g->is_constrained(i))
+        {
+          const OverlayEdge* e = edgeBetween(g->vertex(CDT::cw(i)), g->vertex(CDT::ccw(i)));
+          (edgeLevel(*e, component.lowerSide) == LowerLevel ? component.touchesLowerLevel
+                                                             : component.touchesUpperLevel) = true;
+          continue;
+        }
+        FaceHandle h = g->neighbor(i);
+        if (!cdt.is_infinite(h) && h->info().component < 0)
+        {
+          h->info().component = id;
+          stack.push_back(h);
+        }
+      }
+    }
+    components.push_back(component);
+  }
+}
+
+std::vector<Sector> SlabOverlay::Impl::sectorsAround(VertexHandle v)
+{
+  // Faces around v counter-clockwise; the edge after face f (v at index i) is (f, ccw(i)).
+  std::vector<FaceHandle> ring;
+  auto circulator = cdt.incident_faces(v), done = circulator;
+  do
+  {
+    ring.push_back(circulator);
+  } while (++circulator != done);
+  const std::size_t n = ring.size();
+  std::size_t first = n;
+  for (std::size_t k = 0; k < n; ++k)
+    if (ring[k]->is_constrained(CDT::ccw(ring[k]->index(v))))
+    {
+      first = k;
+      break;
+    }
+  std::vector<Sector> sectors;
+  if (first == n)
+    return sectors;
+  // Walk once around, starting just after a contour edge.
+  Sector current;
+  current.vertex = v;
+  for (std::size_t step = 1; step <= n; ++step)
+  {
+    FaceHandle f = ring[(first + step) % n];
+    const int i = f->index(v);
+    current.faces.push_back(f);
+    if (f->is_constrained(CDT::ccw(i)))
+    {
+      sectors.push_back(current);
+      current = Sector{};
+      current.vertex = v;
+    }
+    else
+      current.fan.push_back(f->vertex(CDT::cw(i)));
+  }
+  for (Sector& s : sectors)
+  {
+    FaceHandle f0 = s.faces.front(), f1 = s.faces.back();
+    if (!isDifference(f0))
+      continue;
+    const bool lowerSide = components[f0->info().component].lowerSide;
+    const int i0 = f0->index(v), i1 = f1->index(v);
+    // The contour edge before the first face is (v, f0->vertex(ccw(i0))), after the last (v, f1->vertex(cw(i1))).
+    s.startLevel = edgeLevel(*edgeBetween(v, f0->vertex(CDT::ccw(i0))), lowerSide);
+    s.endLevel = edgeLevel(*edgeBetween(v, f1->vertex(CDT::cw(i1))), lowerSide);
+  }
+  return sectors;
+}
+
+double SlabOverlay::Impl::interpolatedHeight(const Point2& p) const
+{
+  // Distance-ratio interpolation between the two contours (the linear blend of their distance
+  // transforms): 0 on the lower contour, 1 on the upper one.
+  auto nearest = [&](const std::vector<std::pair<Point2, Point2>>& segments) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& [a, b] : segments)
+      best = std::min(best, distanceToSegment(p, a, b));
+    return best;
+  };
+  const double dLower = nearest(lowerSegments);
+  const double dUpper = nearest(upperSegments);
+  const double t = dLower + dUpper > 0.0 ? dLower / (dLower + dUpper) : 0.5;
+  return z0 + t * (z1 - z0);
+}
+
+std::vector<Sector> SlabOverlay::Impl::mixedSectors(bool assignCornerLevels)
+{
+  std::vector<Sector> mixed;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+  {
+    if (!vertices[v->info()].onBoth())
+      continue;
+    for (Sector& s : sectorsAround(v))
+    {
+      if (!inMixed(s.faces.front()))
+        continue;
+      if (s.startLevel != s.endLevel)
+        mixed.push_back(s);
+      else if (assignCornerLevels)
+        for (FaceHandle f : s.faces)
+          f->info().cornerLevel[f->index(v)] = s.startLevel;
+    }
+  }
+  return mixed;
+}
+
+std::size_t SlabOverlay::Impl::liftFlatChords(MeshBuilder& mesh)
+{
+  // A chord of a difference polygon whose two ends lie on the same slice would be flat on that
+  // slice's plane, where the neighbouring slab may lay its own triangles (GEOMETRY_NOTES, trap 3).
+  // Split such chords by Steiner points at interpolated heights until none is left; do the same
+  // for the fan edges where the surface must switch between the two slices at a common vertex,
+  // so that switch always happens towards a Steiner point.
+  std::size_t inserted = 0;
+  for (int round = 0; round < 64; ++round)
+  {
+    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+      f->info().cornerLevel = { NoLevel, NoLevel, NoLevel };
+    std::vector<Point2> splits;
+    for (const Sector& s : mixedSectors(true))
+    {
+      if (s.fan.empty())
+      {
+        FaceHandle f = s.faces.front();
+        Point2 c{ 0.0, 0.0 };
+        for (int i = 0; i < 3; ++i)
+        {
+          c.x += f->vertex(i)->point().x() / 3.0;
+          c.y += f->vertex(i)->point().y() / 3.0;
+        }
+        splits.push_back(c);
+        continue;
+      }
+      for (VertexHandle w : s.fan)
+        if (!vertices[w->info()].isSteiner())
+          splits.push_back({ 0.5 * (s.vertex->point().x() + w->point().x()),
+                             0.5 * (s.vertex->point().y() + w->point().y()) });
+    }
+    for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
+    {
+      FaceHandle f = e->first;
+      const int i = e->second;
+      if (f->is_constrained(i))
+        continue;
+      if (!inMixed(f))
+        f = f->neighbor(i);
+      if (!inMixed(f))
+        continue;
+      // The edge's two ends, with their levels in face f (both faces of a chord agree on them).
+      VertexHandle a = e->first->vertex(CDT::cw(i)), b = e->first->vertex(CDT::ccw(i));
+      auto levelIn = [&](VertexHandle v) -> Level {
+        const OverlayVertex& ov = vertices[v->info()];
+        if (!ov.onBoth())
+          return singleLevel(ov);
+        return static_cast<Level>(f->info().cornerLevel[f->index(v)]);
+      };
+      const Level la = levelIn(a), lb = levelIn(b);
+      if (la != NoLevel && la == lb)
+        splits.push_back({ 0.5 * (a->point().x() + b->point().x()), 0.5 * (a->point().y() + b->point().y()) });
+    }
+    if (splits.empty())
+      return inserted;
+    std::sort(splits.begin(), splits.end(),
+              [](const Point2& p, const Point2& q) { return std::tie(p.x, p.y) < std::tie(q.x, q.y); });
+    for (std::size_t s = 0; s < splits.size(); ++s)
+    {
+      if (s > 0 && splits[s].x == splits[s - 1].x && splits[s].y == splits[s - 1].y)
+        continue;
+      const Point2& p = splits[s];
+      const std::size_t before = cdt.number_of_vertices();
+      VertexHandle v = cdt.insert(Kernel::Point_2(p.x, p.y));
+      if (cdt.number_of_vertices() == before)
+        continue;
+      OverlayVertex steiner;
+      steiner.p = p;
+      steiner.steinerId = mesh.addPoint(p.x, p.y, interpolatedHeight(p));
+      v->info() = static_cast<int>(vertices.size());
+      vertices.push_back(steiner);
+      ++inserted;
+    }
+    classify();
+  }
+  std::ostringstream message;
+  message << "tiling between z = " << z0 << " and " << z1 << " mm did not settle";
+  throw Error(message.str());
+}
+
+std::vector<std::int32_t> SlabOverlay::Impl::wallChain(int vertex, std::map<int, std::vector<std::int32_t>>& chains,
+                                                       int rows, MeshBuilder& mesh) const
+{
+  // The vertical edge at a vertex common to both slices, cut into rows, bottom to top.
+  auto it = chains.find(vertex);
+  if (it != chains.end())
+    return it->second;
+  const OverlayVertex& v = vertices[vertex];
+  std::vector<std::int32_t> chain{ v.lowerId };
+  const Point3 bottom = mesh.point(v.lowerId);
+  const Point3 top = mesh.point(v.upperId);
+  for (int r = 1; r < rows; ++r)
+  {
+    const double t = static_cast<double>(r) / rows;
+    chain.push_back(mesh.addPoint(bottom.x + t * (top.x - bottom.x), bottom.y + t * (top.y - bottom.y),
+                                  bottom.z + t * (top.z - bottom.z)));
+  }
+  chain.push_back(v.upperId);
+  chains[vertex] = chain;
+  return chain;
+}
+
+void SlabOverlay::Impl::addWallStrip(const std::vector<std::int32_t>& from, const std::vector<std::int32_t>& to,
+                                     MeshBuilder& mesh, std::size_t& counter) const
+{
+  // A vertical strip along a contour edge from -> to (solid on the left), both chains bottom to top:
+  // its triangles face away from the solid.
+  for (std::size_t r = 0; r + 1 < from.size(); ++r)
+  {
+    mesh.addTriangle(from[r], to[r], to[r + 1]);
+    mesh.addTriangle(from[r], to[r + 1], from[r + 1]);
+    counter += 2;
+  }
+}
+
+void SlabOverlay::lift(MeshBuilder& mesh, const SlabLiftOptions& options, ReconstructionStatistics& statistics)
+{
+  Impl& d = *m_Impl;
+  const double dz = d.z1 - d.z0;
+  const int rows = std::max(1, static_cast<int>(std::lround(dz / options.rowHeight)));
+
+  statistics.steinerPoints += d.liftFlatChords(mesh);
+
+  // Levels of common vertices, and where the surface switches from one slice to the other.
+  for (auto f = d.cdt.finite_faces_begin(); f != d.cdt.finite_faces_end(); ++f)
+    f->info().cornerLevel = { NoLevel, NoLevel, NoLevel };
+  struct Switch
+  {
+    VertexHandle vertex;
+    VertexHandle far;
+    FaceHandle before;
+    Level from;
+    Level to;
+  };
+  std::vector<Switch> switches;
+  for (const Sector& s : d.mixedSectors(true))
+  {
+    // Switch on the fan edge whose vertical triangle is best shaped.
+    const OverlayVertex& v = d.vertices[s.vertex->info()];
+    std::size_t best = 0;
+    double bestAngle = -1.0;
+    for (std::size_t k = 0; k < s.fan.size(); ++k)
+    {
+      const double angle = minAngle3(mesh.point(v.lowerId), mesh.point(v.upperId),
+                                     mesh.point(d.vertices[s.fan[k]->info()].steinerId));
+      if (angle > bestAngle)
+      {
+        bestAngle = angle;
+        best = k;
+      }
+    }
+    for (std::size_t k = 0; k < s.faces.size(); ++k)
+      s.faces[k]->info().cornerLevel[s.faces[k]->index(s.vertex)] = k <= best ? s.startLevel : s.endLevel;
+    switches.push_back({ s.vertex, s.fan[best], s.faces[best], s.startLevel, s.endLevel });
+  }
+
+  // Cap heights: half a slice beyond the last contour by default; caps of the two slices that would
+  // touch in the middle of the slab are kept apart.
+  double capOffset = options.capPlacement == CapPlacement::HalfSliceBeyond ? 0.5 * dz : 0.0;
+  std::vector<char> usedByLowerCap(d.vertices.size(), 0), usedByUpperCap(d.vertices.size(), 0);
+  std::vector<char> capNeedsThickness(d.components.size(), 0);
+  for (auto f = d.cdt.finite_faces_begin(); f != d.cdt.finite_faces_end(); ++f)
+  {
+    if (!d.isDifference(f) || !d.components[f->info().component].isCap())
+      continue;
+    const Component& c = d.components[f->info().component];
+    for (int i = 0; i < 3; ++i)
+    {
+      (c.capLevel() == LowerLevel ? usedByLowerCap : usedByUpperCap)[f->vertex(i)->info()] = 1;
+      if (!f->is_constrained(i))
+        continue;
+      // A contour that meets neither neighbour gets a thickness even when caps sit on their slice.
+      const OverlayEdge* e = d.edgeBetween(f->vertex(CDT::cw(i)), f->vertex(CDT::ccw(i)));
+      const std::vector<char>* isolated = c.capLevel() == LowerLevel ? options.lowerIsolated : options.upperIsolated;
+      const int contour = c.capLevel() == LowerLevel ? e->lowerContour : e->upperContour;
+      if (isolated && contour >= 0 && (*isolated)[contour])
+        capNeedsThickness[f->info().component] = 1;
+    }
+  }
+  bool capsMeet = false;
+  for (std::size_t i = 0; i < d.vertices.size(); ++i)
+    capsMeet = capsMeet || (usedByLowerCap[i] && usedByUpperCap[i]);
+  auto capOffsetOf = [&](int component) {
+    double offset = capNeedsThickness[component] ? 0.5 * dz : capOffset;
+    return capsMeet && offset > 0.0 ? 0.45 * dz : offset;
+  };
+
+  // Difference polygons: mixed ones lifted vertex by vertex, caps flat at their height.
+  std::map<int, std::vector<std::int32_t>> chains;
+  std::map<std::pair<int, int>, std::int32_t> capCopies; // (component, overlay vertex) -> mesh id
+  auto capCopy = [&](int component, int vertex) -> std::int32_t {
+    const Component& c = d.components[component];
+    const OverlayVertex& v = d.vertices[vertex];
+    const std::int32_t levelId = c.capLevel() == LowerLevel ? v.lowerId : v.upperId;
+    const double offset = capOffsetOf(component);
+    if (offset == 0.0)
+      return levelId;
+    auto [it, inserted] = capCopies.try_emplace({ component, vertex }, -1);
+    if (inserted)
+    {
+      const Point3 p = mesh.point(levelId);
+      it->second = mesh.addPoint(p.x, p.y, c.capLevel() == LowerLevel ? d.z0 + offset : d.z1 - offset);
+    }
+    return it->second;
+  };
+  for (auto f = d.cdt.finite_faces_begin(); f != d.cdt.finite_faces_end(); ++f)
+  {
+    if (!d.isDifference(f))
+      continue;
+    const Component& c = d.components[f->info().component];
+    std::array<std::int32_t, 3> ids;
+    for (int i = 0; i < 3; ++i)
+    {
+      const OverlayVertex& v = d.vertices[f->vertex(i)->info()];
+      if (c.isCap())
+        ids[i] = capCopy(f->info().component, f->vertex(i)->info());
+      else if (v.isSteiner())
+        ids[i] = v.steinerId;
+      else if (!v.onBoth())
+        ids[i] = v.lowerId >= 0 ? v.lowerId : v.upperId;
+      else
+      {
+        const signed char level = f->info().cornerLevel[i];
+        if (level == NoLevel)
+          throw Error("tiling: a vertex common to both slices has no level (internal error)");
+        ids[i] = level == LowerLevel ? v.lowerId : v.upperId;
+      }
+    }
+    // Counter-clockwise seen from above faces up: right for lower \ upper (solid below).
+    if (!c.lowerSide)
+      std::swap(ids[1], ids[2]);
+    f->info().lifted = ids;
+    mesh.addTriangle(ids[0], ids[1], ids[2]);
+    ++(c.isCap() ? statistics.capTriangles : statistics.tilingTriangles);
+  }
+
+  // Vertical fans where the surface switches slices at a common vertex.
+  for (const Switch& s : switches)
+  {
+    std::vector<std::int32_t> chain = d.wallChain(s.vertex->info(), chains, rows, mesh);
+    if (s.from == UpperLevel)
+      std::reverse(chain.begin(), chain.end());
+    const std::int32_t w = d.vertices[s.far->info()].steinerId;
+    const auto& t = s.before->info().lifted;
+    bool farToVertex = false; // whether the face before the switch runs w -> chain[0]
+    for (int i = 0; i < 3; ++i)
+      if (t[i] == w && t[(i + 1) % 3] == chain.front())
+        farToVertex = true;
+    for (std::size_t r = 0; r + 1 < chain.size(); ++r)
+    {
+      if (farToVertex)
+        mesh.addTriangle(chain[r], w, chain[r + 1]);
+      else
+        mesh.addTriangle(w, chain[r], chain[r + 1]);
+      ++statistics.wallTriangles;
+    }
+  }
+
+  // Walls where the two slices' contours coincide and run the same way.
+  for (const auto& [key, e] : d.edges)
+  {
+    (void)key;
+    if (!(e.lower && e.upper && e.lowerFrom == e.upperFrom))
+      continue;
+    const int from = e.lowerFrom;
+    const int to = static_cast<int>(key >> 32) == from ? static_cast<int>(key & 0xffffffffULL)
+                                                        : static_cast<int>(key >> 32);
+    d.addWallStrip(d.wallChain(from, chains, rows, mesh), d.wallChain(to, chains, rows, mesh), mesh,
+                   statistics.wallTriangles);
+  }
+
+  // Cap rims: vertical walls from each cap's contour to the cap.
+  std::map<std::pair<int, int>, std::vector<std::int32_t>> rimChains;
+  auto rimChain = [&](int component, int vertex) {
+    auto it = rimChains.find({ component, vertex });
+    if (it != rimChains.end())
+      return it->second;
+    const Component& c = d.components[component];
+    const OverlayVertex& v = d.vertices[vertex];
+    const std::int32_t levelId = c.capLevel() == LowerLevel ? v.lowerId : v.upperId;
+    const std::int32_t capId = capCopy(component, vertex);
+    const double offset = capOffsetOf(component);
+    const int capRows = std::max(1, static_cast<int>(std::lround(offset / options.rowHeight)));
+    std::vector<std::int32_t> chain{ c.capLevel() == LowerLevel ? levelId : capId };
+    const Point3 bottom = mesh.point(chain.front());
+    const Point3 top = mesh.point(c.capLevel() == LowerLevel ? capId : levelId);
+    for (int r = 1; r < capRows; ++r)
+      chain.push_back(mesh.addPoint(bottom.x, bottom.y, bottom.z + (top.z - bottom.z) * r / capRows));
+    chain.push_back(c.capLevel() == LowerLevel ? capId : levelId);
+    rimChains[{ component, vertex }] = chain;
+    return chain;
+  };
+  for (auto f = d.cdt.finite_faces_begin(); f != d.cdt.finite_faces_end(); ++f)
+  {
+    if (!d.isDifference(f) || !d.components[f->info().component].isCap() ||
+        capOffsetOf(f->info().component) == 0.0)
+      continue;
+    const int component = f->info().component;
+    const Level level = d.components[component].capLevel();
+    for (int i = 0; i < 3; ++i)
+    {
+      if (!f->is_constrained(i))
+        continue;
+      const int a = f->vertex(CDT::cw(i))->info(), b = f->vertex(CDT::ccw(i))->info();
+      const OverlayEdge& e = *d.edgeBetween(f->vertex(CDT::cw(i)), f->vertex(CDT::ccw(i)));
+      const int from = level == LowerLevel ? e.lowerFrom : e.upperFrom;
+      const int to = from == a ? b : a;
+      d.addWallStrip(rimChain(component, from), rimChain(component, to), mesh, statistics.wallTriangles);
+    }
+  }
+}
+
+} // namespace slicemesh

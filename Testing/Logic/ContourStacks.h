@@ -1,0 +1,48 @@
+// Hand-made contour stacks for the Logic tests: analytic shapes sliced exactly.
+#ifndef ContourStacks_h
+#define ContourStacks_h
+
+#include "SliceMeshTypes.h"
+
+#include <cmath>
+#include <functional>
+
+namespace slicemesh::testing
+{
+
+/** A circle of n points, counter-clockwise unless reversed. */
+inline Polygon2 circle(double cx, double cy, double r, int n, bool clockwise = false, double phase = 0.0)
+{
+  Polygon2 polygon;
+  for (int i = 0; i < n; ++i)
+  {
+    const double a = phase + 2.0 * M_PI * i / n * (clockwise ? -1.0 : 1.0);
+    polygon.push_back({ cx + r * std::cos(a), cy + r * std::sin(a) });
+  }
+  return polygon;
+}
+
+inline Polygon2 rectangle(double x0, double y0, double x1, double y1)
+{
+  return { { x0, y0 }, { x1, y0 }, { x1, y1 }, { x0, y1 } };
+}
+
+/** Slices z = z0, z0 + dz, ... up to z1, each filled by contoursAt(z). */
+inline ContourStack sliceStack(double z0, double z1, double dz, const std::function<std::vector<Polygon2>(double)>& contoursAt)
+{
+  ContourStack stack;
+  stack.sliceSpacing = dz;
+  for (double z = z0; z <= z1 + 1e-9; z += dz)
+    stack.slices.push_back({ z, contoursAt(z) });
+  return stack;
+}
+
+/** Distance from p to a sphere's surface. */
+inline double sphereDistance(const Point3& p, const Point3& c, double r)
+{
+  return std::abs(std::sqrt((p.x - c.x) * (p.x - c.x) + (p.y - c.y) * (p.y - c.y) + (p.z - c.z) * (p.z - c.z)) - r);
+}
+
+} // namespace slicemesh::testing
+
+#endif
