@@ -1,0 +1,190 @@
+// Per-slice contours of a binary mask by marching squares (ITK's ContourExtractor2DImageFilter).
+#include "ContourExtraction.h"
+
+#include "itkContourExtractor2DImageFilter.h"
+
+#include <algorithm>
+#include <exception>
+#include <sstream>
+#include <thread>
+
+namespace slicemesh
+{
+namespace
+{
+
+using SliceImage = itk::Image<float, 2>;
+using ContourFilter = itk::ContourExtractor2DImageFilter<SliceImage>;
+
+/** The index box of the foreground of one slice; empty when the slice has no foreground. */
+struct ForegroundBox
+{
+  long iMin = 0, iMax = -1, jMin = 0, jMax = -1;
+  bool empty() const { return iMax < iMin; }
+};
+
+ForegroundBox foregroundBoxOf(const unsigned char* slice, long width, long height)
+{
+  ForegroundBox box;
+  box.iMin = width;
+  box.jMin = height;
+  for (long j = 0; j < height; ++j)
+  {
+    const unsigned char* row = slice + j * width;
+    const unsigned char* first = std::find_if(row, row + width, [](unsigned char v) { return v != 0; });
+    if (first == row + width)
+      continue;
+    const unsigned char* last = row + width - 1;
+    while (*last == 0)
+      --last;
+    box.iMin = std::min(box.iMin, static_cast<long>(first - row));
+    box.iMax = std::max(box.iMax, static_cast<long>(last - row));
+    box.jMin = std::min(box.jMin, j);
+    box.jMax = j;
+  }
+  return box;
+}
+
+/** Extracts the contours of one slice. The slice's foreground box is copied into a float image
+ *  with one voxel of zeros on every side, so that contours touching the image border close. The
+ *  copy's region starts at index (iMin - 1, jMin - 1): the filter's continuous indices are then
+ *  directly the slice's own (i, j), with no offset to undo. */
+class SliceContourExtractor
+{
+public:
+  SliceContourExtractor(double spacingX, double spacingY)
+    : m_SpacingX(spacingX)
+    , m_SpacingY(spacingY)
+    , m_Image(SliceImage::New())
+  {}
+
+  std::vector<Polygon2> extract(const unsigned char* slice, long width, long height)
+  {
+    const ForegroundBox box = foregroundBoxOf(slice, width, height);
+    if (box.empty())
+      return {};
+
+    SliceImage::IndexType start = { { box.iMin - 1, box.jMin - 1 } };
+    SliceImage::SizeType size = { { static_cast<itk::SizeValueType>(box.iMax - box.iMin + 3),
+                                     static_cast<itk::SizeValueType>(box.jMax - box.jMin + 3) } };
+    m_Image->SetRegions(SliceImage::RegionType(start, size));
+    m_Image->Allocate();
+    // Zero the padding ring explicitly: Allocate(true) does not clear a reused, larger buffer.
+    const long paddedWidth = static_cast<long>(size[0]);
+    float* out = m_Image->GetBufferPointer();
+    std::fill(out, out + size[0] * size[1], 0.0f);
+    for (long j = box.jMin; j <= box.jMax; ++j)
+    {
+      const unsigned char* row = slice + j * width;
+      float* outRow = out + (j - box.jMin + 1) * paddedWidth + 1;
+      for (long i = box.iMin; i <= box.iMax; ++i)
+        outRow[i - box.iMin] = row[i] ? 1.0f : 0.0f;
+    }
+    m_Image->Modified();
+
+    // A fresh filter per slice (cheap next to the tracing): no pipeline state carries over.
+    auto filter = ContourFilter::New();
+    filter->SetContourValue(0.5);
+    // Face (4-) connectivity of the foreground: at a saddle (two foreground voxels touching only
+    // at a corner) the background stays connected and the two voxels get separate contours.
+    // This is ITK's default; set explicitly because Logic relies on contours never touching.
+    filter->VertexConnectHighPixelsOff();
+    filter->ReverseContourOrientationOff();
+    filter->SetInput(m_Image);
+    filter->Update();
+
+    std::vector<Polygon2> contours;
+    contours.reserve(filter->GetNumberOfIndexedOutputs());
+    for (unsigned int n = 0; n < filter->GetNumberOfIndexedOutputs(); ++n)
+    {
+      const auto* vertices = filter->GetOutput(n)->GetVertexList();
+      Polygon2 polygon;
+      polygon.reserve(vertices->Size());
+      for (unsigned int v = 0; v < vertices->Size(); ++v)
+      {
+        const auto& index = vertices->ElementAt(v);
+        polygon.push_back({ index[0] * m_SpacingX, index[1] * m_SpacingY });
+      }
+      // ITK closes a path by repeating its first vertex; Polygon2 closes implicitly.
+      if (polygon.size() > 1 && polygon.front().x == polygon.back().x && polygon.front().y == polygon.back().y)
+        polygon.pop_back();
+      if (!polygon.empty())
+        contours.push_back(std::move(polygon));
+    }
+    return contours;
+  }
+
+private:
+  double               m_SpacingX;
+  double               m_SpacingY;
+  SliceImage::Pointer  m_Image;
+};
+
+} // namespace
+
+ContourStack extractContours(const MaskVolume* mask)
+{
+  if (!mask)
+    throw Error("extractContours: no mask");
+  const auto region = mask->GetBufferedRegion();
+  if (region != mask->GetLargestPossibleRegion())
+    throw Error("extractContours: the mask must be buffered whole (buffered region = largest possible region)");
+
+  const long width = static_cast<long>(region.GetSize()[0]);
+  const long height = static_cast<long>(region.GetSize()[1]);
+  const long depth = static_cast<long>(region.GetSize()[2]);
+  const auto spacing = mask->GetSpacing();
+
+  ContourStack stack;
+  stack.sliceSpacing = spacing[2];
+  stack.slices.resize(static_cast<std::size_t>(depth));
+  for (long k = 0; k < depth; ++k)
+    stack.slices[k].z = k * spacing[2];
+
+  // Slices are independent: split them among the cores, each worker with its own filter. Every
+  // slice is written by exactly one worker to its own place, so the result does not depend on
+  // the number of threads.
+  const unsigned char* buffer = mask->GetBufferPointer();
+  const std::size_t sliceSize = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  const unsigned int workers =
+    static_cast<unsigned int>(std::max<long>(1, std::min<long>(depth, std::max(1u, std::thread::hardware_concurrency()))));
+  std::vector<std::exception_ptr> failures(workers);
+  auto work = [&](unsigned int worker) {
+    try
+    {
+      SliceContourExtractor extractor(spacing[0], spacing[1]);
+      for (long k = worker; k < depth; k += workers)
+        stack.slices[k].contours = extractor.extract(buffer + k * sliceSize, width, height);
+    }
+    catch (...)
+    {
+      failures[worker] = std::current_exception(); // rethrown on the calling thread below
+    }
+  };
+  if (workers == 1)
+    work(0);
+  else
+  {
+    std::vector<std::thread> threads;
+    for (unsigned int w = 1; w < workers; ++w)
+      threads.emplace_back(work, w);
+    work(0);
+    for (auto& thread : threads)
+      thread.join();
+  }
+  for (const auto& failure : failures)
+    if (failure)
+    {
+      try
+      {
+        std::rethrow_exception(failure);
+      }
+      catch (const itk::ExceptionObject& error)
+      {
+        throw Error(std::string("extractContours: ITK failed: ") + error.GetDescription());
+      }
+    }
+  return stack;
+}
+
+} // namespace slicemesh

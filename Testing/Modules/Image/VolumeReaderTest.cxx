@@ -1,0 +1,220 @@
+#include "SliceMeshTypes.h"
+#include "TestVolumes.h"
+#include "VolumeReader.h"
+
+#include "itkImageFileWriter.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+namespace slicemesh
+{
+namespace
+{
+
+namespace fs = std::filesystem;
+
+/** A fresh directory under the system's temporary directory, removed with the fixture. */
+class VolumeReaderTest : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    std::random_device seed;
+    m_Directory = fs::temp_directory_path() / ("slicemesh-reader-" + std::to_string(seed()));
+    fs::create_directories(m_Directory);
+  }
+  void TearDown() override { fs::remove_all(m_Directory); }
+
+  std::string path(const std::string& name) const { return (m_Directory / name).string(); }
+
+  std::string writeText(const std::string& name, const std::string& text) const
+  {
+    std::ofstream(path(name), std::ios::binary) << text;
+    return path(name);
+  }
+
+  /** A 5x4x3 volume with distinct voxel values, oblique direction and anisotropic spacing. */
+  static ScalarVolume::Pointer obliqueVolume()
+  {
+    auto volume = testing::makeVolume({ 5, 4, 3 }, { 0.8, 0.5, 3.0 });
+    ScalarVolume::PointType origin;
+    origin[0] = 12.5, origin[1] = -30.25, origin[2] = 7.0;
+    volume->SetOrigin(origin);
+    const double c = std::cos(0.3), s = std::sin(0.3);
+    ScalarVolume::DirectionType direction; // a rotation about z, then the z axis flipped
+    direction.Fill(0.0);
+    direction[0][0] = c, direction[0][1] = -s;
+    direction[1][0] = s, direction[1][1] = c;
+    direction[2][2] = -1.0;
+    volume->SetDirection(direction);
+    float value = 0.0f;
+    for (float* voxel = volume->GetBufferPointer(); voxel != volume->GetBufferPointer() + 60; ++voxel)
+      *voxel = (value += 1.0f);
+    return volume;
+  }
+
+  template <typename TImage>
+  static void write(const TImage* image, const std::string& file)
+  {
+    auto writer = itk::ImageFileWriter<TImage>::New();
+    writer->SetInput(image);
+    writer->SetFileName(file);
+    writer->Update();
+  }
+
+  fs::path m_Directory;
+};
+
+/** Runs the call and returns the Error's message; fails the test if nothing is thrown. */
+template <typename Call>
+std::string errorMessageOf(Call call)
+{
+  try
+  {
+    call();
+  }
+  catch (const Error& error)
+  {
+    return error.what();
+  }
+  ADD_FAILURE() << "no slicemesh::Error thrown";
+  return {};
+}
+
+TEST_F(VolumeReaderTest, RoundTripKeepsGeometryAndVoxels)
+{
+  const ScalarVolume::Pointer written = obliqueVolume();
+  for (const std::string name : { "volume.nii", "volume.nii.gz", "volume.nrrd", "volume.mha" })
+  {
+    SCOPED_TRACE(name);
+    write(written.GetPointer(), path(name));
+    const ScalarVolume::Pointer read = readVolume(path(name));
+    ASSERT_EQ(read->GetLargestPossibleRegion().GetSize(), written->GetLargestPossibleRegion().GetSize());
+    for (unsigned int row = 0; row < 3; ++row)
+    {
+      // NIfTI stores geometry in single precision (and the rotation as a quaternion).
+      EXPECT_NEAR(read->GetOrigin()[row], written->GetOrigin()[row], 1e-4);
+      EXPECT_NEAR(read->GetSpacing()[row], written->GetSpacing()[row], 1e-6);
+      for (unsigned int column = 0; column < 3; ++column)
+        EXPECT_NEAR(read->GetDirection()[row][column], written->GetDirection()[row][column], 1e-5);
+    }
+    EXPECT_TRUE(std::equal(read->GetBufferPointer(), read->GetBufferPointer() + 60, written->GetBufferPointer()));
+  }
+}
+
+TEST_F(VolumeReaderTest, SampleVolumeIsReadable)
+{
+  const ScalarVolume::Pointer sample = readVolume(SLICEMESH_DATA_DIR "/sample-labelmap.nii.gz");
+  EXPECT_NEAR(sample->GetSpacing()[2], 2.0, 1e-6);
+  EXPECT_NEAR(sample->GetSpacing()[0], 0.8, 1e-6);
+  EXPECT_LT(sample->GetDirection()[0][0], 0.999); // oblique
+}
+
+TEST_F(VolumeReaderTest, MissingFileIsAnError)
+{
+  const std::string missing = path("nothing-here.nii.gz");
+  const std::string message = errorMessageOf([&] { readVolume(missing); });
+  EXPECT_NE(message.find(missing), std::string::npos) << message;
+  EXPECT_NE(message.find("no such file"), std::string::npos) << message;
+}
+
+TEST_F(VolumeReaderTest, TextFileNamedNiftiIsAnError)
+{
+  const std::string file = writeText("notes.nii", "this is not an image\njust some text\n");
+  const std::string message = errorMessageOf([&] { readVolume(file); });
+  EXPECT_NE(message.find(file), std::string::npos) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+TEST_F(VolumeReaderTest, TruncatedGzipIsAnError)
+{
+  auto big = testing::makeVolume({ 64, 64, 32 });
+  std::mt19937 random(3);
+  for (float* voxel = big->GetBufferPointer(); voxel != big->GetBufferPointer() + 64 * 64 * 32; ++voxel)
+    *voxel = static_cast<float>(random() % 1000); // noise compresses badly: a long stream
+  write(big.GetPointer(), path("whole.nii.gz"));
+  const auto wholeSize = fs::file_size(path("whole.nii.gz"));
+  fs::copy_file(path("whole.nii.gz"), path("cut.nii.gz"));
+  fs::resize_file(path("cut.nii.gz"), wholeSize / 2);
+  const std::string message = errorMessageOf([&] { readVolume(path("cut.nii.gz")); });
+  EXPECT_NE(message.find("cut.nii.gz"), std::string::npos) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+TEST_F(VolumeReaderTest, TwoDimensionalImageIsAnError)
+{
+  using Image2D = itk::Image<float, 2>;
+  auto image = Image2D::New();
+  image->SetRegions(Image2D::SizeType{ { 8, 8 } });
+  image->Allocate(true);
+  write(image.GetPointer(), path("input.nii"));
+  const std::string message = errorMessageOf([&] { readVolume(path("input.nii")); });
+  EXPECT_NE(message.find("input.nii: a 2-D image; SliceMesh needs a 3-D volume"), std::string::npos) << message;
+}
+
+TEST_F(VolumeReaderTest, FourDimensionalImageIsAnErrorUnlessOneTimePoint)
+{
+  using Image4D = itk::Image<float, 4>;
+  auto series = Image4D::New();
+  series->SetRegions(Image4D::SizeType{ { 4, 4, 4, 3 } });
+  series->Allocate(true);
+  write(series.GetPointer(), path("series.nii"));
+  const std::string message = errorMessageOf([&] { readVolume(path("series.nii")); });
+  EXPECT_NE(message.find("a 4-D image"), std::string::npos) << message;
+
+  auto single = Image4D::New();
+  single->SetRegions(Image4D::SizeType{ { 4, 5, 6, 1 } });
+  Image4D::SpacingType spacing;
+  spacing[0] = 0.5, spacing[1] = 0.75, spacing[2] = 2.0, spacing[3] = 1.0;
+  single->SetSpacing(spacing);
+  Image4D::DirectionType direction;
+  direction.SetIdentity();
+  direction[0][0] = -1.0, direction[1][1] = -1.0; // LPS <-> RAS: a common 4-D NIfTI geometry
+  single->SetDirection(direction);
+  single->Allocate(true);
+  write(single.GetPointer(), path("single.nii"));
+  const ScalarVolume::Pointer volume = readVolume(path("single.nii"));
+  EXPECT_EQ(volume->GetLargestPossibleRegion().GetSize()[2], 6u);
+  EXPECT_NEAR(volume->GetSpacing()[1], 0.75, 1e-6);
+  EXPECT_NEAR(volume->GetDirection()[0][0], -1.0, 1e-6);
+}
+
+std::string metaImageHeader(const std::string& spacing, const std::string& transform)
+{
+  return "ObjectType = Image\nNDims = 3\nDimSize = 2 2 2\nElementSpacing = " + spacing +
+         "\nTransformMatrix = " + transform + "\nElementType = MET_UCHAR\nElementDataFile = LOCAL\n" +
+         std::string(8, '\1');
+}
+
+TEST_F(VolumeReaderTest, BadSpacingIsAnError)
+{
+  const std::string identity = "1 0 0 0 1 0 0 0 1";
+  for (const std::string spacing : { "0 1 1", "1 -2 1", "1 1 nan" })
+  {
+    SCOPED_TRACE(spacing);
+    const std::string file = writeText("spacing.mha", metaImageHeader(spacing, identity));
+    const std::string message = errorMessageOf([&] { readVolume(file); });
+    EXPECT_NE(message.find("spacing"), std::string::npos) << message;
+  }
+}
+
+TEST_F(VolumeReaderTest, SingularDirectionIsAnError)
+{
+  const std::string file = writeText("flat.mha", metaImageHeader("1 1 1", "1 0 0 1 0 0 0 0 1"));
+  const std::string message = errorMessageOf([&] { readVolume(file); });
+  EXPECT_NE(message.find("singular"), std::string::npos) << message;
+}
+
+TEST_F(VolumeReaderTest, DirectoryWithoutDicomIsAnError)
+{
+  writeText("readme.txt", "no images here\n");
+  const std::string message = errorMessageOf([&] { readVolume(m_Directory.string()); });
+  EXPECT_NE(message.find("DICOM"), std::string::npos) << message;
+}
+
+} // namespace
+} // namespace slicemesh

@@ -1,0 +1,192 @@
+#include "SliceMeshTypes.h"
+#include "TestVolumes.h"
+#include "VolumeSegmentation.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace slicemesh
+{
+namespace
+{
+
+using testing::makeVolume;
+
+std::size_t countInside(const MaskVolume* mask)
+{
+  std::size_t count = 0;
+  for (std::size_t n = 0; n < mask->GetBufferedRegion().GetNumberOfPixels(); ++n)
+    count += mask->GetBufferPointer()[n] == 1;
+  return count;
+}
+
+/** Every mask voxel is 1 exactly where expected(value of the volume voxel) holds, else 0. */
+template <typename Expected>
+void expectMask(const ScalarVolume* volume, const MaskVolume* mask, Expected expected)
+{
+  for (std::size_t n = 0; n < volume->GetBufferedRegion().GetNumberOfPixels(); ++n)
+    ASSERT_EQ(mask->GetBufferPointer()[n], expected(volume->GetBufferPointer()[n]) ? 1 : 0) << "voxel " << n;
+}
+
+/** 10x10x10 with labels: 1 in a slab, 2 in a cube, 5 in one voxel, 0 elsewhere. */
+ScalarVolume::Pointer labelVolume()
+{
+  auto volume = makeVolume({ 10, 10, 10 }, { 0.8, 0.8, 2.0 });
+  ScalarVolume::PointType origin;
+  origin.Fill(-3.0);
+  volume->SetOrigin(origin);
+  for (long k = 0; k < 10; ++k)
+    for (long j = 0; j < 10; ++j)
+      for (long i = 0; i < 10; ++i)
+      {
+        float label = 0.0f;
+        if (k == 1)
+          label = 1.0f;
+        if (i >= 3 && i < 6 && j >= 3 && j < 6 && k >= 4 && k < 7)
+          label = 2.0f;
+        if (i == 8 && j == 8 && k == 8)
+          label = 5.0f;
+        volume->SetPixel({ { i, j, k } }, label);
+      }
+  return volume;
+}
+
+std::string errorMessageOf(const ScalarVolume* volume, const SegmentationOptions& options)
+{
+  try
+  {
+    segmentVolume(volume, options);
+  }
+  catch (const Error& error)
+  {
+    return error.what();
+  }
+  ADD_FAILURE() << "no slicemesh::Error thrown";
+  return {};
+}
+
+TEST(VolumeSegmentation, LabelSelectsThatLabelOnly)
+{
+  const auto volume = labelVolume();
+  SegmentationOptions options;
+  options.label = 2;
+  const MaskVolume::Pointer mask = segmentVolume(volume, options);
+  expectMask(volume.GetPointer(), mask.GetPointer(), [](float v) { return v == 2.0f; });
+  EXPECT_EQ(countInside(mask), 27u);
+  EXPECT_EQ(mask->GetSpacing(), volume->GetSpacing());
+  EXPECT_EQ(mask->GetOrigin(), volume->GetOrigin());
+  EXPECT_EQ(mask->GetDirection(), volume->GetDirection());
+}
+
+TEST(VolumeSegmentation, LabelMapWithoutLabelTakesEveryNonZeroVoxel)
+{
+  const auto volume = labelVolume();
+  const MaskVolume::Pointer mask = segmentVolume(volume, SegmentationOptions{});
+  expectMask(volume.GetPointer(), mask.GetPointer(), [](float v) { return v != 0.0f; });
+  EXPECT_EQ(countInside(mask), 100u + 27u + 1u);
+}
+
+TEST(VolumeSegmentation, MissingLabelListsTheLabelsPresent)
+{
+  const auto volume = labelVolume();
+  SegmentationOptions options;
+  options.label = 7;
+  const std::string message = errorMessageOf(volume, options);
+  EXPECT_NE(message.find("label 7"), std::string::npos) << message;
+  EXPECT_NE(message.find("1, 2, 5"), std::string::npos) << message;
+}
+
+TEST(VolumeSegmentation, LongLabelListIsCut)
+{
+  auto volume = makeVolume({ 30, 1, 1 });
+  for (long i = 0; i < 30; ++i)
+    volume->SetPixel({ { i, 0, 0 } }, static_cast<float>(i + 1));
+  SegmentationOptions options;
+  options.label = 99;
+  const std::string message = errorMessageOf(volume, options);
+  EXPECT_NE(message.find("19, 20, ..."), std::string::npos) << message;
+  EXPECT_EQ(message.find("21"), std::string::npos) << message;
+}
+
+TEST(VolumeSegmentation, AllZeroLabelMapIsAnError)
+{
+  const auto volume = makeVolume({ 4, 4, 4 });
+  const std::string message = errorMessageOf(volume, SegmentationOptions{});
+  EXPECT_NE(message.find("nothing to mesh"), std::string::npos) << message;
+}
+
+/** A noisy bimodal volume: background around 10, a cube around 100, fractional values. */
+ScalarVolume::Pointer grayscaleVolume()
+{
+  auto volume = makeVolume({ 20, 20, 20 });
+  std::mt19937 random(5);
+  std::normal_distribution<float> noise(0.0f, 3.0f);
+  for (long k = 0; k < 20; ++k)
+    for (long j = 0; j < 20; ++j)
+      for (long i = 0; i < 20; ++i)
+      {
+        const bool object = i >= 5 && i < 15 && j >= 5 && j < 15 && k >= 5 && k < 15;
+        volume->SetPixel({ { i, j, k } }, (object ? 100.0f : 10.0f) + noise(random));
+      }
+  return volume;
+}
+
+TEST(VolumeSegmentation, ThresholdKeepsVoxelsAtOrAboveIt)
+{
+  const auto volume = grayscaleVolume();
+  SegmentationOptions options;
+  options.threshold = 12.0;
+  const MaskVolume::Pointer mask = segmentVolume(volume, options);
+  expectMask(volume.GetPointer(), mask.GetPointer(), [](float v) { return v >= 12.0f; });
+  EXPECT_GT(countInside(mask), 1000u); // the cube and part of the background noise
+}
+
+TEST(VolumeSegmentation, OtsuSeparatesTheTwoPopulations)
+{
+  const auto volume = grayscaleVolume();
+  const MaskVolume::Pointer mask = segmentVolume(volume, SegmentationOptions{});
+  expectMask(volume.GetPointer(), mask.GetPointer(), [](float v) { return v > 55.0f; });
+  EXPECT_EQ(countInside(mask), 1000u);
+}
+
+TEST(VolumeSegmentation, NegativeIntegersAreGrayscale)
+{
+  // CT-like integer values with negatives: not a label map, so Otsu splits air from tissue.
+  auto volume = makeVolume({ 10, 10, 10 });
+  for (long k = 0; k < 10; ++k)
+    for (long j = 0; j < 10; ++j)
+      for (long i = 0; i < 10; ++i)
+        volume->SetPixel({ { i, j, k } }, i < 4 ? -1000.0f : 40.0f);
+  const MaskVolume::Pointer mask = segmentVolume(volume, SegmentationOptions{});
+  EXPECT_EQ(countInside(mask), 600u);
+}
+
+TEST(VolumeSegmentation, ThresholdAboveEveryVoxelIsAnError)
+{
+  const auto volume = grayscaleVolume();
+  SegmentationOptions options;
+  options.threshold = 1000.0;
+  const std::string message = errorMessageOf(volume, options);
+  EXPECT_NE(message.find("threshold 1000"), std::string::npos) << message;
+}
+
+TEST(VolumeSegmentation, UniformGrayscaleIsAnError)
+{
+  auto volume = makeVolume({ 4, 4, 4 });
+  volume->FillBuffer(0.5f);
+  EXPECT_THROW(segmentVolume(volume, SegmentationOptions{}), Error);
+}
+
+TEST(VolumeSegmentation, ForcedGrayscaleThresholdsALabelMap)
+{
+  const auto volume = labelVolume();
+  SegmentationOptions options;
+  options.kind = InputKind::Grayscale;
+  options.threshold = 2.0;
+  const MaskVolume::Pointer mask = segmentVolume(volume, options);
+  EXPECT_EQ(countInside(mask), 27u + 1u);
+}
+
+} // namespace
+} // namespace slicemesh
