@@ -1,5 +1,6 @@
 #include "SlabTiling.h"
 
+#include "NearestSegment.h"
 #include "PlanarGeometry.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -131,6 +132,12 @@ struct SlabOverlay::Impl
 
   // Segments of each slice, for the distance interpolation of Steiner heights.
   std::vector<std::pair<Point2, Point2>> lowerSegments, upperSegments;
+  std::unique_ptr<NearestSegment> lowerNearest, upperNearest;
+  double typicalEdge = 1.0;
+
+  // Height of the flat cap over each cap component, recomputed with the components.
+  std::vector<double> capZ;
+  const SlabLiftOptions* liftOptions = nullptr;
 
   void buildVertices();
   void buildEdges();
@@ -159,6 +166,16 @@ struct SlabOverlay::Impl
   double interpolatedHeight(const Point2& p) const;
   std::vector<Sector> mixedSectors(bool assignCornerLevels);
   std::size_t liftFlatChords(MeshBuilder& mesh);
+  void computeCapHeights();
+  bool isCapFace(FaceHandle f) const { return isDifference(f) && components[f->info().component].isCap(); }
+  double steinerHeight(FaceHandle f, const Point2& p) const
+  {
+    return isCapFace(f) ? capZ[f->info().component] : interpolatedHeight(p);
+  }
+  Point3 approximateLift(FaceHandle f, int i, const MeshBuilder& mesh) const;
+  bool insertSteiner(const Point2& p, double z, MeshBuilder& mesh);
+  std::size_t addRows(MeshBuilder& mesh, double edgeLength);
+  std::size_t refineBadTriangles(MeshBuilder& mesh, double minAngle, double edgeLength, std::size_t budget);
   std::vector<std::int32_t> wallChain(int vertex, std::map<int, std::vector<std::int32_t>>& chains, int rows,
                                       MeshBuilder& mesh) const;
   void addWallStrip(const std::vector<std::int32_t>& from, const std::vector<std::int32_t>& to, MeshBuilder& mesh,
@@ -289,6 +306,14 @@ void SlabOverlay::Impl::buildEdges()
   };
   add(lower, true, lowerIndex, lowerSegments);
   add(upper, false, upperIndex, upperSegments);
+  double total = 0.0;
+  for (const auto* set : { &lowerSegments, &upperSegments })
+    for (const auto& [a, b] : *set)
+      total += distance(a, b);
+  const std::size_t count = lowerSegments.size() + upperSegments.size();
+  typicalEdge = count > 0 ? std::max(total / count, 1e-6) : 1.0;
+  lowerNearest = std::make_unique<NearestSegment>(lowerSegments, 2.0 * typicalEdge);
+  upperNearest = std::make_unique<NearestSegment>(upperSegments, 2.0 * typicalEdge);
 }
 
 void SlabOverlay::Impl::triangulate()
@@ -421,6 +446,7 @@ void SlabOverlay::Impl::classify()
     }
     components.push_back(component);
   }
+  computeCapHeights();
 }
 
 std::vector<Sector> SlabOverlay::Impl::sectorsAround(VertexHandle v)
@@ -478,14 +504,8 @@ double SlabOverlay::Impl::interpolatedHeight(const Point2& p) const
 {
   // Distance-ratio interpolation between the two contours (the linear blend of their distance
   // transforms): 0 on the lower contour, 1 on the upper one.
-  auto nearest = [&](const std::vector<std::pair<Point2, Point2>>& segments) {
-    double best = std::numeric_limits<double>::infinity();
-    for (const auto& [a, b] : segments)
-      best = std::min(best, distanceToSegment(p, a, b));
-    return best;
-  };
-  const double dLower = nearest(lowerSegments);
-  const double dUpper = nearest(upperSegments);
+  const double dLower = lowerNearest->distance(p);
+  const double dUpper = upperNearest->distance(p);
   const double t = dLower + dUpper > 0.0 ? dLower / (dLower + dUpper) : 0.5;
   return z0 + t * (z1 - z0);
 }
@@ -627,13 +647,268 @@ void SlabOverlay::Impl::addWallStrip(const std::vector<std::int32_t>& from, cons
   }
 }
 
+void SlabOverlay::Impl::computeCapHeights()
+{
+  capZ.assign(components.size(), std::numeric_limits<double>::quiet_NaN());
+  if (!liftOptions)
+    return;
+  // Half a slice beyond the last contour by default; a contour that meets neither neighbour gets
+  // that thickness even when caps sit on their slice; caps of the two slices that would meet in
+  // the middle of the slab are kept apart.
+  const double dz = z1 - z0;
+  const double baseOffset = liftOptions->capPlacement == CapPlacement::HalfSliceBeyond ? 0.5 * dz : 0.0;
+  std::vector<char> usedByLowerCap(vertices.size(), 0), usedByUpperCap(vertices.size(), 0);
+  std::vector<char> needsThickness(components.size(), 0);
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+  {
+    if (!isCapFace(f))
+      continue;
+    const Component& c = components[f->info().component];
+    for (int i = 0; i < 3; ++i)
+    {
+      (c.capLevel() == LowerLevel ? usedByLowerCap : usedByUpperCap)[f->vertex(i)->info()] = 1;
+      if (!f->is_constrained(i))
+        continue;
+      const OverlayEdge* e = edgeBetween(f->vertex(CDT::cw(i)), f->vertex(CDT::ccw(i)));
+      const std::vector<char>* isolated =
+        c.capLevel() == LowerLevel ? liftOptions->lowerIsolated : liftOptions->upperIsolated;
+      const int contour = c.capLevel() == LowerLevel ? e->lowerContour : e->upperContour;
+      if (isolated && contour >= 0 && static_cast<std::size_t>(contour) < isolated->size() && (*isolated)[contour])
+        needsThickness[f->info().component] = 1;
+    }
+  }
+  bool capsMeet = false;
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    capsMeet = capsMeet || (usedByLowerCap[i] && usedByUpperCap[i]);
+  for (std::size_t c = 0; c < components.size(); ++c)
+  {
+    if (!components[c].isCap())
+      continue;
+    double offset = needsThickness[c] ? 0.5 * dz : baseOffset;
+    if (capsMeet && offset > 0.0)
+      offset = 0.45 * dz;
+    capZ[c] = components[c].capLevel() == LowerLevel ? z0 + offset : z1 - offset;
+  }
+}
+
+Point3 SlabOverlay::Impl::approximateLift(FaceHandle f, int i, const MeshBuilder& mesh) const
+{
+  const OverlayVertex& v = vertices[f->vertex(i)->info()];
+  if (v.isSteiner())
+    return mesh.point(v.steinerId);
+  if (isCapFace(f))
+    return { v.p.x, v.p.y, capZ[f->info().component] };
+  if (v.onBoth())
+  {
+    const signed char level = f->info().cornerLevel[i];
+    return { v.p.x, v.p.y, level == LowerLevel ? z0 : level == UpperLevel ? z1 : 0.5 * (z0 + z1) };
+  }
+  return { v.p.x, v.p.y, v.lowerId >= 0 ? z0 : z1 };
+}
+
+bool SlabOverlay::Impl::insertSteiner(const Point2& p, double z, MeshBuilder& mesh)
+{
+  // Steiner points go strictly inside difference polygons: never on a contour edge, which the
+  // neighbouring slab shares.
+  CDT::Locate_type type;
+  int index = 0;
+  const Kernel::Point_2 point(p.x, p.y);
+  FaceHandle f = cdt.locate(point, type, index);
+  if (type == CDT::VERTEX || type == CDT::OUTSIDE_CONVEX_HULL || type == CDT::OUTSIDE_AFFINE_HULL)
+    return false;
+  if (type == CDT::EDGE && f->is_constrained(index))
+    return false;
+  if (!isDifference(f))
+    return false;
+  VertexHandle v = cdt.insert(point, type, f, index);
+  OverlayVertex steiner;
+  steiner.p = p;
+  steiner.steinerId = mesh.addPoint(p.x, p.y, z);
+  v->info() = static_cast<int>(vertices.size());
+  vertices.push_back(steiner);
+  return true;
+}
+
+namespace
+{
+
+/** Points already placed, to keep new Steiner points a minimum 3D distance apart. */
+class SpacingGrid
+{
+public:
+  explicit SpacingGrid(double cell)
+    : m_Cell(std::max(cell, 1e-9))
+  {
+  }
+  void add(const Point3& p) { m_Cells[key(cellOf(p.x), cellOf(p.y))].push_back(p); }
+  bool hasPointWithin(const Point3& p, double radius) const
+  {
+    const long long reach = static_cast<long long>(std::ceil(radius / m_Cell));
+    const long long cx = cellOf(p.x), cy = cellOf(p.y);
+    for (long long x = cx - reach; x <= cx + reach; ++x)
+      for (long long y = cy - reach; y <= cy + reach; ++y)
+      {
+        auto it = m_Cells.find(key(x, y));
+        if (it == m_Cells.end())
+          continue;
+        for (const Point3& q : it->second)
+          if (std::hypot(p.x - q.x, p.y - q.y, p.z - q.z) < radius)
+            return true;
+      }
+    return false;
+  }
+
+private:
+  long long cellOf(double v) const { return static_cast<long long>(std::floor(v / m_Cell)); }
+  static std::uint64_t key(long long x, long long y)
+  {
+    return static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ULL ^ static_cast<std::uint64_t>(y);
+  }
+  double m_Cell;
+  std::unordered_map<std::uint64_t, std::vector<Point3>> m_Cells;
+};
+
+Point3 circumcenter(const Point3& a, const Point3& b, const Point3& c)
+{
+  // a + ((|u|^2 v - |v|^2 u) x (u x v)) / (2 |u x v|^2), u = b - a, v = c - a.
+  const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
+  const double vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+  const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+  const double n2 = nx * nx + ny * ny + nz * nz;
+  const double u2 = ux * ux + uy * uy + uz * uz, v2 = vx * vx + vy * vy + vz * vz;
+  const double wx = u2 * vx - v2 * ux, wy = u2 * vy - v2 * uy, wz = u2 * vz - v2 * uz;
+  return { a.x + (wy * nz - wz * ny) / (2 * n2), a.y + (wz * nx - wx * nz) / (2 * n2),
+           a.z + (wx * ny - wy * nx) / (2 * n2) };
+}
+
+} // namespace
+
+std::size_t SlabOverlay::Impl::addRows(MeshBuilder& mesh, double edgeLength)
+{
+  // Between a contour and the other slice's contour the surface climbs the slab; rows of Steiner
+  // points at the spacing of the edge length let its triangles be about as tall as they are wide
+  // in 3D (a 1 mm contour spacing under 3 mm slices would otherwise give slivers only).
+  const double dz = z1 - z0;
+  SpacingGrid placed(edgeLength);
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if (isDifference(f))
+      for (int i = 0; i < 3; ++i)
+        placed.add(approximateLift(f, i, mesh));
+  std::vector<std::pair<Point2, double>> candidates;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+  {
+    const OverlayVertex& ov = vertices[v->info()];
+    const Level level = singleLevel(ov);
+    if (level == NoLevel)
+      continue;
+    bool onMixed = false;
+    auto face = cdt.incident_faces(v), done = face;
+    do
+      onMixed = onMixed || inMixed(face);
+    while (++face != done && !onMixed);
+    if (!onMixed)
+      continue;
+    Point2 target;
+    const double flat = (level == LowerLevel ? upperNearest : lowerNearest)->nearest(ov.p, &target);
+    int m = static_cast<int>(std::lround(std::hypot(flat, dz) / edgeLength));
+    // Rows closer than a few percent of the edge length in projection cannot be told apart by
+    // the planar triangulation.
+    m = std::min(m, static_cast<int>(std::floor(flat / (0.05 * edgeLength))));
+    for (int r = 1; r < m; ++r)
+    {
+      const double t = static_cast<double>(r) / m;
+      const Point2 p{ ov.p.x + t * (target.x - ov.p.x), ov.p.y + t * (target.y - ov.p.y) };
+      const double z = interpolatedHeight(p);
+      if (placed.hasPointWithin({ p.x, p.y, z }, 0.6 * edgeLength))
+        continue;
+      placed.add({ p.x, p.y, z });
+      candidates.emplace_back(p, z);
+    }
+  }
+  std::size_t inserted = 0;
+  for (const auto& [p, z] : candidates)
+  {
+    CDT::Locate_type type;
+    int index = 0;
+    FaceHandle f = cdt.locate(Kernel::Point_2(p.x, p.y), type, index);
+    if (type != CDT::VERTEX && !cdt.is_infinite(f) && inMixed(f))
+      inserted += insertSteiner(p, z, mesh);
+  }
+  if (inserted > 0)
+    classify();
+  return inserted;
+}
+
+std::size_t SlabOverlay::Impl::refineBadTriangles(MeshBuilder& mesh, double minAngle, double edgeLength,
+                                                  std::size_t budget)
+{
+  // Delaunay refinement judged on the lifted triangles: a triangle whose smallest 3D angle is under
+  // the target gets the projection of its 3D circumcentre, lifted by the interpolant. Points go
+  // only inside difference polygons (contour edges are shared with the next slab and stay whole),
+  // so triangles held by short contour edges may stay bad; the budget bounds the work.
+  std::size_t inserted = 0;
+  for (int round = 0; round < 12 && inserted < budget; ++round)
+  {
+    SpacingGrid placed(edgeLength);
+    std::vector<std::pair<Point2, double>> candidates; // point, the bad triangle's circumradius
+    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    {
+      if (!isDifference(f))
+        continue;
+      const Point3 a = approximateLift(f, 0, mesh), b = approximateLift(f, 1, mesh), c = approximateLift(f, 2, mesh);
+      placed.add(a);
+      placed.add(b);
+      placed.add(c);
+      if (minAngle3(a, b, c) >= minAngle)
+        continue;
+      const Point3 center = circumcenter(a, b, c);
+      const double radius = std::hypot(center.x - a.x, center.y - a.y, center.z - a.z);
+      if (!std::isfinite(radius) || radius < 0.3 * edgeLength)
+        continue;
+      candidates.push_back({ { center.x, center.y }, radius });
+    }
+    std::size_t added = 0;
+    for (const auto& [p, radius] : candidates)
+    {
+      CDT::Locate_type type;
+      int index = 0;
+      FaceHandle f = cdt.locate(Kernel::Point_2(p.x, p.y), type, index);
+      if (type == CDT::VERTEX || cdt.is_infinite(f) || !isDifference(f))
+        continue;
+      const double z = steinerHeight(f, p);
+      if (placed.hasPointWithin({ p.x, p.y, z }, 0.5 * radius))
+        continue;
+      if (insertSteiner(p, z, mesh))
+      {
+        placed.add({ p.x, p.y, z });
+        ++added;
+      }
+    }
+    if (added == 0)
+      break;
+    inserted += added;
+    classify();
+  }
+  return inserted;
+}
+
 void SlabOverlay::lift(MeshBuilder& mesh, const SlabLiftOptions& options, ReconstructionStatistics& statistics)
 {
   Impl& d = *m_Impl;
+  d.liftOptions = &options;
+  d.computeCapHeights();
   const double dz = d.z1 - d.z0;
   const int rows = std::max(1, static_cast<int>(std::lround(dz / options.rowHeight)));
 
   statistics.steinerPoints += d.liftFlatChords(mesh);
+  if (options.minAngleDegrees > 0.0)
+  {
+    const double edgeLength = options.maxEdgeLength > 0.0 ? options.maxEdgeLength : options.rowHeight;
+    statistics.steinerPoints += d.addRows(mesh, edgeLength);
+    const std::size_t budget = 20 * d.vertices.size() + 100;
+    statistics.steinerPoints += d.refineBadTriangles(mesh, options.minAngleDegrees * M_PI / 180.0, edgeLength, budget);
+    statistics.steinerPoints += d.liftFlatChords(mesh);
+  }
 
   // Levels of common vertices, and where the surface switches from one slice to the other.
   for (auto f = d.cdt.finite_faces_begin(); f != d.cdt.finite_faces_end(); ++f)
@@ -668,35 +943,9 @@ void SlabOverlay::lift(MeshBuilder& mesh, const SlabLiftOptions& options, Recons
     switches.push_back({ s.vertex, s.fan[best], s.faces[best], s.startLevel, s.endLevel });
   }
 
-  // Cap heights: half a slice beyond the last contour by default; caps of the two slices that would
-  // touch in the middle of the slab are kept apart.
-  double capOffset = options.capPlacement == CapPlacement::HalfSliceBeyond ? 0.5 * dz : 0.0;
-  std::vector<char> usedByLowerCap(d.vertices.size(), 0), usedByUpperCap(d.vertices.size(), 0);
-  std::vector<char> capNeedsThickness(d.components.size(), 0);
-  for (auto f = d.cdt.finite_faces_begin(); f != d.cdt.finite_faces_end(); ++f)
-  {
-    if (!d.isDifference(f) || !d.components[f->info().component].isCap())
-      continue;
-    const Component& c = d.components[f->info().component];
-    for (int i = 0; i < 3; ++i)
-    {
-      (c.capLevel() == LowerLevel ? usedByLowerCap : usedByUpperCap)[f->vertex(i)->info()] = 1;
-      if (!f->is_constrained(i))
-        continue;
-      // A contour that meets neither neighbour gets a thickness even when caps sit on their slice.
-      const OverlayEdge* e = d.edgeBetween(f->vertex(CDT::cw(i)), f->vertex(CDT::ccw(i)));
-      const std::vector<char>* isolated = c.capLevel() == LowerLevel ? options.lowerIsolated : options.upperIsolated;
-      const int contour = c.capLevel() == LowerLevel ? e->lowerContour : e->upperContour;
-      if (isolated && contour >= 0 && (*isolated)[contour])
-        capNeedsThickness[f->info().component] = 1;
-    }
-  }
-  bool capsMeet = false;
-  for (std::size_t i = 0; i < d.vertices.size(); ++i)
-    capsMeet = capsMeet || (usedByLowerCap[i] && usedByUpperCap[i]);
   auto capOffsetOf = [&](int component) {
-    double offset = capNeedsThickness[component] ? 0.5 * dz : capOffset;
-    return capsMeet && offset > 0.0 ? 0.45 * dz : offset;
+    const Component& c = d.components[component];
+    return std::abs(d.capZ[component] - (c.capLevel() == LowerLevel ? d.z0 : d.z1));
   };
 
   // Difference polygons: mixed ones lifted vertex by vertex, caps flat at their height.
@@ -706,14 +955,13 @@ void SlabOverlay::lift(MeshBuilder& mesh, const SlabLiftOptions& options, Recons
     const Component& c = d.components[component];
     const OverlayVertex& v = d.vertices[vertex];
     const std::int32_t levelId = c.capLevel() == LowerLevel ? v.lowerId : v.upperId;
-    const double offset = capOffsetOf(component);
-    if (offset == 0.0)
+    if (capOffsetOf(component) == 0.0)
       return levelId;
     auto [it, inserted] = capCopies.try_emplace({ component, vertex }, -1);
     if (inserted)
     {
       const Point3 p = mesh.point(levelId);
-      it->second = mesh.addPoint(p.x, p.y, c.capLevel() == LowerLevel ? d.z0 + offset : d.z1 - offset);
+      it->second = mesh.addPoint(p.x, p.y, d.capZ[component]);
     }
     return it->second;
   };
@@ -726,10 +974,10 @@ void SlabOverlay::lift(MeshBuilder& mesh, const SlabLiftOptions& options, Recons
     for (int i = 0; i < 3; ++i)
     {
       const OverlayVertex& v = d.vertices[f->vertex(i)->info()];
-      if (c.isCap())
-        ids[i] = capCopy(f->info().component, f->vertex(i)->info());
-      else if (v.isSteiner())
+      if (v.isSteiner())
         ids[i] = v.steinerId;
+      else if (c.isCap())
+        ids[i] = capCopy(f->info().component, f->vertex(i)->info());
       else if (!v.onBoth())
         ids[i] = v.lowerId >= 0 ? v.lowerId : v.upperId;
       else

@@ -26,6 +26,8 @@ struct SlabLiftOptions
 {
   double rowHeight = 1.0;                        ///< target height of a row of wall triangles (mm)
   CapPlacement capPlacement = CapPlacement::HalfSliceBeyond;
+  double minAngleDegrees = 30.0;                 ///< Steiner refinement target on the 3D triangles; 0: off
+  double maxEdgeLength = 0.0;                    ///< Steiner spacing (mm); 0: the row height
   const std::vector<char>* lowerIsolated = nullptr; ///< lower contours whose region meets neither neighbour
   const std::vector<char>* upperIsolated = nullptr;
 };

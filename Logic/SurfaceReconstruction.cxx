@@ -93,6 +93,8 @@ TriangleMesh reconstructSurface(const ContourStack& stack, const ReconstructionO
 
   SlabLiftOptions liftOptions;
   liftOptions.capPlacement = options.capPlacement;
+  liftOptions.minAngleDegrees = options.minAngleDegrees;
+  liftOptions.maxEdgeLength = options.maxEdgeLength;
   liftOptions.rowHeight = options.wallRowHeight > 0.0 ? options.wallRowHeight : medianEdgeLength(slices);
 
   // Slab k lies between slice k-1 and slice k; slabs 0 and n lie beyond the ends and only cap.

@@ -21,6 +21,10 @@ struct ReconstructionOptions
   /** Vertical walls (coincident contours, cap rims) are cut into rows about this tall, in mm;
    *  0 means: the median in-plane edge length of the stack, so wall triangles are well shaped. */
   double wallRowHeight = 0.0;
+  /** Steiner refinement: the smallest angle wanted in the 3D triangles (degrees); 0 turns it off. */
+  double minAngleDegrees = 30.0;
+  /** Steiner refinement: target edge length in mm; 0 means the median contour edge length. */
+  double maxEdgeLength = 0.0;
   /** Points of the same slice closer than this (mm) are one point. */
   double mergeTolerance = 1e-6;
   /** Called with a fraction 0..1 as slabs are tiled; may be empty. */
