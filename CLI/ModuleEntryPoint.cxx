@@ -1,0 +1,179 @@
+// Argument handling and reporting around the pipeline: --xml first, then the table-driven parse,
+// --help/--echo, progress, the summary line, return parameters and the exit code.
+#include "ModuleEntryPoint.h"
+
+#include "CommandLine.h"
+#include "ExitCodes.h"
+#include "HelpText.h"
+#include "ModuleDescription.h"
+#include "ModuleXml.h"
+#include "ReturnParameters.h"
+#include "SliceMeshPipeline.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <unistd.h>
+
+namespace
+{
+
+using namespace slicemesh;
+using namespace slicemesh::cli;
+
+/** Errors are one line on stderr (Slicer logs each line separately). */
+std::string oneLine(std::string text)
+{
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  std::replace(text.begin(), text.end(), '\r', ' ');
+  return text;
+}
+
+int fail(ExitCode code, const std::string& message)
+{
+  std::cerr << "SliceMesh: error: " << oneLine(message) << std::endl;
+  return code;
+}
+
+PipelineSettings settingsFrom(const ParsedArguments& arguments)
+{
+  PipelineSettings settings;
+  settings.inputVolume = arguments.text("inputVolume");
+  settings.outputModel = arguments.text("outputModel");
+
+  const std::string& kind = arguments.text("inputKind");
+  settings.segmentation.kind =
+    kind == "LabelMap" ? InputKind::LabelMap : kind == "Grayscale" ? InputKind::Grayscale : InputKind::Automatic;
+  // Label 0 is the background in every label map, so it stands for "every non-zero voxel".
+  if (const long label = arguments.integer("label"); label != 0)
+  {
+    settings.segmentation.label = static_cast<int>(label);
+  }
+  if (arguments.text("thresholdMethod") == "Manual")
+  {
+    settings.segmentation.threshold = arguments.number("threshold");
+  }
+  else if (arguments.given("threshold"))
+  {
+    // Slicer passes every scalar, so this cannot be an error; say why the value has no effect.
+    std::cerr << "SliceMesh: warning: --threshold is used only with --thresholdMethod Manual; using Otsu"
+              << std::endl;
+  }
+
+  settings.reconstruction.capPlacement =
+    arguments.text("capPlacement") == "AtSlice" ? CapPlacement::AtSlice : CapPlacement::HalfSliceBeyond;
+  settings.reconstruction.wallRowHeight = arguments.number("wallRowHeight");
+  settings.coordinateSystem =
+    arguments.text("coordinateSystem") == "RAS" ? CoordinateSystem::RAS : CoordinateSystem::LPS;
+  return settings;
+}
+
+std::string summaryLine(const PipelineResult& result, const std::string& outputModel)
+{
+  const MeshValidation& v = result.validation;
+  std::ostringstream line;
+  line << "SliceMesh: " << v.triangles << " triangles, " << (v.closed() ? "closed" : "NOT closed") << ", volume "
+       << std::fixed << std::setprecision(1) << v.volume << " mm^3 (" << std::setprecision(2) << v.volume / 1000.0
+       << " mL), " << result.seconds << " s -> " << outputModel;
+  return line.str();
+}
+
+ReturnValues returnValues(const PipelineResult& result)
+{
+  std::ostringstream volume, seconds;
+  volume << std::setprecision(10) << result.validation.volume;
+  seconds << std::setprecision(6) << result.seconds;
+  return { { "triangles", std::to_string(result.validation.triangles) },
+           { "volume", volume.str() },
+           { "closed", result.validation.closed() ? "true" : "false" },
+           { "seconds", seconds.str() } };
+}
+
+} // namespace
+
+int ModuleEntryPoint(int argc, char* argv[])
+{
+  // As GenerateCLP does: answer Slicer's discovery before anything else can get in the way.
+  if (argc > 1 && std::string(argv[1]) == "--xml")
+  {
+    std::cout << moduleXml() << std::flush;
+    return Success;
+  }
+
+  try
+  {
+    const ModuleDescription module = parseModuleDescription(moduleXml());
+    ParsedArguments arguments;
+    try
+    {
+      arguments = parseCommandLine(module, std::vector<std::string>(argv + 1, argv + argc));
+    }
+    catch (const ArgumentError& e)
+    {
+      return fail(BadArguments, e.what());
+    }
+    if (arguments.xml)
+    {
+      std::cout << moduleXml() << std::flush;
+      return Success;
+    }
+    if (arguments.help)
+    {
+      std::cout << helpText(module, "SliceMesh") << std::flush;
+      return Success;
+    }
+    if (arguments.version)
+    {
+      std::cout << module.title << " " << module.version << std::endl;
+      return Success;
+    }
+    if (arguments.echo)
+    {
+      std::cout << echoText(module, arguments) << std::flush;
+    }
+
+    // Slicer reads stdout through a pipe: tags then. A person at a terminal gets a bar on stderr instead.
+    const bool stdoutIsTerminal = ::isatty(STDOUT_FILENO) == 1;
+    const bool stderrIsTerminal = ::isatty(STDERR_FILENO) == 1;
+    ProgressReporter progress(pipelineStages(), stdoutIsTerminal ? nullptr : &std::cout,
+                              stderrIsTerminal ? &std::cerr : nullptr);
+
+    PipelineResult result;
+    try
+    {
+      result = runPipeline(settingsFrom(arguments), progress);
+      progress.finish(true);
+    }
+    catch (const PipelineFailure& e)
+    {
+      progress.finish(false);
+      return fail(e.code(), e.what());
+    }
+
+    std::cout << summaryLine(result, arguments.text("outputModel")) << std::endl;
+    if (!arguments.returnParameterFile.empty())
+    {
+      try
+      {
+        writeReturnParameters(arguments.returnParameterFile, returnValues(result));
+      }
+      catch (const Error& e)
+      {
+        return fail(WriteFailed, e.what());
+      }
+    }
+    if (!result.validation.valid())
+    {
+      std::cerr << "SliceMesh: warning: the mesh was written but is not a valid closed surface: "
+                << oneLine(result.validation.summary()) << std::endl;
+      return InvalidMesh;
+    }
+    return Success;
+  }
+  catch (const std::exception& e)
+  {
+    return fail(InternalError, std::string("unexpected failure: ") + e.what());
+  }
+}

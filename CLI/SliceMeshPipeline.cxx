@@ -1,0 +1,121 @@
+#include "SliceMeshPipeline.h"
+
+#include "ContourExtraction.h"
+#include "VolumeReader.h"
+
+#include <chrono>
+#include <filesystem>
+#include <functional>
+
+namespace slicemesh::cli
+{
+
+namespace
+{
+
+enum Stage : std::size_t
+{
+  Reading,
+  Segmentation,
+  Contours,
+  Tiling,
+  Validation,
+  Writing
+};
+
+/** Runs one step; a failure becomes a PipelineFailure with the given code. */
+template <typename Step>
+auto guarded(ExitCode code, Step&& step) -> decltype(step())
+{
+  try
+  {
+    return step();
+  }
+  catch (const PipelineFailure&)
+  {
+    throw;
+  }
+  catch (const std::exception& e)
+  {
+    throw PipelineFailure(code, e.what());
+  }
+}
+
+std::size_t contourCount(const ContourStack& stack)
+{
+  std::size_t count = 0;
+  for (const Slice& slice : stack.slices)
+  {
+    count += slice.contours.size();
+  }
+  return count;
+}
+
+} // namespace
+
+std::vector<ProgressStage> pipelineStages()
+{
+  // Weights: rough shares of a typical run's time, so the bar moves evenly.
+  return { { "Reading", "Reading the input volume", 1.0 },
+           { "Segmentation", "Segmenting the volume into a mask", 1.0 },
+           { "Contours", "Tracing sub-voxel contours in every slice", 1.5 },
+           { "Tiling", "Matching contours and tiling the slabs between slices", 5.0 },
+           { "Validation", "Checking that the mesh is a closed, oriented surface", 1.0 },
+           { "Writing", "Writing the mesh", 0.5 } };
+}
+
+PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& progress)
+{
+  const auto began = std::chrono::steady_clock::now();
+
+  // Fail before the expensive work when the output could never be written.
+  const std::filesystem::path output(settings.outputModel);
+  const std::filesystem::path folder = output.has_parent_path() ? output.parent_path() : ".";
+  if (!std::filesystem::is_directory(folder))
+  {
+    throw PipelineFailure(WriteFailed, "cannot write mesh '" + settings.outputModel + "': folder '" +
+                                         folder.string() + "' does not exist");
+  }
+
+  progress.start(Reading);
+  const ScalarVolume::Pointer volume = guarded(UnreadableInput, [&] { return readVolume(settings.inputVolume); });
+
+  progress.start(Segmentation);
+  const MaskVolume::Pointer mask =
+    guarded(EmptySegmentation, [&] { return segmentVolume(volume, settings.segmentation); });
+
+  progress.start(Contours);
+  const ContourStack stack = guarded(MeshingFailed, [&] { return extractContours(mask); });
+  if (contourCount(stack) == 0)
+  {
+    throw PipelineFailure(EmptySegmentation, "the segmentation of '" + settings.inputVolume + "' has no contours");
+  }
+  const SliceFrame frame = guarded(MeshingFailed, [&] { return sliceFrameOf(volume); });
+
+  progress.start(Tiling);
+  ReconstructionOptions options = settings.reconstruction;
+  options.progress = [&progress](double fraction) { progress.update(fraction); };
+  const TriangleMesh stackMesh = guarded(MeshingFailed, [&] { return reconstructSurface(stack, options); });
+  if (stackMesh.triangles.empty())
+  {
+    throw PipelineFailure(MeshingFailed, "the reconstruction of '" + settings.inputVolume + "' produced no triangles");
+  }
+
+  progress.start(Validation);
+  PipelineResult result;
+  result.validation = guarded(MeshingFailed, [&] { return validateMesh(stackMesh); });
+
+  progress.start(Writing);
+  guarded(WriteFailed,
+          [&]
+          {
+            writeMesh(mapToPhysicalSpace(stackMesh, frame, settings.coordinateSystem), settings.coordinateSystem,
+                      settings.outputModel);
+          });
+  progress.end();
+
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  return result;
+}
+
+} // namespace slicemesh::cli

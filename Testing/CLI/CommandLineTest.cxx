@@ -1,0 +1,139 @@
+// The table-driven parser, in process, against the real embedded XML and small hand-written ones.
+#include "CommandLine.h"
+#include "ModuleXml.h"
+#include "SliceMeshTypes.h"
+
+#include <gtest/gtest.h>
+
+namespace slicemesh::cli
+{
+namespace
+{
+
+const ModuleDescription& sliceMesh()
+{
+  static const ModuleDescription module = parseModuleDescription(moduleXml());
+  return module;
+}
+
+ParsedArguments parse(const std::vector<std::string>& arguments)
+{
+  return parseCommandLine(sliceMesh(), arguments);
+}
+
+std::string errorOf(const std::vector<std::string>& arguments)
+{
+  try
+  {
+    parse(arguments);
+  }
+  catch (const ArgumentError& e)
+  {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+ModuleDescription moduleWith(const std::string& parameters)
+{
+  return parseModuleDescription("<?xml version=\"1.0\"?><executable><title>T</title><parameters><label>G</label>" +
+                                parameters + "</parameters></executable>");
+}
+
+TEST(CommandLine, FillsDefaultsFromTheXml)
+{
+  const ParsedArguments a = parse({ "in.nrrd", "out.vtp" });
+  EXPECT_EQ(a.text("inputVolume"), "in.nrrd");
+  EXPECT_EQ(a.text("outputModel"), "out.vtp");
+  EXPECT_EQ(a.text("inputKind"), "Automatic");
+  EXPECT_EQ(a.integer("label"), 0);
+  EXPECT_EQ(a.text("capPlacement"), "HalfSliceBeyond");
+  EXPECT_EQ(a.text("coordinateSystem"), "LPS");
+  EXPECT_FALSE(a.given("label"));
+}
+
+TEST(CommandLine, AcceptsLongShortAndEqualsForms)
+{
+  EXPECT_EQ(parse({ "--label", "3", "in", "out.vtp" }).integer("label"), 3);
+  EXPECT_EQ(parse({ "-l", "4", "in", "out.vtp" }).integer("label"), 4);
+  EXPECT_EQ(parse({ "--label=5", "in", "out.vtp" }).integer("label"), 5);
+  EXPECT_EQ(parse({ "in", "out.vtp", "--label", "-2" }).integer("label"), -2) << "a negative value is a value";
+  EXPECT_TRUE(parse({ "--label", "3", "in", "out.vtp" }).given("label"));
+  EXPECT_EQ(parse({ "--", "-odd-name.nrrd", "out.vtp" }).text("inputVolume"), "-odd-name.nrrd");
+}
+
+TEST(CommandLine, RejectsBadInputWithOneLineMessages)
+{
+  const std::vector<std::vector<std::string>> bad = {
+    { "--nope", "in", "out.vtp" },                     // unknown option
+    { "--label", "2.5", "in", "out.vtp" },             // not an integer
+    { "--threshold", "abc", "in", "out.vtp" },         // not a number
+    { "--coordinateSystem", "XYZ", "in", "out.vtp" },  // outside the enumeration
+    { "--wallRowHeight", "-1", "in", "out.vtp" },      // below the minimum
+    { "--wallRowHeight", "51", "in", "out.vtp" },      // above the maximum
+    { "--label", "1", "--label", "2", "in", "out.vtp" }, // repeated
+    { "in", "out.vtp", "extra" },                      // too many positional arguments
+    { "in" },                                          // missing output
+    { "in", "out.txt" },                               // output extension not in the XML
+    { "in", "out.vtp", "--label" },                    // value missing
+  };
+  for (const auto& arguments : bad)
+  {
+    const std::string message = errorOf(arguments);
+    EXPECT_NE(message, "(no error)") << arguments[0];
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+  EXPECT_NE(errorOf({ "--coordinateSystem", "XYZ", "in", "out.vtp" }).find("LPS, RAS"), std::string::npos);
+}
+
+TEST(CommandLine, HelpNeedsNoPositionalArguments)
+{
+  EXPECT_TRUE(parse({ "--help" }).help);
+  EXPECT_TRUE(parse({ "-h" }).help);
+}
+
+TEST(CommandLine, AcceptsSlicersBuiltInFlags)
+{
+  const ParsedArguments a =
+    parse({ "--processinformationaddress", "0x1234", "--returnparameterfile", "/tmp/r.params", "--echo", "in",
+            "out.vtp" });
+  EXPECT_EQ(a.returnParameterFile, "/tmp/r.params");
+  EXPECT_TRUE(a.echo);
+}
+
+TEST(CommandLine, ReturnParametersCannotBeGiven)
+{
+  EXPECT_NE(errorOf({ "--triangles", "5", "in", "out.vtp" }), "(no error)");
+}
+
+TEST(CommandLine, BooleansAreSwitchesThatMeanTrue)
+{
+  const ModuleDescription module = moduleWith(
+    "<boolean><name>smooth</name><longflag>smooth</longflag><label>S</label><description>d</description>"
+    "<default>false</default></boolean>");
+  EXPECT_FALSE(parseCommandLine(module, {}).flag("smooth"));
+  EXPECT_TRUE(parseCommandLine(module, { "--smooth" }).flag("smooth"));
+  EXPECT_THROW(parseCommandLine(module, { "--smooth=false" }), ArgumentError);
+}
+
+TEST(ModuleDescriptionRules, RejectsXmlThatBreaksTheSlicerRules)
+{
+  const std::string tail = "<label>L</label><description>d</description><default>1</default>";
+  EXPECT_THROW(moduleWith("<integer><name>a</name><flag>ab</flag>" + tail + "</integer>"), Error);
+  EXPECT_THROW(moduleWith("<integer><name>a</name><flag>a</flag><index>0</index>" + tail + "</integer>"), Error);
+  EXPECT_THROW(moduleWith("<integer><name>2a</name><longflag>a</longflag>" + tail + "</integer>"), Error);
+  EXPECT_THROW(moduleWith("<boolean><name>b</name><longflag>b</longflag><label>L</label><description>d</description>"
+                          "<default>true</default></boolean>"),
+               Error);
+  EXPECT_THROW(moduleWith("<string-enumeration><name>e</name><longflag>e</longflag><label>L</label>"
+                          "<description>d</description><default>C</default><element>A</element>"
+                          "<element>B</element></string-enumeration>"),
+               Error);
+  EXPECT_THROW(moduleWith("<integer><name>a</name><longflag>a</longflag>" + tail + "</integer>" +
+                          "<integer><name>b</name><longflag>a</longflag>" + tail + "</integer>"),
+               Error);
+  EXPECT_THROW(parseModuleDescription("<executable><parameters>"), Error);
+}
+
+} // namespace
+} // namespace slicemesh::cli

@@ -1,0 +1,219 @@
+// Whole runs of the executable on small generated volumes: label maps and a grayscale volume in,
+// meshes, summary, return parameters and progress out.
+#include "CLITestSupport.h"
+#include "ModuleDescription.h"
+#include "ModuleXml.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace slicemesh::testing
+{
+namespace
+{
+
+constexpr int emptySegmentation = 4;
+
+/** Two boxes in a 16 x 16 x 10 label map with 1 x 1 x 2 mm voxels:
+ *  label 1: i, j in [3, 9), k in [2, 6)  -> 6 x 6 x 8 mm = 288 mm^3 of voxels;
+ *  label 2: i in [11, 14), j in [3, 7), k in [3, 7) -> 3 x 4 x 8 mm = 96 mm^3 of voxels. */
+fs::path twoBoxesLabelMap(const fs::path& folder)
+{
+  const fs::path path = folder / "two-boxes.mha";
+  writeMetaImage(path, { 16, 16, 10 }, { 1.0, 1.0, 2.0 },
+                 [](int i, int j, int k) -> unsigned char
+                 {
+                   if (i >= 3 && i < 9 && j >= 3 && j < 9 && k >= 2 && k < 6)
+                   {
+                     return 1;
+                   }
+                   if (i >= 11 && i < 14 && j >= 3 && j < 7 && k >= 3 && k < 7)
+                   {
+                     return 2;
+                   }
+                   return 0;
+                 });
+  return path;
+}
+
+/** Contours at the 0.5 level cut each voxel-square corner by a right triangle of legs 0.5 voxel;
+ *  caps half a slice beyond give the full height. Volume of an a x b voxel box (1 mm pixels). */
+double expectedBoxVolume(int a, int b, int slices, double sliceThickness)
+{
+  return (a * b - 4 * 0.125) * slices * sliceThickness;
+}
+
+std::map<std::string, std::string> returnParameterMap(const fs::path& path)
+{
+  std::map<std::string, std::string> map;
+  for (const auto& [name, value] : returnParameters(path))
+  {
+    map[name] = value;
+  }
+  return map;
+}
+
+TEST(EndToEnd, LabelMapGivesAClosedMeshSummaryAndReturnParameters)
+{
+  const fs::path folder = freshFolder("e2e-labelmap");
+  const fs::path output = folder / "box.vtp";
+  const fs::path params = folder / "box.params";
+  const RunResult r = runSliceMesh("--label 1 --returnparameterfile " + quoted(params.string()) + " " +
+                                   quoted(twoBoxesLabelMap(folder).string()) + " " + quoted(output.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_GT(fs::file_size(output), 0u);
+
+  // The summary is the last line on stdout.
+  const std::vector<std::string> lines = linesOf(r.out);
+  ASSERT_FALSE(lines.empty());
+  const std::string summary = lines.back();
+  EXPECT_EQ(summary.rfind("SliceMesh: ", 0), 0u) << summary;
+  EXPECT_NE(summary.find(" triangles, closed, volume "), std::string::npos) << summary;
+  EXPECT_NE(summary.find(" mm^3 ("), std::string::npos) << summary;
+  EXPECT_NE(summary.find(" mL), "), std::string::npos) << summary;
+
+  // Exactly the return parameters the XML declares, in its order.
+  std::vector<std::string> declared;
+  for (const cli::ModuleParameter* p : cli::parseModuleDescription(cli::moduleXml()).parameters())
+  {
+    if (p->isReturnParameter())
+    {
+      declared.push_back(p->name);
+    }
+  }
+  std::vector<std::string> written;
+  for (const auto& entry : returnParameters(params))
+  {
+    written.push_back(entry.first);
+  }
+  EXPECT_EQ(written, declared);
+  const auto values = returnParameterMap(params);
+  EXPECT_GT(std::stol(values.at("triangles")), 12);
+  EXPECT_EQ(values.at("closed"), "true");
+  EXPECT_NEAR(std::stod(values.at("volume")), expectedBoxVolume(6, 6, 4, 2.0), 0.05 * 288.0);
+  EXPECT_GE(std::stod(values.at("seconds")), 0.0);
+  EXPECT_NE(summary.find(values.at("triangles") + " triangles"), std::string::npos);
+}
+
+TEST(EndToEnd, ProgressCoversEveryStageMonotonicallyFromZeroToOne)
+{
+  const fs::path folder = freshFolder("e2e-progress");
+  const RunResult r = runSliceMesh(quoted(twoBoxesLabelMap(folder).string()) + " " +
+                                   quoted((folder / "boxes.vtp").string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::vector<std::string> stages = { "Reading", "Segmentation", "Contours", "Tiling", "Validation", "Writing" };
+  EXPECT_EQ(stageNames(r.out, "filter-start"), stages);
+  EXPECT_EQ(stageNames(r.out, "filter-end"), stages);
+  const std::vector<double> progress = tagNumbers(r.out, "filter-progress");
+  ASSERT_FALSE(progress.empty());
+  EXPECT_DOUBLE_EQ(progress.front(), 0.0);
+  EXPECT_DOUBLE_EQ(progress.back(), 1.0);
+  for (std::size_t i = 1; i < progress.size(); ++i)
+  {
+    EXPECT_GE(progress[i], progress[i - 1]);
+  }
+  for (double stageProgress : tagNumbers(r.out, "filter-stage-progress"))
+  {
+    EXPECT_GE(stageProgress, 0.0);
+    EXPECT_LE(stageProgress, 1.0);
+  }
+  EXPECT_EQ(tagNumbers(r.out, "filter-time").size(), stages.size());
+}
+
+TEST(EndToEnd, LabelSelectsOneStructure)
+{
+  const fs::path folder = freshFolder("e2e-label2");
+  const fs::path params = folder / "p.params";
+  const RunResult r = runSliceMesh("-l 2 --returnparameterfile " + quoted(params.string()) + " " +
+                                   quoted(twoBoxesLabelMap(folder).string()) + " " + quoted((folder / "b.stl").string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NEAR(std::stod(returnParameterMap(params).at("volume")), expectedBoxVolume(3, 4, 4, 2.0), 0.05 * 96.0);
+}
+
+TEST(EndToEnd, AbsentLabelIsAnEmptySegmentationAndLeavesTheOutputAlone)
+{
+  const fs::path folder = freshFolder("e2e-empty");
+  const fs::path output = folder / "out.vtp";
+  std::ofstream(output) << "precious";
+  const RunResult r = runSliceMesh("--label 9 " + quoted(twoBoxesLabelMap(folder).string()) + " " +
+                                   quoted(output.string()));
+  EXPECT_EQ(r.exitCode, emptySegmentation) << r.err;
+  EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
+  EXPECT_EQ(fileText(output), "precious");
+}
+
+TEST(EndToEnd, GrayscaleWithOtsuFindsTheBrightObject)
+{
+  const fs::path folder = freshFolder("e2e-grayscale");
+  const fs::path input = folder / "bright-box.mha";
+  writeMetaImage(input, { 16, 16, 10 }, { 1.0, 1.0, 2.0 },
+                 [](int i, int j, int k) -> unsigned char
+                 {
+                   const bool inside = i >= 3 && i < 9 && j >= 3 && j < 9 && k >= 2 && k < 6;
+                   return static_cast<unsigned char>(inside ? 200 + (i + j) % 5 : 20 + (i * j + k) % 7);
+                 });
+  const fs::path params = folder / "p.params";
+  const RunResult r = runSliceMesh("--inputKind Grayscale --returnparameterfile " + quoted(params.string()) + " " +
+                                   quoted(input.string()) + " " + quoted((folder / "box.ply").string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NEAR(std::stod(returnParameterMap(params).at("volume")), expectedBoxVolume(6, 6, 4, 2.0), 0.05 * 288.0);
+}
+
+/** The "v x y z" lines of an OBJ file. */
+std::vector<std::array<double, 3>> objVertices(const fs::path& path)
+{
+  std::vector<std::array<double, 3>> vertices;
+  for (const std::string& line : linesOf(fileText(path)))
+  {
+    if (line.rfind("v ", 0) == 0)
+    {
+      std::istringstream in(line.substr(2));
+      std::array<double, 3> v{};
+      in >> v[0] >> v[1] >> v[2];
+      vertices.push_back(v);
+    }
+  }
+  return vertices;
+}
+
+TEST(EndToEnd, RASOutputNegatesXAndYAndSaysSo)
+{
+  const fs::path folder = freshFolder("e2e-ras");
+  const fs::path input = twoBoxesLabelMap(folder);
+  const fs::path lps = folder / "lps.obj";
+  const fs::path ras = folder / "ras.obj";
+  ASSERT_EQ(runSliceMesh("-l 1 " + quoted(input.string()) + " " + quoted(lps.string())).exitCode, 0);
+  ASSERT_EQ(runSliceMesh("-l 1 --coordinateSystem RAS " + quoted(input.string()) + " " + quoted(ras.string())).exitCode,
+            0);
+  EXPECT_NE(fileText(lps).find("SPACE=LPS"), std::string::npos);
+  EXPECT_NE(fileText(ras).find("SPACE=RAS"), std::string::npos);
+  const auto a = objVertices(lps);
+  const auto b = objVertices(ras);
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_FALSE(a.empty());
+  for (std::size_t i = 0; i < a.size(); ++i)
+  {
+    EXPECT_DOUBLE_EQ(b[i][0], -a[i][0]);
+    EXPECT_DOUBLE_EQ(b[i][1], -a[i][1]);
+    EXPECT_DOUBLE_EQ(b[i][2], a[i][2]);
+  }
+}
+
+TEST(EndToEnd, SameInputGivesTheSameFileBitForBit)
+{
+  const fs::path folder = freshFolder("e2e-deterministic");
+  const fs::path input = twoBoxesLabelMap(folder);
+  ASSERT_EQ(runSliceMesh(quoted(input.string()) + " " + quoted((folder / "a.obj").string())).exitCode, 0);
+  ASSERT_EQ(runSliceMesh(quoted(input.string()) + " " + quoted((folder / "b.obj").string())).exitCode, 0);
+  EXPECT_EQ(fileText(folder / "a.obj"), fileText(folder / "b.obj"));
+}
+
+} // namespace
+} // namespace slicemesh::testing

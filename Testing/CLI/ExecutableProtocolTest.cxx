@@ -1,0 +1,214 @@
+// The executable's side of Slicer's protocol and its command-line behaviour, for everything that
+// happens before (or without) a successful reconstruction.
+#include "CLITestSupport.h"
+#include "ModuleDescription.h"
+#include "ModuleXml.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+#include <set>
+
+namespace fs = std::filesystem;
+
+namespace slicemesh::testing
+{
+namespace
+{
+
+const cli::ModuleDescription& module()
+{
+  static const cli::ModuleDescription description = cli::parseModuleDescription(cli::moduleXml());
+  return description;
+}
+
+/** Exit codes of ExitCodes.h, as the README documents them. */
+constexpr int badArguments = 2;
+constexpr int unreadableInput = 3;
+constexpr int writeFailed = 6;
+
+TEST(Executable, HelpMentionsEveryLongflagAndEveryIndexedArgument)
+{
+  const RunResult r = runSliceMesh("--help");
+  EXPECT_EQ(r.exitCode, 0);
+  for (const cli::ModuleParameter* p : module().parameters())
+  {
+    if (!p->longflag.empty())
+    {
+      EXPECT_NE(r.out.find("--" + p->longflag), std::string::npos) << p->longflag;
+    }
+    if (!p->flag.empty())
+    {
+      EXPECT_NE(r.out.find("-" + p->flag + ","), std::string::npos) << p->flag;
+    }
+    if (p->index)
+    {
+      EXPECT_NE(r.out.find("<" + p->name + ">"), std::string::npos) << p->name;
+    }
+    if (!p->isReturnParameter() && !p->isBoolean() && !p->defaultValue.empty())
+    {
+      EXPECT_NE(r.out.find("Default: " + p->defaultValue), std::string::npos) << p->name;
+    }
+  }
+  EXPECT_NE(r.out.find("(mm)"), std::string::npos) << "units appear in the help";
+}
+
+TEST(Executable, EveryOptionItAcceptsIsInTheXml)
+{
+  const std::set<std::string> builtIn = { "help", "xml", "version", "echo", "returnparameterfile",
+                                          "processinformationaddress" };
+  std::set<std::string> longflags;
+  for (const cli::ModuleParameter* p : module().parameters())
+  {
+    longflags.insert(p->longflag);
+  }
+  const std::string help = runSliceMesh("--help").out;
+  const std::regex option("(^|[ ,])--([A-Za-z_][A-Za-z0-9_]*)");
+  int seen = 0;
+  for (const std::string& line : linesOf(help))
+  {
+    if (line.rfind("  -", 0) != 0)
+    {
+      continue; // option lines start with two spaces and a dash; descriptions are indented further
+    }
+    for (auto it = std::sregex_iterator(line.begin(), line.end(), option); it != std::sregex_iterator(); ++it, ++seen)
+    {
+      const std::string name = (*it)[2];
+      EXPECT_TRUE(longflags.count(name) || builtIn.count(name)) << "--" << name << " is not in the XML";
+    }
+  }
+  EXPECT_GE(seen, 6);
+}
+
+TEST(Executable, AcceptsEveryParameterWithItsDefault)
+{
+  const fs::path folder = freshFolder("defaults");
+  std::string arguments = "--echo";
+  for (const cli::ModuleParameter* p : module().parameters())
+  {
+    if (p->isReturnParameter() || p->index || p->isBoolean())
+    {
+      continue; // booleans default to false: absent
+    }
+    arguments += " --" + p->longflag + " " + quoted(p->defaultValue);
+    if (!p->flag.empty())
+    {
+      EXPECT_EQ(runSliceMesh("-" + p->flag + " " + quoted(p->defaultValue) + " --help").exitCode, 0) << p->flag;
+    }
+  }
+  const fs::path output = folder / "out.vtp";
+  const RunResult r = runSliceMesh(arguments + " " + quoted((folder / "missing.nrrd").string()) + " " +
+                                   quoted(output.string()));
+  // Accepted: the run gets as far as reading the (missing) input.
+  EXPECT_EQ(r.exitCode, unreadableInput) << r.err;
+  // And the defaults the executable uses are the XML's.
+  for (const cli::ModuleParameter* p : module().parameters())
+  {
+    if (!p->isReturnParameter() && !p->index)
+    {
+      EXPECT_NE(r.out.find("  " + p->name + " = " + (p->isBoolean() ? "false" : p->defaultValue) + "\n"),
+                std::string::npos)
+        << p->name;
+    }
+  }
+}
+
+TEST(Executable, UnknownFlagIsAOneLineErrorWithItsOwnExitCode)
+{
+  const RunResult r = runSliceMesh("--no-such-option in.nrrd out.vtp");
+  EXPECT_EQ(r.exitCode, badArguments);
+  EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("--no-such-option"), std::string::npos);
+  EXPECT_EQ(r.out, "");
+}
+
+TEST(Executable, EnumerationValueOutsideItsElementsIsAnError)
+{
+  for (const cli::ModuleParameter* p : module().parameters())
+  {
+    if (p->isEnumeration())
+    {
+      const RunResult r = runSliceMesh("--" + p->longflag + " NotAnElement in.nrrd out.vtp");
+      EXPECT_EQ(r.exitCode, badArguments) << p->name;
+      EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
+    }
+  }
+}
+
+TEST(Executable, ValueOutsideItsConstraintsIsAnError)
+{
+  const RunResult r = runSliceMesh("--wallRowHeight -1 in.nrrd out.vtp");
+  EXPECT_EQ(r.exitCode, badArguments);
+  EXPECT_NE(r.err.find("wallRowHeight"), std::string::npos);
+}
+
+TEST(Executable, AcceptsAndIgnoresProcessInformationAddress)
+{
+  const fs::path folder = freshFolder("processinformation");
+  const RunResult r = runSliceMesh("--processinformationaddress 0x7ffd0000 " +
+                                   quoted((folder / "missing.nrrd").string()) + " " +
+                                   quoted((folder / "out.vtp").string()));
+  EXPECT_EQ(r.exitCode, unreadableInput) << r.err;
+}
+
+TEST(Executable, MissingInputFailsWithoutCreatingOutputOrReturnParameters)
+{
+  const fs::path folder = freshFolder("missing-input");
+  const fs::path output = folder / "out.vtp";
+  const fs::path params = folder / "out.params";
+  const RunResult r = runSliceMesh("--returnparameterfile " + quoted(params.string()) + " " +
+                                   quoted((folder / "missing.nii.gz").string()) + " " + quoted(output.string()));
+  EXPECT_EQ(r.exitCode, unreadableInput);
+  EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("missing.nii.gz"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(output));
+  EXPECT_FALSE(fs::exists(params));
+  EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()), 0) << "no temporary files";
+}
+
+TEST(Executable, ExistingOutputIsUntouchedOnFailure)
+{
+  const fs::path folder = freshFolder("untouched");
+  const fs::path output = folder / "out.vtp";
+  std::ofstream(output) << "precious";
+  EXPECT_EQ(runSliceMesh(quoted((folder / "missing.nrrd").string()) + " " + quoted(output.string())).exitCode,
+            unreadableInput);
+  EXPECT_EQ(runSliceMesh("--label x " + quoted((folder / "missing.nrrd").string()) + " " + quoted(output.string()))
+              .exitCode,
+            badArguments);
+  EXPECT_EQ(fileText(output), "precious");
+}
+
+TEST(Executable, MissingOutputFolderIsAWriteFailureBeforeAnyWork)
+{
+  const fs::path folder = freshFolder("no-output-folder");
+  const RunResult r = runSliceMesh(quoted((folder / "missing.nrrd").string()) + " " +
+                                   quoted((folder / "nowhere" / "out.vtp").string()));
+  EXPECT_EQ(r.exitCode, writeFailed);
+  EXPECT_NE(r.err.find("nowhere"), std::string::npos) << r.err;
+}
+
+TEST(Executable, ProgressOfAFailedRunIsMonotonicAndItsStageIsClosed)
+{
+  const fs::path folder = freshFolder("failed-progress");
+  const RunResult r = runSliceMesh(quoted((folder / "missing.nrrd").string()) + " " + quoted((folder / "o.vtp").string()));
+  const std::vector<double> progress = tagNumbers(r.out, "filter-progress");
+  ASSERT_FALSE(progress.empty()) << r.out;
+  for (std::size_t i = 1; i < progress.size(); ++i)
+  {
+    EXPECT_GE(progress[i], progress[i - 1]);
+  }
+  EXPECT_EQ(stageNames(r.out, "filter-start"), std::vector<std::string>{ "Reading" });
+  EXPECT_EQ(stageNames(r.out, "filter-end"), std::vector<std::string>{ "Reading" });
+}
+
+TEST(Executable, VersionMatchesTheXml)
+{
+  const RunResult r = runSliceMesh("--version");
+  EXPECT_EQ(r.exitCode, 0);
+  EXPECT_EQ(r.out, "SliceMesh " + module().version + "\n");
+}
+
+} // namespace
+} // namespace slicemesh::testing
