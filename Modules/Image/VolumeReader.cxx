@@ -141,7 +141,9 @@ void checkGzipStream(const std::string& path)
   }
   // A stream that stops early ends with 0 bytes read and Z_BUF_ERROR, not with -1.
   int code = Z_OK;
-  const std::string reason = gzerror(file, &code);
+  std::string reason = gzerror(file, &code);
+  if (reason.compare(0, path.size() + 2, path + ": ") == 0)
+    reason.erase(0, path.size() + 2); // zlib names the file too
   gzclose(file);
   if (read < 0 || code != Z_OK)
     throw Error(path + ": a damaged or truncated gzip file (" + oneLine(reason) + ")");
