@@ -2,13 +2,17 @@
 #include "TestVolumes.h"
 #include "VolumeReader.h"
 
+#include "itkGDCMImageIO.h"
 #include "itkImageFileWriter.h"
+#include "itkImageSeriesWriter.h"
+#include "itkNumericSeriesFileNames.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <sstream>
 
 namespace slicemesh
 {
@@ -114,6 +118,20 @@ TEST_F(VolumeReaderTest, SampleVolumeIsReadable)
   EXPECT_LT(sample->GetDirection()[0][0], 0.999); // oblique
 }
 
+TEST_F(VolumeReaderTest, SingleSliceVolumeIsRead)
+{
+  // One slice is still a 3-D volume (Logic caps it with the slice spacing), in every format.
+  auto slab = testing::makeVolume({ 6, 5, 1 }, { 0.5, 0.5, 4.0 });
+  for (const std::string name : { "slab.nii.gz", "slab.nrrd", "slab.mha" })
+  {
+    SCOPED_TRACE(name);
+    write(slab.GetPointer(), path(name));
+    const ScalarVolume::Pointer read = readVolume(path(name));
+    EXPECT_EQ(read->GetLargestPossibleRegion().GetSize()[2], 1u);
+    EXPECT_NEAR(read->GetSpacing()[2], 4.0, 1e-6);
+  }
+}
+
 TEST_F(VolumeReaderTest, MissingFileIsAnError)
 {
   const std::string missing = path("nothing-here.nii.gz");
@@ -207,6 +225,71 @@ TEST_F(VolumeReaderTest, SingularDirectionIsAnError)
   const std::string file = writeText("flat.mha", metaImageHeader("1 1 1", "1 0 0 1 0 0 0 0 1"));
   const std::string message = errorMessageOf([&] { readVolume(file); });
   EXPECT_NE(message.find("singular"), std::string::npos) << message;
+}
+
+TEST_F(VolumeReaderTest, DicomSeriesDirectoryRoundTrip)
+{
+  // A CT series written slice by slice, each slice carrying its position and the orientation.
+  using ShortVolume = itk::Image<short, 3>;
+  auto volume = testing::makeImage<ShortVolume>({ 6, 5, 4 }, { 0.7, 0.7, 2.5 });
+  ShortVolume::PointType origin;
+  origin[0] = -20.0, origin[1] = 15.5, origin[2] = 100.0;
+  volume->SetOrigin(origin);
+  const double c = std::cos(0.2), s = std::sin(0.2);
+  ShortVolume::DirectionType direction; // a tilt about the x axis
+  direction.SetIdentity();
+  direction[1][1] = c, direction[1][2] = -s;
+  direction[2][1] = s, direction[2][2] = c;
+  volume->SetDirection(direction);
+  for (long n = 0; n < 120; ++n)
+    volume->GetBufferPointer()[n] = static_cast<short>(n * 3);
+
+  const fs::path dicom = m_Directory / "series";
+  fs::create_directories(dicom);
+  auto names = itk::NumericSeriesFileNames::New();
+  names->SetSeriesFormat((dicom / "slice%03d.dcm").string());
+  names->SetStartIndex(0);
+  names->SetEndIndex(3);
+  itk::ImageSeriesWriter<ShortVolume, itk::Image<short, 2>>::DictionaryArrayType headers;
+  std::vector<itk::MetaDataDictionary> dictionaries(4);
+  for (long k = 0; k < 4; ++k)
+  {
+    ShortVolume::PointType position;
+    volume->TransformIndexToPhysicalPoint({ { 0, 0, k } }, position);
+    std::ostringstream positionText, orientationText;
+    positionText << position[0] << "\\" << position[1] << "\\" << position[2];
+    orientationText << direction[0][0] << "\\" << direction[1][0] << "\\" << direction[2][0] << "\\"
+                    << direction[0][1] << "\\" << direction[1][1] << "\\" << direction[2][1];
+    itk::MetaDataDictionary& header = dictionaries[k];
+    itk::EncapsulateMetaData<std::string>(header, "0008|0016", "1.2.840.10008.5.1.4.1.1.2"); // CT image
+    itk::EncapsulateMetaData<std::string>(header, "0008|0060", "CT");
+    itk::EncapsulateMetaData<std::string>(header, "0020|000d", "1.2.826.0.1.3680043.2.1125.1.1");
+    itk::EncapsulateMetaData<std::string>(header, "0020|000e", "1.2.826.0.1.3680043.2.1125.1.2");
+    itk::EncapsulateMetaData<std::string>(header, "0020|0013", std::to_string(k + 1));
+    itk::EncapsulateMetaData<std::string>(header, "0020|0032", positionText.str());
+    itk::EncapsulateMetaData<std::string>(header, "0020|0037", orientationText.str());
+    itk::EncapsulateMetaData<std::string>(header, "0028|0030", "0.7\\0.7");
+    itk::EncapsulateMetaData<std::string>(header, "0018|0050", "2.5");
+    headers.push_back(&header);
+  }
+  auto writer = itk::ImageSeriesWriter<ShortVolume, itk::Image<short, 2>>::New();
+  writer->SetInput(volume);
+  writer->SetMetaDataDictionaryArray(&headers);
+  writer->SetImageIO(itk::GDCMImageIO::New());
+  writer->SetFileNames(names->GetFileNames());
+  writer->Update();
+
+  const ScalarVolume::Pointer read = readVolume(dicom.string());
+  ASSERT_EQ(read->GetLargestPossibleRegion().GetSize()[2], 4u);
+  for (unsigned int row = 0; row < 3; ++row)
+  {
+    EXPECT_NEAR(read->GetOrigin()[row], origin[row], 1e-3);
+    EXPECT_NEAR(read->GetSpacing()[row], volume->GetSpacing()[row], 1e-3);
+    for (unsigned int column = 0; column < 3; ++column)
+      EXPECT_NEAR(read->GetDirection()[row][column], direction[row][column], 1e-4);
+  }
+  for (long n = 0; n < 120; ++n)
+    ASSERT_EQ(read->GetBufferPointer()[n], n * 3.0f) << "voxel " << n;
 }
 
 TEST_F(VolumeReaderTest, DirectoryWithoutDicomIsAnError)
