@@ -10,6 +10,8 @@
 #include "ReturnParameters.h"
 #include "SliceMeshPipeline.h"
 
+#include "itkObject.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <iomanip>
@@ -55,9 +57,10 @@ PipelineSettings settingsFrom(const ParsedArguments& arguments)
   {
     settings.segmentation.threshold = arguments.number("threshold");
   }
-  else if (arguments.given("threshold"))
+  else if (arguments.given("threshold") && arguments.number("threshold") != 0.0)
   {
-    // Slicer passes every scalar, so this cannot be an error; say why the value has no effect.
+    // Slicer passes every scalar (the default 0 included), so this cannot be an error; when a user
+    // set a threshold, say why it has no effect.
     std::cerr << "SliceMesh: warning: --threshold is used only with --thresholdMethod Manual; using Otsu"
               << std::endl;
   }
@@ -101,6 +104,10 @@ int ModuleEntryPoint(int argc, char* argv[])
     std::cout << moduleXml() << std::flush;
     return Success;
   }
+
+  // ITK's warnings are multi-line console dumps (e.g. GDCM's "No Series were found" before the
+  // reader's own error); the library functions report what matters through exceptions.
+  itk::Object::GlobalWarningDisplayOff();
 
   try
   {

@@ -100,8 +100,10 @@ TEST(Executable, AcceptsEveryParameterWithItsDefault)
   const fs::path output = folder / "out.vtp";
   const RunResult r = runSliceMesh(arguments + " " + quoted((folder / "missing.nrrd").string()) + " " +
                                    quoted(output.string()));
-  // Accepted: the run gets as far as reading the (missing) input.
+  // Accepted: the run gets as far as reading the (missing) input, and the defaults Slicer passes
+  // cause no warning: stderr holds only the error.
   EXPECT_EQ(r.exitCode, unreadableInput) << r.err;
+  EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
   // And the defaults the executable uses are the XML's.
   for (const cli::ModuleParameter* p : module().parameters())
   {
