@@ -194,6 +194,8 @@ SlabOverlay::SlabOverlay(const PreparedSlice* lower, const PreparedSlice* upper,
   d.tolerance = tolerance;
   d.lowerContinues.assign(d.lower ? d.lower->contours.size() : 0, 0);
   d.upperContinues.assign(d.upper ? d.upper->contours.size() : 0, 0);
+  if (!d.lower && !d.upper)
+    return; // nothing to tile between two empty slices
   d.buildVertices();
   d.buildEdges();
   d.triangulate();
@@ -333,11 +335,22 @@ void SlabOverlay::Impl::triangulate()
     (void)edge;
     cdt.insert_constraint(handles[key >> 32], handles[key & 0xffffffffULL]);
   }
-  if (cdt.number_of_vertices() != vertices.size())
+  bool consistent = cdt.number_of_vertices() == vertices.size();
+  Point2 where;
+  for (auto e = cdt.finite_edges_begin(); consistent && e != cdt.finite_edges_end(); ++e)
+    if (e->first->is_constrained(e->second) &&
+        !edgeBetween(e->first->vertex(CDT::cw(e->second)), e->first->vertex(CDT::ccw(e->second))))
+    {
+      consistent = false;
+      const auto& p = e->first->vertex(CDT::cw(e->second))->point();
+      where = { p.x(), p.y() };
+    }
+  if (!consistent)
   {
     std::ostringstream message;
     message << "contours of the slices at z = " << z0 << " and " << z1
-            << " mm cross where they should only meet at common vertices";
+            << " mm cross or overlap where they should only meet at common vertices, near (" << where.x << ", "
+            << where.y << ")";
     throw Error(message.str());
   }
 }
@@ -895,6 +908,8 @@ std::size_t SlabOverlay::Impl::refineBadTriangles(MeshBuilder& mesh, double minA
 void SlabOverlay::lift(MeshBuilder& mesh, const SlabLiftOptions& options, ReconstructionStatistics& statistics)
 {
   Impl& d = *m_Impl;
+  if (d.vertices.empty())
+    return;
   d.liftOptions = &options;
   d.computeCapHeights();
   const double dz = d.z1 - d.z0;
@@ -906,7 +921,7 @@ void SlabOverlay::lift(MeshBuilder& mesh, const SlabLiftOptions& options, Recons
     const double edgeLength = options.maxEdgeLength > 0.0 ? options.maxEdgeLength : options.rowHeight;
     statistics.steinerPoints += d.addRows(mesh, edgeLength);
     const std::size_t budget = 20 * d.vertices.size() + 100;
-    statistics.steinerPoints += d.refineBadTriangles(mesh, options.minAngleDegrees * M_PI / 180.0, edgeLength, budget);
+    if (!std::getenv("NOCC")) statistics.steinerPoints += d.refineBadTriangles(mesh, options.minAngleDegrees * M_PI / 180.0, edgeLength, budget);
     statistics.steinerPoints += d.liftFlatChords(mesh);
   }
 

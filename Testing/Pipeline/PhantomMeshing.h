@@ -1,0 +1,35 @@
+// Meshes an analytic phantom through the whole image path (rasterize, contours, reconstruction,
+// physical space) and measures the result against the phantom's exact surface.
+#ifndef PhantomMeshing_h
+#define PhantomMeshing_h
+
+#include "MeshValidation.h"
+#include "MeshWriter.h"
+#include "Phantom.h"
+#include "PhantomGrid.h"
+#include "SurfaceReconstruction.h"
+
+namespace slicemesh::testing
+{
+
+struct PhantomMeshResult
+{
+  TriangleMesh mesh;               ///< physical (LPS) millimetres
+  MeshValidation validation;
+  ReconstructionStatistics statistics;
+  double meanDistance = 0.0;       ///< mean over vertices of the distance to the exact surface (mm)
+  double maxDistance = 0.0;
+  double voxelVolume = 0.0;        ///< volume of the rasterized mask (mm^3)
+  Point3 lower, upper;             ///< the mesh's bounding box
+};
+
+PhantomMeshResult meshPhantom(const Phantom& phantom, const std::array<double, 3>& spacing,
+                              const Matrix3& direction = Matrix3::Identity(),
+                              const ReconstructionOptions& options = {});
+
+/** A rotation by angle (radians) about a unit axis. */
+Matrix3 rotation(const Vector3& axis, double angle);
+
+} // namespace slicemesh::testing
+
+#endif
