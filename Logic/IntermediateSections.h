@@ -1,0 +1,66 @@
+// Stage (before reconstructSurface): intermediate sections for undersampled slabs, from the zero
+// level set of a variational implicit function (paper, section 4.4; Turk & O'Brien 1999/2002).
+//
+// A slab (two adjacent slices) gets sections when
+//  - bridging is on and a pair of its contours corresponds only by distance (no overlap): the
+//    sections carry the shape across, so the pair becomes one component of the surface; or
+//  - its slice spacing exceeds maxSliceSpacingFactor times the in-plane spacing.
+// The implicit function is fitted to all contours of the slab's two slices and of the slices just
+// beyond them (for smoothness across slabs); each section is its zero level set at one height,
+// extracted by marching squares over the slab's box plus a margin. Sections are kept only if they
+// connect, by overlap, exactly the contours the correspondence rule joins (no component added or
+// removed; a one-to-one pair keeps one contour per section); otherwise the slab is left as it was.
+#ifndef IntermediateSections_h
+#define IntermediateSections_h
+
+#include "ContourConstraints.h"
+#include "SliceMeshTypes.h"
+
+#include <string>
+#include <vector>
+
+namespace slicemesh
+{
+
+struct UndersamplingOptions
+{
+  /** Threshold of the distance rule (mm): same-orientation contours of adjacent slices whose
+   *  boundaries come closer than this correspond even without overlap. 0: overlap only. */
+  double correspondenceDistance = 0.0;
+  /** Join distance-matched, non-overlapping contours through intermediate sections (paper 4.4).
+   *  Off by default, as in the paper; needs correspondenceDistance > 0 to have any effect. */
+  bool bridgeNonOverlapping = false;
+  /** 0: off. Otherwise slabs thicker than this factor times the in-plane spacing (the median contour
+   *  edge length of the stack) get evenly spaced sections until they are not. */
+  double maxSliceSpacingFactor = 0.0;
+  /** Most sections inserted into one slab. */
+  std::size_t maxSectionsPerSlab = 16;
+  /** The budget of centres per fit (see ContourConstraints.h). */
+  ConstraintSampling sampling;
+};
+
+struct SectionStatistics
+{
+  std::size_t slabs = 0;             ///< slabs examined
+  std::size_t slabsFitted = 0;       ///< slabs for which an implicit function was fitted
+  std::size_t slabsRefined = 0;      ///< slabs that got sections
+  std::size_t slabsBridged = 0;      ///< slabs whose distance-only pairs are now joined by overlapping sections
+  std::size_t bridgesFailed = 0;     ///< slabs whose distance-only pairs could not be joined within the cap
+  std::size_t slabsRejected = 0;     ///< slabs whose sections changed the topology and were dropped
+  std::size_t sectionsInserted = 0;
+  std::size_t largestFit = 0;        ///< centres in the largest fit
+  double fitSeconds = 0.0;           ///< building and solving the implicit functions
+  double extractSeconds = 0.0;       ///< evaluating grids and extracting and checking sections
+  double inPlaneSpacing = 0.0;       ///< the median contour edge length (mm)
+  std::vector<std::string> notes;    ///< one line per slab that could not be handled as asked
+};
+
+/** Returns the stack with intermediate sections inserted where the options ask for them; slices not
+ *  touched are copied unchanged, sections come between them in increasing z. Throws slicemesh::Error
+ *  on bad options (negative or non-finite values). */
+ContourStack insertIntermediateSections(const ContourStack& stack, const UndersamplingOptions& options,
+                                        SectionStatistics* statistics = nullptr);
+
+} // namespace slicemesh
+
+#endif

@@ -1,0 +1,189 @@
+#include "ContourCorrespondence.h"
+#include "ContourStacks.h"
+#include "IntermediateSections.h"
+#include "MeshValidation.h"
+#include "PlanarGeometry.h"
+#include "SurfaceReconstruction.h"
+
+#include <gtest/gtest.h>
+
+#include <iostream>
+
+using namespace slicemesh;
+using namespace slicemesh::testing;
+
+namespace
+{
+
+/** Circles of radius r whose centres move `shift` in x from one slice to the next. */
+ContourStack tiltedCapsule(double r, double shift, double dz, int slices)
+{
+  ContourStack stack;
+  stack.sliceSpacing = dz;
+  for (int k = 0; k < slices; ++k)
+    stack.slices.push_back({ k * dz, { circle(k * shift, 0.0, r, 64) } });
+  return stack;
+}
+
+/** A sphere at the origin sliced symmetrically: z = 0, +-dz, +-2 dz, ... inside the sphere. */
+ContourStack slicedSphere(double r, double dz, int points)
+{
+  const double top = std::floor((r - 1e-9) / dz) * dz;
+  return sliceStack(-top, top, dz, [&](double z) {
+    return std::vector<Polygon2>{ circle(0, 0, std::sqrt(r * r - z * z), points) };
+  });
+}
+
+/** Mean distance of the mesh's vertices, and of its triangles' centroids weighted by area, to a sphere. */
+void distanceToSphere(const TriangleMesh& mesh, double r, double& vertexMean, double& surfaceMean)
+{
+  vertexMean = 0.0;
+  for (const Point3& p : mesh.points)
+    vertexMean += sphereDistance(p, { 0, 0, 0 }, r);
+  vertexMean /= static_cast<double>(mesh.points.size());
+  double weighted = 0.0, area = 0.0;
+  for (const Triangle& t : mesh.triangles)
+  {
+    const Point3 &a = mesh.points[t[0]], &b = mesh.points[t[1]], &c = mesh.points[t[2]];
+    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+    const double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
+    const double s = 0.5 * std::sqrt(cx * cx + cy * cy + cz * cz);
+    const Point3 g{ (a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3 };
+    weighted += s * sphereDistance(g, { 0, 0, 0 }, r);
+    area += s;
+  }
+  surfaceMean = weighted / area;
+}
+
+std::size_t contourCount(const ContourStack& stack, std::size_t slice)
+{
+  return stack.slices[slice].contours.size();
+}
+
+} // namespace
+
+TEST(IntermediateSections, NothingAskedNothingChanged)
+{
+  const ContourStack stack = tiltedCapsule(5.0, 15.0, 3.0, 4);
+  SectionStatistics statistics;
+  const ContourStack same = insertIntermediateSections(stack, {}, &statistics);
+  ASSERT_EQ(same.slices.size(), stack.slices.size());
+  EXPECT_EQ(statistics.sectionsInserted, 0u);
+  EXPECT_EQ(statistics.slabsFitted, 0u);
+  for (std::size_t k = 0; k < stack.slices.size(); ++k)
+  {
+    EXPECT_EQ(same.slices[k].z, stack.slices[k].z);
+    ASSERT_EQ(same.slices[k].contours.size(), 1u);
+    EXPECT_EQ(same.slices[k].contours[0].size(), stack.slices[k].contours[0].size());
+  }
+  UndersamplingOptions bad;
+  bad.correspondenceDistance = -1.0;
+  EXPECT_THROW(insertIntermediateSections(stack, bad), Error);
+}
+
+TEST(IntermediateSections, TiltedCapsuleBecomesOneComponentWhenBridged)
+{
+  // Adjacent circles do not overlap: the centres move 1.5 diameters per slice (a gap of one radius).
+  const double r = 5.0;
+  const ContourStack stack = tiltedCapsule(r, 3.0 * r, 3.0, 5);
+  ASSERT_EQ(matchContours(stack.slices[0].contours, stack.slices[1].contours).groups.size(), 2u);
+
+  // Without bridging, every circle is capped as its own blob.
+  const MeshValidation separate = validateMesh(reconstructSurface(stack));
+  EXPECT_TRUE(separate.valid()) << separate.summary();
+  EXPECT_EQ(separate.components, 5u);
+
+  UndersamplingOptions options;
+  options.correspondenceDistance = 1.2 * r;
+  const ContourStack unbridged = insertIntermediateSections(stack, options);
+  EXPECT_EQ(unbridged.slices.size(), stack.slices.size()) << "bridging is off by default";
+
+  options.bridgeNonOverlapping = true;
+  SectionStatistics statistics;
+  const ContourStack bridged = insertIntermediateSections(stack, options, &statistics);
+  for (const std::string& note : statistics.notes)
+    std::cout << "[ note     ] " << note << "\n";
+  std::cout << "[ sections ] capsule: " << statistics.sectionsInserted << " sections in " << statistics.slabsBridged
+            << " slabs, fit " << statistics.fitSeconds * 1e3 << " ms (" << statistics.largestFit << " centres), extract "
+            << statistics.extractSeconds * 1e3 << " ms\n";
+  EXPECT_EQ(statistics.slabsBridged, 4u);
+  EXPECT_EQ(statistics.bridgesFailed, 0u);
+  ASSERT_GT(bridged.slices.size(), stack.slices.size());
+  for (std::size_t k = 0; k < bridged.slices.size(); ++k)
+    EXPECT_EQ(contourCount(bridged, k), 1u) << "slice " << k << " at z " << bridged.slices[k].z;
+
+  const MeshValidation joined = validateMesh(reconstructSurface(bridged));
+  EXPECT_TRUE(joined.valid()) << joined.summary();
+  EXPECT_EQ(joined.components, 1u);
+  EXPECT_EQ(joined.eulerCharacteristic, 2);
+}
+
+TEST(IntermediateSections, SparseSphereGetsCloserToTheTruth)
+{
+  const double r = 20.0, dz = 6.0;
+  const ContourStack stack = slicedSphere(r, dz, 90);
+  UndersamplingOptions options;
+  options.maxSliceSpacingFactor = 2.0;
+  SectionStatistics statistics;
+  const ContourStack refined = insertIntermediateSections(stack, options, &statistics);
+  for (const std::string& note : statistics.notes)
+    std::cout << "[ note     ] " << note << "\n";
+  EXPECT_GT(statistics.sectionsInserted, 0u);
+  EXPECT_EQ(statistics.slabsRejected, 0u);
+  EXPECT_EQ(refined.slices.size(), stack.slices.size() + statistics.sectionsInserted);
+  for (std::size_t k = 0; k < refined.slices.size(); ++k)
+    EXPECT_EQ(contourCount(refined, k), 1u) << "an overlapping slab keeps one contour per section";
+
+  const TriangleMesh coarse = reconstructSurface(stack);
+  const TriangleMesh fine = reconstructSurface(refined);
+  const MeshValidation v = validateMesh(fine);
+  EXPECT_TRUE(v.valid()) << v.summary();
+  EXPECT_EQ(v.components, 1u);
+  double coarseVertex, coarseSurface, fineVertex, fineSurface;
+  distanceToSphere(coarse, r, coarseVertex, coarseSurface);
+  distanceToSphere(fine, r, fineVertex, fineSurface);
+  const double exact = 4.0 / 3.0 * M_PI * r * r * r;
+  std::cout << "[ sections ] sphere r " << r << " at " << dz << " mm, in-plane " << statistics.inPlaneSpacing << " mm: "
+            << statistics.sectionsInserted << " sections, fit " << statistics.fitSeconds * 1e3 << " ms, extract "
+            << statistics.extractSeconds * 1e3 << " ms\n"
+            << "[ sections ] mean vertex distance " << coarseVertex << " -> " << fineVertex << " mm, mean surface distance "
+            << coarseSurface << " -> " << fineSurface << " mm, volume error "
+            << 100.0 * (validateMesh(coarse).volume / exact - 1.0) << "% -> " << 100.0 * (v.volume / exact - 1.0) << "%\n";
+  EXPECT_LT(fineVertex, coarseVertex);
+  EXPECT_LT(fineSurface, coarseSurface);
+  EXPECT_NEAR(v.volume, exact, 0.03 * exact);
+}
+
+TEST(IntermediateSections, OverlappingAnnulusKeepsItsTopologyAndUntouchedSlices)
+{
+  // A twisted annulus (outer and hole drift apart slowly): every slab overlaps one-to-one, so each
+  // section must hold one outer boundary and one hole, and the original slices stay as they were.
+  const ContourStack stack = sliceStack(0.0, 20.0, 5.0, [](double z) {
+    return std::vector<Polygon2>{ circle(0.1 * z, 0, 12.0 - 0.1 * z, 120), circle(-0.05 * z, 0.1 * z, 5.0, 60, true) };
+  });
+  UndersamplingOptions options;
+  options.maxSliceSpacingFactor = 2.0;
+  SectionStatistics statistics;
+  const ContourStack refined = insertIntermediateSections(stack, options, &statistics);
+  EXPECT_GT(statistics.sectionsInserted, 0u);
+  EXPECT_EQ(statistics.slabsRejected, 0u);
+  std::size_t original = 0;
+  for (const Slice& slice : refined.slices)
+  {
+    ASSERT_EQ(slice.contours.size(), 2u) << "z " << slice.z;
+    int holes = 0;
+    for (const Polygon2& c : slice.contours)
+      holes += twiceSignedArea(c) < 0 ? 1 : 0;
+    EXPECT_EQ(holes, 1) << "z " << slice.z;
+    if (original < stack.slices.size() && slice.z == stack.slices[original].z)
+    {
+      EXPECT_EQ(slice.contours[0].size(), stack.slices[original].contours[0].size());
+      EXPECT_EQ(slice.contours[1][3].x, stack.slices[original].contours[1][3].x);
+      ++original;
+    }
+  }
+  EXPECT_EQ(original, stack.slices.size());
+  const MeshValidation v = validateMesh(reconstructSurface(refined));
+  EXPECT_TRUE(v.valid()) << v.summary();
+  EXPECT_EQ(v.eulerCharacteristic, 0); // a torus-like tube
+}
