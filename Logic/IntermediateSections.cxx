@@ -228,12 +228,11 @@ bool contoursApart(const Layer& layer)
   return true;
 }
 
-/** Contours of `beyond` (a slice next to the slab) that correspond to the given contours of `inside`
- *  (the slab's slice on that side). */
-std::vector<Polygon2> partnersBeyond(const Layer& beyond, const Layer& inside, const std::vector<std::size_t>& members,
-                                     double threshold)
+/** Contours of `beyond` (the slice next to the slab on one side) that correspond to the given
+ *  members of `inside` (the slab's slice on that side), by the same rule. */
+Layer partnersBeyond(const Layer& beyond, const Layer& inside, const std::vector<std::size_t>& members, double threshold)
 {
-  std::vector<Polygon2> partners;
+  Layer partners;
   for (const CorrespondenceGroup& group : matchContours(beyond, inside, threshold).groups)
   {
     const bool ours = std::any_of(group.upper.begin(), group.upper.end(), [&](std::size_t j) {
@@ -358,14 +357,7 @@ ContourStack insertIntermediateSections(const ContourStack& stack, const Undersa
               support.push_back({ stack.slices[k - 1].z, std::move(belowPartners) });
             support.push_back({ lowerSlice.z, lowerGroup });
             support.push_back({ upperSlice.z, upperGroup });
-            // partnersBeyond pairs (beyond as lower, inside as upper); above lies over the slab.
-            Layer abovePartners;
-            for (const CorrespondenceGroup& g : matchContours(upper, above, threshold).groups)
-              if (std::any_of(g.lower.begin(), g.lower.end(), [&](std::size_t j) {
-                    return std::find(group.upper.begin(), group.upper.end(), j) != group.upper.end();
-                  }))
-                for (std::size_t i : g.upper)
-                  abovePartners.push_back(above[i]);
+            Layer abovePartners = partnersBeyond(above, upper, group.upper, threshold);
             if (!abovePartners.empty())
               support.push_back({ stack.slices[k + 2].z, std::move(abovePartners) });
             out.push_back(fitSheared(support, lowerGroup, upperGroup, lowerSlice.z, dz, { b.x - a.x, b.y - a.y },

@@ -5,11 +5,17 @@
 //  - bridging is on and a pair of its contours corresponds only by distance (no overlap): the
 //    sections carry the shape across, so the pair becomes one component of the surface; or
 //  - its slice spacing exceeds maxSliceSpacingFactor times the in-plane spacing.
-// The implicit function is fitted to all contours of the slab's two slices and of the slices just
-// beyond them (for smoothness across slabs); each section is its zero level set at one height,
-// extracted by marching squares over the slab's box plus a margin. Sections are kept only if they
-// connect, by overlap, exactly the contours the correspondence rule joins (no component added or
-// removed; a one-to-one pair keeps one contour per section); otherwise the slab is left as it was.
+// Spacing only: one implicit function is fitted to all contours of the slab's two slices and of the
+// slices just beyond them (for smoothness across slabs); each section is its zero level set at one
+// height, extracted by marching squares over the slab's box plus a margin.
+// Bridging: one function per correspondence group, fitted in a frame sheared along the group's drift
+// (the centroid displacement from slice to slice), so the pair overlaps itself in that frame; a single
+// unsheared fit cannot bridge: its zero level set keeps each contour as a vertical column (measured:
+// f > 0 half way between two circles 1.5 diameters apart). Sections are added one, two, three, ...
+// until consecutive layers overlap along every distance-matched pair.
+// Sections are kept only if they connect, by overlap, exactly the contours the correspondence rule
+// joins (no component added or removed; a one-to-one pair keeps one contour per section) and the
+// contours of a section stay apart; otherwise the slab is left as it was and a note says so.
 #ifndef IntermediateSections_h
 #define IntermediateSections_h
 

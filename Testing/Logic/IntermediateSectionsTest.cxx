@@ -187,3 +187,26 @@ TEST(IntermediateSections, OverlappingAnnulusKeepsItsTopologyAndUntouchedSlices)
   EXPECT_TRUE(v.valid()) << v.summary();
   EXPECT_EQ(v.eulerCharacteristic, 0); // a torus-like tube
 }
+
+TEST(IntermediateSections, TwoTubesDriftingApartAreBridgedSeparately)
+{
+  // Two tilted tubes in the same slices, drifting in opposite directions: each group gets its own
+  // sheared fit, and the two never merge.
+  const double r = 4.0, shift = 11.0, dz = 2.5;
+  ContourStack stack;
+  stack.sliceSpacing = dz;
+  for (int k = 0; k < 4; ++k)
+    stack.slices.push_back({ k * dz, { circle(-20.0 - k * shift, 0.0, r, 48), circle(20.0 + k * shift, 5.0, r, 48) } });
+  UndersamplingOptions options;
+  options.correspondenceDistance = 5.0;
+  options.bridgeNonOverlapping = true;
+  SectionStatistics statistics;
+  const ContourStack bridged = insertIntermediateSections(stack, options, &statistics);
+  EXPECT_EQ(statistics.slabsBridged, 3u);
+  EXPECT_EQ(statistics.bridgesFailed, 0u);
+  for (const Slice& slice : bridged.slices)
+    EXPECT_EQ(slice.contours.size(), 2u) << "z " << slice.z;
+  const MeshValidation v = validateMesh(reconstructSurface(bridged));
+  EXPECT_TRUE(v.valid()) << v.summary();
+  EXPECT_EQ(v.components, 2u);
+}
