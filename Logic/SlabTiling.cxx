@@ -176,6 +176,7 @@ struct SlabOverlay::Impl
   bool insertSteiner(const Point2& p, double z, MeshBuilder& mesh);
   std::size_t addRows(MeshBuilder& mesh, double edgeLength);
   std::size_t refineBadTriangles(MeshBuilder& mesh, double minAngle, double edgeLength, std::size_t budget);
+  std::size_t flipTowardsSurfaceQuality(const MeshBuilder& mesh);
   std::vector<std::int32_t> wallChain(int vertex, std::map<int, std::vector<std::int32_t>>& chains, int rows,
                                       MeshBuilder& mesh) const;
   void addWallStrip(const std::vector<std::int32_t>& from, const std::vector<std::int32_t>& to, MeshBuilder& mesh,
@@ -733,7 +734,16 @@ bool SlabOverlay::Impl::insertSteiner(const Point2& p, double z, MeshBuilder& me
     return false;
   if (!isDifference(f))
     return false;
+  // The new faces lie in the same difference polygon (insertion never crosses a constraint): they
+  // inherit its classification, so further insertions can be placed before the next classify().
+  FaceData region = f->info();
+  region.cornerLevel = { NoLevel, NoLevel, NoLevel };
+  region.lifted = { -1, -1, -1 };
   VertexHandle v = cdt.insert(point, type, f, index);
+  auto face = cdt.incident_faces(v), done = face;
+  do
+    face->info() = region;
+  while (++face != done);
   OverlayVertex steiner;
   steiner.p = p;
   steiner.steinerId = mesh.addPoint(p.x, p.y, z);
@@ -807,11 +817,13 @@ std::size_t SlabOverlay::Impl::addRows(MeshBuilder& mesh, double edgeLength)
     if (isDifference(f))
       for (int i = 0; i < 3; ++i)
         placed.add(approximateLift(f, i, mesh));
-  std::vector<std::pair<Point2, double>> candidates;
+  // Columns start from the contour vertices of one slice only, the one with more of them, so the
+  // rows line up: the planar Delaunay triangulation of aligned rows is well shaped in 3D even where
+  // the slope compresses the rows in projection; staggered rows from both sides are not.
+  std::vector<VertexHandle> starts[2];
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
   {
-    const OverlayVertex& ov = vertices[v->info()];
-    const Level level = singleLevel(ov);
+    const Level level = singleLevel(vertices[v->info()]);
     if (level == NoLevel)
       continue;
     bool onMixed = false;
@@ -819,8 +831,14 @@ std::size_t SlabOverlay::Impl::addRows(MeshBuilder& mesh, double edgeLength)
     do
       onMixed = onMixed || inMixed(face);
     while (++face != done && !onMixed);
-    if (!onMixed)
-      continue;
+    if (onMixed)
+      starts[level].push_back(v);
+  }
+  const Level level = starts[LowerLevel].size() >= starts[UpperLevel].size() ? LowerLevel : UpperLevel;
+  std::vector<std::pair<Point2, double>> candidates;
+  for (VertexHandle v : starts[level])
+  {
+    const OverlayVertex& ov = vertices[v->info()];
     Point2 target;
     const double flat = (level == LowerLevel ? upperNearest : lowerNearest)->nearest(ov.p, &target);
     int m = static_cast<int>(std::lround(std::hypot(flat, dz) / edgeLength));
@@ -905,6 +923,69 @@ std::size_t SlabOverlay::Impl::refineBadTriangles(MeshBuilder& mesh, double minA
   return inserted;
 }
 
+std::size_t SlabOverlay::Impl::flipTowardsSurfaceQuality(const MeshBuilder& mesh)
+{
+  // The planar CDT minimises the Dirichlet energy of the height field (Rippa), but where the surface
+  // climbs steeply between nearly parallel contours its triangles are slivers in 3D: Delaunay in
+  // the plane is not Delaunay on the lifted surface. Lawson flips with the max-min angle criterion
+  // measured on the lifted triangles make the tiling Delaunay-like in the surface's own metric.
+  // A flip is taken only where the quad is convex in projection (the surface stays a height field,
+  // so no triangle can cross another) and never at a vertex common to both slices or into a chord
+  // flat on a slice plane (the invariants of the switch fans and of the neighbouring slabs).
+  auto lifted = [&](VertexHandle v) -> Point3 {
+    const OverlayVertex& ov = vertices[v->info()];
+    if (ov.isSteiner())
+      return mesh.point(ov.steinerId);
+    return { ov.p.x, ov.p.y, ov.lowerId >= 0 ? z0 : z1 };
+  };
+  auto flippable = [&](FaceHandle f, int i) {
+    if (f->is_constrained(i) || cdt.is_infinite(f) || cdt.is_infinite(f->neighbor(i)) || !inMixed(f))
+      return false;
+    FaceHandle g = f->neighbor(i);
+    const VertexHandle a = f->vertex(i), b = g->vertex(cdt.mirror_index(f, i));
+    const VertexHandle p = f->vertex(CDT::cw(i)), q = f->vertex(CDT::ccw(i));
+    for (VertexHandle v : { a, b, p, q })
+      if (vertices[v->info()].onBoth())
+        return false;
+    const Level la = singleLevel(vertices[a->info()]), lb = singleLevel(vertices[b->info()]);
+    if (la != NoLevel && la == lb)
+      return false;
+    const Point2 pa{ a->point().x(), a->point().y() }, pb{ b->point().x(), b->point().y() };
+    const Point2 pp{ p->point().x(), p->point().y() }, pq{ q->point().x(), q->point().y() };
+    if (orientation(pa, pb, pp) * orientation(pa, pb, pq) >= 0)
+      return false;
+    const Point3 A = lifted(a), B = lifted(b), P = lifted(p), Q = lifted(q);
+    const double before = std::min(minAngle3(A, P, Q), minAngle3(B, Q, P));
+    const double after = std::min(minAngle3(A, B, Q), minAngle3(B, A, P));
+    return after > before + 1e-9;
+  };
+  std::vector<std::pair<VertexHandle, VertexHandle>> queue;
+  for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
+    if (!e->first->is_constrained(e->second) && inMixed(e->first))
+      queue.emplace_back(e->first->vertex(CDT::cw(e->second)), e->first->vertex(CDT::ccw(e->second)));
+  std::size_t flips = 0;
+  const std::size_t limit = 20 * queue.size() + 100;
+  while (!queue.empty() && flips < limit)
+  {
+    const auto [u, v] = queue.back();
+    queue.pop_back();
+    FaceHandle f;
+    int i = 0;
+    if (!cdt.is_edge(u, v, f, i) || !flippable(f, i))
+      continue;
+    FaceHandle g = f->neighbor(i);
+    const VertexHandle a = f->vertex(i), b = g->vertex(cdt.mirror_index(f, i));
+    cdt.flip(f, i);
+    ++flips;
+    for (VertexHandle w : { u, v })
+    {
+      queue.emplace_back(a, w);
+      queue.emplace_back(b, w);
+    }
+  }
+  return flips;
+}
+
 void SlabOverlay::lift(MeshBuilder& mesh, const SlabLiftOptions& options, ReconstructionStatistics& statistics)
 {
   Impl& d = *m_Impl;
@@ -915,15 +996,20 @@ void SlabOverlay::lift(MeshBuilder& mesh, const SlabLiftOptions& options, Recons
   const double dz = d.z1 - d.z0;
   const int rows = std::max(1, static_cast<int>(std::lround(dz / options.rowHeight)));
 
-  statistics.steinerPoints += d.liftFlatChords(mesh);
+  // Rows first: the flat-chord splits then fall on the few chords the rows leave.
   if (options.minAngleDegrees > 0.0)
   {
     const double edgeLength = options.maxEdgeLength > 0.0 ? options.maxEdgeLength : options.rowHeight;
     statistics.steinerPoints += d.addRows(mesh, edgeLength);
-    const std::size_t budget = 20 * d.vertices.size() + 100;
-    if (!std::getenv("NOCC")) statistics.steinerPoints += d.refineBadTriangles(mesh, options.minAngleDegrees * M_PI / 180.0, edgeLength, budget);
     statistics.steinerPoints += d.liftFlatChords(mesh);
+    const std::size_t budget = 20 * d.vertices.size() + 100;
+    if (options.surfaceMetricFlips)
+      d.flipTowardsSurfaceQuality(mesh);
+    statistics.steinerPoints += d.refineBadTriangles(mesh, options.minAngleDegrees * M_PI / 180.0, edgeLength, budget);
   }
+  statistics.steinerPoints += d.liftFlatChords(mesh);
+  if (options.minAngleDegrees > 0.0 && options.surfaceMetricFlips)
+    d.flipTowardsSurfaceQuality(mesh);
 
   // Levels of common vertices, and where the surface switches from one slice to the other.
   for (auto f = d.cdt.finite_faces_begin(); f != d.cdt.finite_faces_end(); ++f)

@@ -28,6 +28,7 @@ struct SlabLiftOptions
   CapPlacement capPlacement = CapPlacement::HalfSliceBeyond;
   double minAngleDegrees = 30.0;                 ///< Steiner refinement target on the 3D triangles; 0: off
   double maxEdgeLength = 0.0;                    ///< Steiner spacing (mm); 0: the row height
+  bool surfaceMetricFlips = true;                ///< flip towards 3D quality after refinement
   const std::vector<char>* lowerIsolated = nullptr; ///< lower contours whose region meets neither neighbour
   const std::vector<char>* upperIsolated = nullptr;
 };

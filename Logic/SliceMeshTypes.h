@@ -40,8 +40,10 @@ struct Slice
 struct ContourStack
 {
   std::vector<Slice> slices;
-  /** Distance used to cap the first and last slice when the stack has a single slice (mm). */
-  double sliceSpacing = 1.0;
+  /** The thickness each slice stands for (mm), e.g. the image's slice spacing: caps at the ends of
+   *  the stack lie half of it beyond the last contour. 0 means: the distance between the two end
+   *  slices and their neighbours (a single slice then needs it set). */
+  double sliceSpacing = 0.0;
 };
 
 /** Maps the stack frame to physical (LPS) space: p = origin + direction * (x, y, z).

@@ -24,8 +24,10 @@ void checkStack(const ContourStack& stack)
     if (k > 0 && !(stack.slices[k].z > stack.slices[k - 1].z))
       throw Error("contour stack: slice heights must increase strictly (slice " + std::to_string(k) + ")");
   }
-  if (!(stack.sliceSpacing > 0.0) || !std::isfinite(stack.sliceSpacing))
-    throw Error("contour stack: slice spacing must be positive and finite");
+  if (!(stack.sliceSpacing >= 0.0) || !std::isfinite(stack.sliceSpacing))
+    throw Error("contour stack: slice spacing must be zero (automatic) or positive, and finite");
+  if (stack.slices.size() == 1 && stack.sliceSpacing == 0.0)
+    throw Error("contour stack: a single slice needs its slice spacing (thickness) set");
 }
 
 std::vector<PreparedSlice> prepareSlices(const ContourStack& stack, double tolerance)
@@ -100,9 +102,9 @@ TriangleMesh reconstructSurface(const ContourStack& stack, const ReconstructionO
   // Slab k lies between slice k-1 and slice k; slabs 0 and n lie beyond the ends and only cap.
   auto zOf = [&](long k) {
     if (k < 0)
-      return slices[0].z - (n > 1 ? slices[1].z - slices[0].z : stack.sliceSpacing);
+      return slices[0].z - (stack.sliceSpacing > 0.0 ? stack.sliceSpacing : slices[1].z - slices[0].z);
     if (k >= static_cast<long>(n))
-      return slices[n - 1].z + (n > 1 ? slices[n - 1].z - slices[n - 2].z : stack.sliceSpacing);
+      return slices[n - 1].z + (stack.sliceSpacing > 0.0 ? stack.sliceSpacing : slices[n - 1].z - slices[n - 2].z);
     return slices[k].z;
   };
   auto sliceOf = [&](long k) -> const PreparedSlice* {
