@@ -168,10 +168,18 @@ struct SlabOverlay::Impl
   std::size_t liftFlatChords(MeshBuilder& mesh);
   void computeCapHeights();
   bool isCapFace(FaceHandle f) const { return isDifference(f) && components[f->info().component].isCap(); }
+  double capLevelZ(int component) const { return components[component].capLevel() == LowerLevel ? z0 : z1; }
+  double domeHeight(int component, const Point2& p) const;
   double steinerHeight(FaceHandle f, const Point2& p) const
   {
-    return isCapFace(f) ? capZ[f->info().component] : interpolatedHeight(p);
+    return isCapFace(f) ? domeHeight(f->info().component, p) : interpolatedHeight(p);
   }
+  /** Faces whose chords must not lie flat on a slice plane: mixed ones, and domed caps. */
+  bool needsLiftedChords(FaceHandle f) const
+  {
+    return inMixed(f) || (isCapFace(f) && capZ[f->info().component] != capLevelZ(f->info().component));
+  }
+  std::size_t addCapRows(MeshBuilder& mesh, double edgeLength);
   Point3 approximateLift(FaceHandle f, int i, const MeshBuilder& mesh) const;
   bool insertSteiner(const Point2& p, double z, MeshBuilder& mesh);
   std::size_t addRows(MeshBuilder& mesh, double edgeLength);
@@ -583,14 +591,18 @@ std::size_t SlabOverlay::Impl::liftFlatChords(MeshBuilder& mesh)
       const int i = e->second;
       if (f->is_constrained(i))
         continue;
-      if (!inMixed(f))
+      if (!needsLiftedChords(f))
         f = f->neighbor(i);
-      if (!inMixed(f))
+      if (cdt.is_infinite(f) || !needsLiftedChords(f))
         continue;
       // The edge's two ends, with their levels in face f (both faces of a chord agree on them).
       VertexHandle a = e->first->vertex(CDT::cw(i)), b = e->first->vertex(CDT::ccw(i));
       auto levelIn = [&](VertexHandle v) -> Level {
         const OverlayVertex& ov = vertices[v->info()];
+        if (ov.isSteiner())
+          return NoLevel;
+        if (isCapFace(f))
+          return components[f->info().component].capLevel();
         if (!ov.onBoth())
           return singleLevel(ov);
         return static_cast<Level>(f->info().cornerLevel[f->index(v)]);
@@ -608,16 +620,11 @@ std::size_t SlabOverlay::Impl::liftFlatChords(MeshBuilder& mesh)
       if (s > 0 && splits[s].x == splits[s - 1].x && splits[s].y == splits[s - 1].y)
         continue;
       const Point2& p = splits[s];
-      const std::size_t before = cdt.number_of_vertices();
-      VertexHandle v = cdt.insert(Kernel::Point_2(p.x, p.y));
-      if (cdt.number_of_vertices() == before)
-        continue;
-      OverlayVertex steiner;
-      steiner.p = p;
-      steiner.steinerId = mesh.addPoint(p.x, p.y, interpolatedHeight(p));
-      v->info() = static_cast<int>(vertices.size());
-      vertices.push_back(steiner);
-      ++inserted;
+      CDT::Locate_type type;
+      int index = 0;
+      FaceHandle f = cdt.locate(Kernel::Point_2(p.x, p.y), type, index);
+      if (type != CDT::VERTEX && !cdt.is_infinite(f) && isDifference(f))
+        inserted += insertSteiner(p, steinerHeight(f, p), mesh);
     }
     classify();
   }
@@ -666,12 +673,10 @@ void SlabOverlay::Impl::computeCapHeights()
   capZ.assign(components.size(), std::numeric_limits<double>::quiet_NaN());
   if (!liftOptions)
     return;
-  // Half a slice beyond the last contour by default; a contour that meets neither neighbour gets
-  // that thickness even when caps sit on their slice; caps of the two slices that would meet in
-  // the middle of the slab are kept apart.
+  // The height a cap's dome reaches: half a slice beyond the last contour by default; a contour that
+  // meets neither neighbour gets that thickness even when caps sit on their slice.
   const double dz = z1 - z0;
   const double baseOffset = liftOptions->capPlacement == CapPlacement::HalfSliceBeyond ? 0.5 * dz : 0.0;
-  std::vector<char> usedByLowerCap(vertices.size(), 0), usedByUpperCap(vertices.size(), 0);
   std::vector<char> needsThickness(components.size(), 0);
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
   {
@@ -680,7 +685,6 @@ void SlabOverlay::Impl::computeCapHeights()
     const Component& c = components[f->info().component];
     for (int i = 0; i < 3; ++i)
     {
-      (c.capLevel() == LowerLevel ? usedByLowerCap : usedByUpperCap)[f->vertex(i)->info()] = 1;
       if (!f->is_constrained(i))
         continue;
       const OverlayEdge* e = edgeBetween(f->vertex(CDT::cw(i)), f->vertex(CDT::ccw(i)));
@@ -691,16 +695,11 @@ void SlabOverlay::Impl::computeCapHeights()
         needsThickness[f->info().component] = 1;
     }
   }
-  bool capsMeet = false;
-  for (std::size_t i = 0; i < vertices.size(); ++i)
-    capsMeet = capsMeet || (usedByLowerCap[i] && usedByUpperCap[i]);
   for (std::size_t c = 0; c < components.size(); ++c)
   {
     if (!components[c].isCap())
       continue;
-    double offset = needsThickness[c] ? 0.5 * dz : baseOffset;
-    if (capsMeet && offset > 0.0)
-      offset = 0.45 * dz;
+    const double offset = needsThickness[c] ? 0.5 * dz : baseOffset;
     capZ[c] = components[c].capLevel() == LowerLevel ? z0 + offset : z1 - offset;
   }
 }
@@ -711,7 +710,7 @@ Point3 SlabOverlay::Impl::approximateLift(FaceHandle f, int i, const MeshBuilder
   if (v.isSteiner())
     return mesh.point(v.steinerId);
   if (isCapFace(f))
-    return { v.p.x, v.p.y, capZ[f->info().component] };
+    return { v.p.x, v.p.y, capLevelZ(f->info().component) };
   if (v.onBoth())
   {
     const signed char level = f->info().cornerLevel[i];
@@ -805,6 +804,88 @@ Point3 circumcenter(const Point3& a, const Point3& b, const Point3& c)
 }
 
 } // namespace
+
+double SlabOverlay::Impl::domeHeight(int component, const Point2& p) const
+{
+  // A cap is a dome over its contour: it leaves the contour's slice and, within a distance equal to
+  // its height, reaches the cap height (half a slice beyond by default) on a quarter-circle profile,
+  // the rounded end a smooth structure has and the voxels' extent in the middle.
+  const double base = capLevelZ(component);
+  const double rise = capZ[component] - base;
+  if (rise == 0.0)
+    return base;
+  const NearestSegment& rim = components[component].capLevel() == LowerLevel ? *lowerNearest : *upperNearest;
+  const double s = std::min(1.0, rim.distance(p) / std::abs(rise));
+  return base + rise * std::sqrt(1.0 - (1.0 - s) * (1.0 - s));
+}
+
+std::size_t SlabOverlay::Impl::addCapRows(MeshBuilder& mesh, double edgeLength)
+{
+  // Rows of Steiner points parallel to each domed cap's contour, an edge length apart in 3D, so the
+  // dome's rounded rim is tiled by well-shaped triangles; the flat top is filled by refinement.
+  SpacingGrid placed(edgeLength);
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if (isDifference(f))
+      for (int i = 0; i < 3; ++i)
+        placed.add(approximateLift(f, i, mesh));
+  std::vector<std::pair<Point2, double>> candidates;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+  {
+    if (vertices[v->info()].isSteiner())
+      continue;
+    // Inwards: towards the centroid of the vertex's cap faces.
+    Point2 towards{ 0.0, 0.0 };
+    int component = -1, count = 0;
+    auto face = cdt.incident_faces(v), done = face;
+    do
+    {
+      if (!cdt.is_infinite(face) && isCapFace(face) && needsLiftedChords(face))
+      {
+        component = face->info().component;
+        for (int i = 0; i < 3; ++i)
+        {
+          towards.x += face->vertex(i)->point().x() / 3.0;
+          towards.y += face->vertex(i)->point().y() / 3.0;
+        }
+        ++count;
+      }
+    } while (++face != done);
+    if (count == 0)
+      continue;
+    const Point2 origin{ v->point().x(), v->point().y() };
+    double dx = towards.x / count - origin.x, dy = towards.y / count - origin.y;
+    const double length = std::hypot(dx, dy);
+    if (length == 0.0)
+      continue;
+    dx /= length;
+    dy /= length;
+    const double rise = std::abs(capZ[component] - capLevelZ(component));
+    // Along the quarter circle of radius `rise`, rows an edge length apart in arc length.
+    const int rows = static_cast<int>(std::ceil(0.5 * M_PI * rise / edgeLength));
+    for (int r = 1; r <= rows; ++r)
+    {
+      const double angle = 0.5 * M_PI * r / rows;
+      const double inward = rise * (1.0 - std::cos(angle));
+      const Point2 p{ origin.x + dx * inward, origin.y + dy * inward };
+      CDT::Locate_type type;
+      int index = 0;
+      FaceHandle f = cdt.locate(Kernel::Point_2(p.x, p.y), type, index);
+      if (type == CDT::VERTEX || cdt.is_infinite(f) || !isCapFace(f) || f->info().component != component)
+        continue;
+      const double z = domeHeight(component, p);
+      if (placed.hasPointWithin({ p.x, p.y, z }, 0.6 * edgeLength))
+        continue;
+      placed.add({ p.x, p.y, z });
+      candidates.emplace_back(p, z);
+    }
+  }
+  std::size_t inserted = 0;
+  for (const auto& [p, z] : candidates)
+    inserted += insertSteiner(p, z, mesh);
+  if (inserted > 0)
+    classify();
+  return inserted;
+}
 
 std::size_t SlabOverlay::Impl::addRows(MeshBuilder& mesh, double edgeLength)
 {
@@ -939,7 +1020,7 @@ std::size_t SlabOverlay::Impl::flipTowardsSurfaceQuality(const MeshBuilder& mesh
     return { ov.p.x, ov.p.y, ov.lowerId >= 0 ? z0 : z1 };
   };
   auto flippable = [&](FaceHandle f, int i) {
-    if (f->is_constrained(i) || cdt.is_infinite(f) || cdt.is_infinite(f->neighbor(i)) || !inMixed(f))
+    if (f->is_constrained(i) || cdt.is_infinite(f) || cdt.is_infinite(f->neighbor(i)) || !isDifference(f))
       return false;
     FaceHandle g = f->neighbor(i);
     const VertexHandle a = f->vertex(i), b = g->vertex(cdt.mirror_index(f, i));
@@ -961,7 +1042,7 @@ std::size_t SlabOverlay::Impl::flipTowardsSurfaceQuality(const MeshBuilder& mesh
   };
   std::vector<std::pair<VertexHandle, VertexHandle>> queue;
   for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
-    if (!e->first->is_constrained(e->second) && inMixed(e->first))
+    if (!e->first->is_constrained(e->second) && isDifference(e->first))
       queue.emplace_back(e->first->vertex(CDT::cw(e->second)), e->first->vertex(CDT::ccw(e->second)));
   std::size_t flips = 0;
   const std::size_t limit = 20 * queue.size() + 100;
@@ -1001,6 +1082,7 @@ void SlabOverlay::lift(MeshBuilder& mesh, const SlabLiftOptions& options, Recons
   {
     const double edgeLength = options.maxEdgeLength > 0.0 ? options.maxEdgeLength : options.rowHeight;
     statistics.steinerPoints += d.addRows(mesh, edgeLength);
+    statistics.steinerPoints += d.addCapRows(mesh, edgeLength);
     statistics.steinerPoints += d.liftFlatChords(mesh);
     const std::size_t budget = 20 * d.vertices.size() + 100;
     if (options.surfaceMetricFlips)
@@ -1044,28 +1126,7 @@ void SlabOverlay::lift(MeshBuilder& mesh, const SlabLiftOptions& options, Recons
     switches.push_back({ s.vertex, s.fan[best], s.faces[best], s.startLevel, s.endLevel });
   }
 
-  auto capOffsetOf = [&](int component) {
-    const Component& c = d.components[component];
-    return std::abs(d.capZ[component] - (c.capLevel() == LowerLevel ? d.z0 : d.z1));
-  };
-
-  // Difference polygons: mixed ones lifted vertex by vertex, caps flat at their height.
   std::map<int, std::vector<std::int32_t>> chains;
-  std::map<std::pair<int, int>, std::int32_t> capCopies; // (component, overlay vertex) -> mesh id
-  auto capCopy = [&](int component, int vertex) -> std::int32_t {
-    const Component& c = d.components[component];
-    const OverlayVertex& v = d.vertices[vertex];
-    const std::int32_t levelId = c.capLevel() == LowerLevel ? v.lowerId : v.upperId;
-    if (capOffsetOf(component) == 0.0)
-      return levelId;
-    auto [it, inserted] = capCopies.try_emplace({ component, vertex }, -1);
-    if (inserted)
-    {
-      const Point3 p = mesh.point(levelId);
-      it->second = mesh.addPoint(p.x, p.y, d.capZ[component]);
-    }
-    return it->second;
-  };
   for (auto f = d.cdt.finite_faces_begin(); f != d.cdt.finite_faces_end(); ++f)
   {
     if (!d.isDifference(f))
@@ -1078,7 +1139,7 @@ void SlabOverlay::lift(MeshBuilder& mesh, const SlabLiftOptions& options, Recons
       if (v.isSteiner())
         ids[i] = v.steinerId;
       else if (c.isCap())
-        ids[i] = capCopy(f->info().component, f->vertex(i)->info());
+        ids[i] = c.capLevel() == LowerLevel ? v.lowerId : v.upperId;
       else if (!v.onBoth())
         ids[i] = v.lowerId >= 0 ? v.lowerId : v.upperId;
       else
@@ -1130,46 +1191,6 @@ void SlabOverlay::lift(MeshBuilder& mesh, const SlabLiftOptions& options, Recons
                                                         : static_cast<int>(key >> 32);
     d.addWallStrip(d.wallChain(from, chains, rows, mesh), d.wallChain(to, chains, rows, mesh), mesh,
                    statistics.wallTriangles);
-  }
-
-  // Cap rims: vertical walls from each cap's contour to the cap.
-  std::map<std::pair<int, int>, std::vector<std::int32_t>> rimChains;
-  auto rimChain = [&](int component, int vertex) {
-    auto it = rimChains.find({ component, vertex });
-    if (it != rimChains.end())
-      return it->second;
-    const Component& c = d.components[component];
-    const OverlayVertex& v = d.vertices[vertex];
-    const std::int32_t levelId = c.capLevel() == LowerLevel ? v.lowerId : v.upperId;
-    const std::int32_t capId = capCopy(component, vertex);
-    const double offset = capOffsetOf(component);
-    const int capRows = std::max(1, static_cast<int>(std::lround(offset / options.rowHeight)));
-    std::vector<std::int32_t> chain{ c.capLevel() == LowerLevel ? levelId : capId };
-    const Point3 bottom = mesh.point(chain.front());
-    const Point3 top = mesh.point(c.capLevel() == LowerLevel ? capId : levelId);
-    for (int r = 1; r < capRows; ++r)
-      chain.push_back(mesh.addPoint(bottom.x, bottom.y, bottom.z + (top.z - bottom.z) * r / capRows));
-    chain.push_back(c.capLevel() == LowerLevel ? capId : levelId);
-    rimChains[{ component, vertex }] = chain;
-    return chain;
-  };
-  for (auto f = d.cdt.finite_faces_begin(); f != d.cdt.finite_faces_end(); ++f)
-  {
-    if (!d.isDifference(f) || !d.components[f->info().component].isCap() ||
-        capOffsetOf(f->info().component) == 0.0)
-      continue;
-    const int component = f->info().component;
-    const Level level = d.components[component].capLevel();
-    for (int i = 0; i < 3; ++i)
-    {
-      if (!f->is_constrained(i))
-        continue;
-      const int a = f->vertex(CDT::cw(i))->info(), b = f->vertex(CDT::ccw(i))->info();
-      const OverlayEdge& e = *d.edgeBetween(f->vertex(CDT::cw(i)), f->vertex(CDT::ccw(i)));
-      const int from = level == LowerLevel ? e.lowerFrom : e.upperFrom;
-      const int to = from == a ? b : a;
-      d.addWallStrip(rimChain(component, from), rimChain(component, to), mesh, statistics.wallTriangles);
-    }
   }
 }
 
