@@ -8,6 +8,7 @@
 #include "ModuleDescription.h"
 #include "ModuleXml.h"
 #include "ReturnParameters.h"
+#include "SegmentationArguments.h"
 #include "SliceMeshPipeline.h"
 
 #include "itkObject.h"
@@ -65,6 +66,7 @@ PipelineSettings settingsFrom(const ParsedArguments& arguments)
               << std::endl;
   }
 
+  readSegmentationArguments(arguments, settings);
   settings.reconstruction.capPlacement =
     arguments.text("capPlacement") == "AtSlice" ? CapPlacement::AtSlice : CapPlacement::HalfSliceBeyond;
   settings.reconstruction.wallRowHeight = arguments.number("wallRowHeight");

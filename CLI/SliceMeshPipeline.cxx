@@ -1,11 +1,14 @@
 #include "SliceMeshPipeline.h"
 
 #include "ContourExtraction.h"
+#include "MultiLabelPipeline.h"
+#include "NiftiOrientation.h"
 #include "VolumeReader.h"
 
 #include <chrono>
 #include <filesystem>
 #include <functional>
+#include <iostream>
 
 namespace slicemesh::cli
 {
@@ -66,6 +69,8 @@ std::vector<ProgressStage> pipelineStages()
 
 PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& progress)
 {
+  if (settings.multiLabel.enabled)
+    return runMultiLabelPipeline(settings, progress);
   const auto began = std::chrono::steady_clock::now();
 
   // Fail before the expensive work when the output could never be written.
@@ -79,6 +84,8 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
 
   progress.start(Reading);
   const ScalarVolume::Pointer volume = guarded(UnreadableInput, [&] { return readVolume(settings.inputVolume); });
+  if (const auto warning = niftiOrientationWarning(settings.inputVolume))
+    std::cerr << "SliceMesh: warning: " << *warning << std::endl;
 
   progress.start(Segmentation);
   const MaskVolume::Pointer mask =

@@ -4,6 +4,7 @@
 #define SliceMeshPipeline_h
 
 #include "ExitCodes.h"
+#include "MultiLabelSettings.h"
 #include "MeshValidation.h"
 #include "MeshWriter.h"
 #include "ProgressReporter.h"
@@ -23,6 +24,8 @@ struct PipelineSettings
   SegmentationOptions segmentation;
   ReconstructionOptions reconstruction;
   CoordinateSystem coordinateSystem = CoordinateSystem::LPS;
+  /** One mesh per label of a label map (runMultiLabelPipeline, MultiLabelPipeline.h). */
+  MultiLabelSettings multiLabel;
 };
 
 struct PipelineResult

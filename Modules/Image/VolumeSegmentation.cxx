@@ -160,7 +160,28 @@ MaskVolume::Pointer segmentVolume(const ScalarVolume* volume, const Segmentation
     }
     else if (fillMask(volume, mask, [](float v) { return v != 0.0f && !std::isnan(v); }) == 0)
       throw Error(volumeName(volume) + ": every voxel is 0; nothing to mesh");
+    refineMask(mask, options.refinement);
     return mask;
+  }
+
+  if (options.grayscale.beyondPlainThreshold())
+  {
+    GrayscaleSegmentationOptions grayscale = options.grayscale;
+    if (options.threshold && grayscale.method == ThresholdMethod::Otsu)
+    {
+      grayscale.method = ThresholdMethod::Manual;
+      grayscale.threshold = *options.threshold;
+    }
+    try
+    {
+      GrayscaleMask segmented = segmentGrayscale(volume, grayscale);
+      refineMask(segmented.mask, options.refinement, segmented.edgeVoxels);
+      return segmented.mask;
+    }
+    catch (const Error& e)
+    {
+      throw Error(volumeName(volume) + ": " + e.what());
+    }
   }
 
   double threshold = 0.0;
@@ -185,6 +206,7 @@ MaskVolume::Pointer segmentVolume(const ScalarVolume* volume, const Segmentation
     message << volumeName(volume) << ": no voxel is at or above the threshold " << threshold;
     throw Error(message.str());
   }
+  refineMask(mask, options.refinement);
   return mask;
 }
 

@@ -2,6 +2,8 @@
 #ifndef VolumeSegmentation_h
 #define VolumeSegmentation_h
 
+#include "GrayscaleSegmentation.h"
+#include "MaskRefinement.h"
 #include "VolumeReader.h"
 
 #include <optional>
@@ -23,6 +25,12 @@ struct SegmentationOptions
   std::optional<int> label;
   /** Grayscale: voxels >= threshold are inside; empty means Otsu's threshold. */
   std::optional<double> threshold;
+  /** Grayscale: denoising, intensity window, several Otsu thresholds, Canny edge mode. Used when
+   *  it asks for more than the plain threshold above (then its own method decides; `threshold`
+   *  still sets the Manual one). */
+  GrayscaleSegmentationOptions grayscale;
+  /** Either kind, after the mask is made: small-region removal, seeds, hole filling. */
+  MaskRefinementOptions refinement;
 };
 
 /** Throws slicemesh::Error when the mask would be empty (naming the labels that do occur). */

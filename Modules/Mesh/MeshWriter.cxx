@@ -5,7 +5,11 @@
 #include <vtkCallbackCommand.h>
 #include <vtkExecutive.h>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkFieldData.h>
+#include <vtkFloatArray.h>
+#include <vtkIntArray.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkNew.h>
 #include <vtkPLYWriter.h>
 #include <vtkPoints.h>
@@ -85,6 +89,52 @@ vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh, CoordinateSyst
   return polyData;
 }
 
+/** Adds the label and colour arrays (cell data) and the structure list (field data). */
+void addAttributes(vtkPolyData* polyData, const MeshAttributes& attributes)
+{
+  const vtkIdType cells = polyData->GetNumberOfCells();
+  if (!attributes.cellLabels.empty())
+  {
+    vtkNew<vtkIntArray> labels;
+    labels->SetName("Label");
+    labels->SetNumberOfValues(cells);
+    for (vtkIdType c = 0; c < cells; ++c)
+      labels->SetValue(c, attributes.cellLabels[static_cast<std::size_t>(c)]);
+    polyData->GetCellData()->AddArray(labels);
+  }
+  if (!attributes.cellColors.empty())
+  {
+    vtkNew<vtkUnsignedCharArray> colors;
+    colors->SetName("Color");
+    colors->SetNumberOfComponents(3);
+    colors->SetNumberOfTuples(cells);
+    for (vtkIdType c = 0; c < cells; ++c)
+      for (int k = 0; k < 3; ++k)
+        colors->SetTypedComponent(c, k, attributes.cellColors[static_cast<std::size_t>(c)][k]);
+    polyData->GetCellData()->SetScalars(colors);
+  }
+  if (!attributes.structures.empty())
+  {
+    vtkNew<vtkIntArray> values;
+    values->SetName("LabelValue");
+    vtkNew<vtkStringArray> names;
+    names->SetName("LabelName");
+    vtkNew<vtkFloatArray> rgba;
+    rgba->SetName("LabelColor");
+    rgba->SetNumberOfComponents(4);
+    for (const MeshAttributes::Structure& s : attributes.structures)
+    {
+      values->InsertNextValue(s.value);
+      names->InsertNextValue(s.name);
+      const float color[4] = { s.rgba[0] / 255.0f, s.rgba[1] / 255.0f, s.rgba[2] / 255.0f, s.rgba[3] / 255.0f };
+      rgba->InsertNextTypedTuple(color);
+    }
+    polyData->GetFieldData()->AddArray(values);
+    polyData->GetFieldData()->AddArray(names);
+    polyData->GetFieldData()->AddArray(rgba);
+  }
+}
+
 /** Collects VTK's error messages instead of letting them go to the console, so the caller can
  *  report one line. */
 class VTKErrorCollector
@@ -162,13 +212,15 @@ std::string writeOBJ(const TriangleMesh& mesh, CoordinateSystem system, const st
 
 /** Writes to path in the format its extension names; returns an empty string on success. */
 std::string writeByExtension(const TriangleMesh& mesh, CoordinateSystem system, const std::string& extension,
-                             const std::string& path)
+                             const std::string& path, const MeshAttributes* attributes = nullptr)
 {
   if (extension == ".obj")
   {
     return writeOBJ(mesh, system, path);
   }
   const vtkSmartPointer<vtkPolyData> polyData = toPolyData(mesh, system);
+  if (attributes)
+    addAttributes(polyData, *attributes);
   const std::string header = "SliceMesh output. " + spaceTag(system);
   if (extension == ".vtp")
   {
@@ -206,6 +258,11 @@ std::string writeByExtension(const TriangleMesh& mesh, CoordinateSystem system, 
     writer->SetFileName(path.c_str());
     writer->SetFileTypeToBinary();
     writer->AddComment(spaceTag(system));
+    if (attributes && !attributes->cellColors.empty())
+    {
+      writer->SetArrayName("Color");
+      writer->SetColorModeToDefault();
+    }
     return runVTKWriter(writer.GetPointer());
   }
   return "unsupported extension";
@@ -243,6 +300,18 @@ TriangleMesh mapToPhysicalSpace(const TriangleMesh& stackMesh, const SliceFrame&
 
 void writeMesh(const TriangleMesh& physicalMesh, CoordinateSystem system, const std::string& path)
 {
+  writeMesh(physicalMesh, system, path, MeshAttributes());
+}
+
+void writeMesh(const TriangleMesh& physicalMesh, CoordinateSystem system, const std::string& path,
+               const MeshAttributes& attributes)
+{
+  const std::size_t triangles = physicalMesh.triangles.size();
+  if ((!attributes.cellLabels.empty() && attributes.cellLabels.size() != triangles) ||
+      (!attributes.cellColors.empty() && attributes.cellColors.size() != triangles))
+    throw Error("cannot write mesh '" + path + "': the per-triangle labels or colours do not match the triangles");
+  const bool hasAttributes =
+    !attributes.cellLabels.empty() || !attributes.cellColors.empty() || !attributes.structures.empty();
   namespace fs = std::filesystem;
   const fs::path target(path);
   const std::string extension = lowercaseExtension(target);
@@ -265,7 +334,8 @@ void writeMesh(const TriangleMesh& physicalMesh, CoordinateSystem system, const 
   // Same folder, so the rename is atomic; hidden and unique per process, same extension for the writers.
   const fs::path temporary =
     folder / ("." + target.stem().string() + ".partial-" + std::to_string(::getpid()) + extension);
-  const std::string failure = writeByExtension(physicalMesh, system, extension, temporary.string());
+  const std::string failure =
+    writeByExtension(physicalMesh, system, extension, temporary.string(), hasAttributes ? &attributes : nullptr);
   if (!failure.empty())
   {
     fs::remove(temporary, ec);

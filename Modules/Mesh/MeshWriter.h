@@ -4,7 +4,9 @@
 
 #include "SliceMeshTypes.h"
 
+#include <array>
 #include <string>
+#include <vector>
 
 namespace slicemesh
 {
@@ -23,6 +25,30 @@ TriangleMesh mapToPhysicalSpace(const TriangleMesh& stackMesh, const SliceFrame&
  *  (SPACE field data / header) as 3D Slicer reads it. Writes to a temporary name in the target
  *  folder and renames on success; on failure the existing file is untouched. Throws slicemesh::Error. */
 void writeMesh(const TriangleMesh& physicalMesh, CoordinateSystem system, const std::string& path);
+
+/** What a mesh of labelled structures carries besides its geometry. */
+struct MeshAttributes
+{
+  /** Per triangle (empty, or one per triangle): the label value, written as the integer cell
+   *  array "Label" (.vtp, .vtk, .ply). */
+  std::vector<int> cellLabels;
+  /** Per triangle (empty, or one per triangle): RGB, written as the unsigned char cell array
+   *  "Color" (.vtp, .vtk) and as the face colours of .ply (red, green, blue). */
+  std::vector<std::array<unsigned char, 3>> cellColors;
+  /** The structures in the mesh: written as field data "LabelValue" (int), "LabelName" (string)
+   *  and "LabelColor" (RGBA, 0..1 floats) in .vtp and .vtk. */
+  struct Structure
+  {
+    int value = 0;
+    std::string name;
+    std::array<unsigned char, 4> rgba{ 128, 128, 128, 255 };
+  };
+  std::vector<Structure> structures;
+};
+
+/** writeMesh with attributes; .stl and .obj have no place for them and get the geometry only. */
+void writeMesh(const TriangleMesh& physicalMesh, CoordinateSystem system, const std::string& path,
+               const MeshAttributes& attributes);
 
 } // namespace slicemesh
 

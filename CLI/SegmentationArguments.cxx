@@ -1,0 +1,97 @@
+#include "SegmentationArguments.h"
+
+#include <cstdlib>
+#include <sstream>
+
+namespace slicemesh::cli
+{
+namespace
+{
+
+std::vector<std::string> split(const std::string& text, char separator)
+{
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(text);
+  while (std::getline(in, part, separator))
+    if (!part.empty())
+      parts.push_back(part);
+  return parts;
+}
+
+double toNumber(const std::string& text, const std::string& who)
+{
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0')
+    throw ArgumentError(who + ": '" + text + "' is not a number");
+  return value;
+}
+
+void readArguments(const ParsedArguments& arguments, PipelineSettings& settings)
+{
+  const ProcessingDimension dimension =
+    arguments.text("processing") == "Volume" ? ProcessingDimension::Volume3D : ProcessingDimension::Slice2D;
+
+  GrayscaleSegmentationOptions& grayscale = settings.segmentation.grayscale;
+  grayscale.dimension = dimension;
+  grayscale.denoising.gaussianSigma = arguments.number("gaussianSigma");
+  grayscale.denoising.diffusionIterations = static_cast<unsigned int>(arguments.integer("diffusionIterations"));
+  grayscale.denoising.diffusionConductance = arguments.number("diffusionConductance");
+  const std::string& method = arguments.text("thresholdMethod");
+  grayscale.method = method == "Window" ? ThresholdMethod::Window
+                     : method == "Manual" ? ThresholdMethod::Manual
+                                          : ThresholdMethod::Otsu;
+  grayscale.threshold = arguments.number("threshold");
+  grayscale.lower = arguments.number("lowerThreshold");
+  grayscale.upper = arguments.number("upperThreshold");
+  if (grayscale.method == ThresholdMethod::Window && grayscale.lower > grayscale.upper)
+    throw ArgumentError("--lowerThreshold is above --upperThreshold");
+  grayscale.otsuThresholds = static_cast<unsigned int>(arguments.integer("otsuThresholds"));
+  grayscale.otsuClass = static_cast<unsigned int>(arguments.integer("otsuClass"));
+  if (grayscale.otsuClass > grayscale.otsuThresholds + 1)
+    throw ArgumentError("--otsuClass " + std::to_string(grayscale.otsuClass) + " does not exist with " +
+                        std::to_string(grayscale.otsuThresholds) + " Otsu threshold(s)");
+  grayscale.regions = arguments.text("regionMode") == "Edges" ? RegionMode::Edges : RegionMode::Intensity;
+  grayscale.canny.variance = arguments.number("cannyVariance");
+  grayscale.canny.lowerThreshold = arguments.number("cannyLowerThreshold");
+  grayscale.canny.upperThreshold = arguments.number("cannyUpperThreshold");
+  if (grayscale.regions == RegionMode::Edges && grayscale.canny.lowerThreshold > grayscale.canny.upperThreshold)
+    throw ArgumentError("--cannyLowerThreshold is above --cannyUpperThreshold");
+
+  MaskRefinementOptions& refinement = settings.segmentation.refinement;
+  refinement.dimension = dimension;
+  refinement.fillHoles = arguments.flag("fillHoles");
+  refinement.minimumArea = arguments.number("minimumArea");
+  for (const std::string& point : split(arguments.text("seed"), ';'))
+  {
+    const std::vector<std::string> coordinates = split(point, ',');
+    if (coordinates.size() != 3)
+      throw ArgumentError("--seed: '" + point + "' needs 3 comma-separated numbers (LPS mm)");
+    refinement.seeds.push_back(
+      { toNumber(coordinates[0], "--seed"), toNumber(coordinates[1], "--seed"), toNumber(coordinates[2], "--seed") });
+  }
+
+  MultiLabelSettings& multi = settings.multiLabel;
+  for (const std::string& label : split(arguments.text("labels"), ','))
+    multi.labels.push_back(static_cast<int>(toNumber(label, "--labels")));
+  multi.outputDirectory = arguments.text("outputDirectory");
+  multi.colorTable = arguments.text("colorTable");
+  multi.enabled = arguments.flag("splitLabels") || !multi.labels.empty() || !multi.outputDirectory.empty();
+}
+
+} // namespace
+
+void readSegmentationArguments(const ParsedArguments& arguments, PipelineSettings& settings)
+{
+  try
+  {
+    readArguments(arguments, settings);
+  }
+  catch (const ArgumentError& e)
+  {
+    throw PipelineFailure(BadArguments, e.what());
+  }
+}
+
+} // namespace slicemesh::cli

@@ -1,0 +1,115 @@
+// Colour table parsing (Slicer, FreeSurfer, plain name lists) and generated colours.
+#include "ColorTable.h"
+
+#include "SliceMeshTypes.h"
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace slicemesh
+{
+
+ColorTable ColorTable::read(const std::string& path)
+{
+  std::ifstream in(path);
+  if (!in)
+    throw Error(path + ": cannot open the colour table");
+  ColorTable table;
+  std::string line;
+  std::size_t lineNumber = 0;
+  bool everyAlphaZero = true;
+  bool anyAlpha = false;
+  while (std::getline(in, line))
+  {
+    ++lineNumber;
+    if (const std::size_t hash = line.find('#'); hash != std::string::npos)
+      line.erase(hash);
+    std::istringstream fields(line);
+    std::vector<std::string> words;
+    for (std::string word; fields >> word;)
+      words.push_back(word);
+    if (words.empty())
+      continue;
+    LabelColor entry;
+    char* end = nullptr;
+    const long value = std::strtol(words[0].c_str(), &end, 10);
+    if (*end != '\0' || words.size() < 2)
+      throw Error(path + ":" + std::to_string(lineNumber) + ": expected 'value name [r g b [a]]'");
+    entry.label = static_cast<int>(value);
+    entry.name = words[1];
+    entry.rgba = generatedColor(entry.label);
+    // "value name r g b [a]"; a single number after the name (MRIcron's group code) is no colour.
+    if (words.size() >= 5)
+    {
+      for (int c = 0; c < 4 && c + 2 < static_cast<int>(words.size()); ++c)
+      {
+        const long component = std::strtol(words[c + 2].c_str(), &end, 10);
+        if (*end != '\0' || component < 0 || component > 255)
+          throw Error(path + ":" + std::to_string(lineNumber) + ": colour components must be integers 0..255");
+        entry.rgba[c] = static_cast<unsigned char>(component);
+      }
+      if (words.size() >= 6)
+      {
+        anyAlpha = true;
+        everyAlphaZero &= entry.rgba[3] == 0 || entry.label == 0;
+      }
+      else
+        entry.rgba[3] = 255;
+    }
+    table.Entries[entry.label] = entry;
+  }
+  if (anyAlpha && everyAlphaZero)
+    for (auto& entry : table.Entries)
+      entry.second.rgba[3] = 255;
+  if (table.Entries.empty())
+    throw Error(path + ": the colour table lists no label");
+  return table;
+}
+
+LabelColor ColorTable::entry(int label) const
+{
+  const auto found = this->Entries.find(label);
+  if (found != this->Entries.end())
+    return found->second;
+  LabelColor entry;
+  entry.label = label;
+  entry.name = "Label_" + std::to_string(label);
+  entry.rgba = generatedColor(label);
+  return entry;
+}
+
+std::array<unsigned char, 4> ColorTable::generatedColor(int label)
+{
+  // Hue steps of the golden ratio conjugate spread consecutive labels around the colour wheel.
+  const double hue = std::fmod(0.1 + 0.618033988749895 * label, 1.0) * 6.0;
+  const double saturation = 0.55, value = 0.9;
+  const int sector = static_cast<int>(hue) % 6;
+  const double f = hue - std::floor(hue);
+  const double p = value * (1 - saturation), q = value * (1 - saturation * f), t = value * (1 - saturation * (1 - f));
+  double r = 0, g = 0, b = 0;
+  switch (sector)
+  {
+    case 0: r = value, g = t, b = p; break;
+    case 1: r = q, g = value, b = p; break;
+    case 2: r = p, g = value, b = t; break;
+    case 3: r = p, g = q, b = value; break;
+    case 4: r = t, g = p, b = value; break;
+    default: r = value, g = p, b = q; break;
+  }
+  return { static_cast<unsigned char>(std::lround(r * 255)), static_cast<unsigned char>(std::lround(g * 255)),
+           static_cast<unsigned char>(std::lround(b * 255)), 255 };
+}
+
+std::string safeFileName(const std::string& name)
+{
+  std::string safe;
+  for (unsigned char c : name)
+    safe += (std::isalnum(c) || c == '-' || c == '_' || c == '.') ? static_cast<char>(c) : '_';
+  return safe.empty() ? std::string("unnamed") : safe;
+}
+
+} // namespace slicemesh

@@ -1,0 +1,50 @@
+// Label names and colours from a colour table file: 3D Slicer's .ctbl/.txt, FreeSurfer's LUT, or
+// a plain "value name" list (MRIcron's atlas .txt such as aal.nii.txt).
+#ifndef ColorTable_h
+#define ColorTable_h
+
+#include <array>
+#include <map>
+#include <string>
+
+namespace slicemesh
+{
+
+struct LabelColor
+{
+  int label = 0;
+  std::string name;
+  std::array<unsigned char, 4> rgba{ 128, 128, 128, 255 };
+};
+
+/** label -> name and colour. */
+class ColorTable
+{
+public:
+  /** Reads the file. Each non-comment line is `value name [r g b [a]]` (whitespace separated;
+   *  `#` starts a comment). Slicer's .ctbl/.txt give alpha as opacity (255 opaque); FreeSurfer's
+   *  FreeSurferColorLUT.txt gives 0 for every entry (its fourth number is a transparency): when
+   *  every entry's alpha is 0 the table is read as FreeSurfer's and all colours are opaque. Lines
+   *  without a colour get the generated colour of their label. Throws slicemesh::Error naming the
+   *  file and line on a malformed line. */
+  static ColorTable read(const std::string& path);
+
+  /** The entry of a label; a label the table does not list gets the name "Label_<value>" and its
+   *  generated colour. */
+  LabelColor entry(int label) const;
+  bool contains(int label) const { return this->Entries.count(label) != 0; }
+  std::size_t size() const { return this->Entries.size(); }
+
+  /** A deterministic, well-spread colour for a label (golden-ratio hue steps). */
+  static std::array<unsigned char, 4> generatedColor(int label);
+
+private:
+  std::map<int, LabelColor> Entries;
+};
+
+/** A file-name-safe form of a label name: letters, digits, '-', '_' and '.'; others become '_'. */
+std::string safeFileName(const std::string& name);
+
+} // namespace slicemesh
+
+#endif

@@ -1,0 +1,104 @@
+// Denoise -> intensity criterion -> (edge mode) cut along Canny edges.
+#include "GrayscaleSegmentation.h"
+
+#include "OtsuThresholds.h"
+#include "SliceMeshTypes.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace slicemesh
+{
+
+GrayscaleMask segmentGrayscale(const ScalarVolume* volume, const GrayscaleSegmentationOptions& options)
+{
+  double lower = -std::numeric_limits<double>::infinity();
+  double upper = std::numeric_limits<double>::infinity();
+  bool upperInclusive = true;
+  switch (options.method)
+  {
+    case ThresholdMethod::Manual:
+      lower = options.threshold;
+      break;
+    case ThresholdMethod::Window:
+      if (!(options.lower <= options.upper))
+      {
+        std::ostringstream message;
+        message << "intensity window: the lower bound " << options.lower << " is above the upper bound "
+                << options.upper;
+        throw Error(message.str());
+      }
+      lower = options.lower;
+      upper = options.upper;
+      break;
+    case ThresholdMethod::Otsu:
+    {
+      const unsigned int classes = options.otsuThresholds + 1;
+      const unsigned int wanted = options.otsuClass == 0 ? classes : options.otsuClass;
+      if (wanted > classes)
+      {
+        std::ostringstream message;
+        message << "Otsu class " << options.otsuClass << " does not exist: " << options.otsuThresholds
+                << " threshold(s) make " << classes << " classes (1 = darkest)";
+        throw Error(message.str());
+      }
+      const std::vector<double> thresholds = otsuThresholds(volume, options.otsuThresholds);
+      // Class c holds t[c-2] <= v < t[c-1] (t[-1] = -inf, t[n] = +inf).
+      if (wanted >= 2)
+        lower = thresholds[wanted - 2];
+      if (wanted <= options.otsuThresholds)
+      {
+        upper = thresholds[wanted - 1];
+        upperInclusive = false;
+      }
+      break;
+    }
+  }
+
+  DenoisingOptions denoising = options.denoising;
+  denoising.dimension = options.dimension;
+  const ScalarVolume::Pointer smooth = denoiseVolume(volume, denoising);
+
+  GrayscaleMask result;
+  result.mask = MaskVolume::New();
+  result.mask->CopyInformation(volume);
+  result.mask->SetRegions(volume->GetBufferedRegion());
+  result.mask->Allocate();
+  const float* in = smooth->GetBufferPointer();
+  unsigned char* out = result.mask->GetBufferPointer();
+  const std::size_t count = volume->GetBufferedRegion().GetNumberOfPixels();
+  std::size_t inside = 0;
+  for (std::size_t n = 0; n < count; ++n)
+  {
+    const double v = in[n];
+    const bool in = v >= lower && (upperInclusive ? v <= upper : v < upper);
+    out[n] = in ? 1 : 0;
+    inside += in;
+  }
+  if (inside == 0)
+  {
+    std::ostringstream message;
+    message << "no voxel lies in the intensity range [" << lower << ", " << upper << (upperInclusive ? "]" : ")");
+    throw Error(message.str());
+  }
+
+  if (options.regions == RegionMode::Edges)
+  {
+    const MaskVolume::Pointer edges = cannyEdges(smooth, options.canny, options.dimension);
+    result.edgeVoxels = MaskVolume::New();
+    result.edgeVoxels->CopyInformation(volume);
+    result.edgeVoxels->SetRegions(volume->GetBufferedRegion());
+    result.edgeVoxels->Allocate();
+    const unsigned char* edge = edges->GetBufferPointer();
+    unsigned char* cut = result.edgeVoxels->GetBufferPointer();
+    for (std::size_t n = 0; n < count; ++n)
+    {
+      cut[n] = out[n] && edge[n] ? 1 : 0;
+      if (cut[n])
+        out[n] = 0;
+    }
+  }
+  return result;
+}
+
+} // namespace slicemesh

@@ -1,0 +1,97 @@
+// Label bounding boxes in one raster pass; per-label cropping.
+#include "LabelIndex.h"
+
+#include "SliceMeshTypes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace slicemesh
+{
+
+std::vector<LabelExtent> indexLabels(const ScalarVolume* labelMap)
+{
+  const auto region = labelMap->GetBufferedRegion();
+  const auto size = region.GetSize();
+  const auto start = region.GetIndex();
+  const float* voxel = labelMap->GetBufferPointer();
+  std::map<int, LabelExtent> extents;
+  // Most label maps have a few hundred labels at most: a table for the small ones, a map beyond.
+  std::vector<LabelExtent> table(4096);
+  for (long k = 0; k < static_cast<long>(size[2]); ++k)
+    for (long j = 0; j < static_cast<long>(size[1]); ++j)
+      for (long i = 0; i < static_cast<long>(size[0]); ++i, ++voxel)
+      {
+        const float value = *voxel;
+        if (value == 0.0f)
+          continue;
+        if (!(value > 0.0f) || value >= 2147483648.0f || std::floor(value) != value)
+        {
+          std::ostringstream message;
+          message << "voxel (" << i + start[0] << ", " << j + start[1] << ", " << k + start[2] << ") holds " << value
+                  << ": not a label map (labels are non-negative integers)";
+          throw Error(message.str());
+        }
+        const int label = static_cast<int>(value);
+        LabelExtent& e = label < static_cast<int>(table.size()) ? table[label] : extents[label];
+        const std::array<long, 3> index{ i + start[0], j + start[1], k + start[2] };
+        if (e.voxels++ == 0)
+        {
+          e.label = label;
+          e.lower = e.upper = index;
+          continue;
+        }
+        for (int a = 0; a < 3; ++a)
+        {
+          e.lower[a] = std::min(e.lower[a], index[a]);
+          e.upper[a] = std::max(e.upper[a], index[a]);
+        }
+      }
+  std::vector<LabelExtent> labels;
+  for (const LabelExtent& e : table)
+    if (e.voxels)
+      labels.push_back(e);
+  for (const auto& entry : extents)
+    labels.push_back(entry.second);
+  return labels;
+}
+
+MaskVolume::Pointer cropLabelMask(const ScalarVolume* labelMap, const LabelExtent& extent)
+{
+  const auto region = labelMap->GetBufferedRegion();
+  MaskVolume::IndexType index;
+  MaskVolume::SizeType size;
+  for (int a = 0; a < 3; ++a)
+  {
+    index[a] = extent.lower[a];
+    size[a] = static_cast<std::size_t>(extent.upper[a] - extent.lower[a] + 1);
+  }
+  const MaskVolume::RegionType box(index, size);
+  if (!region.IsInside(box))
+    throw Error("cropLabelMask: the label's box lies outside the label map");
+
+  auto mask = MaskVolume::New();
+  mask->SetOrigin(labelMap->GetOrigin());
+  mask->SetSpacing(labelMap->GetSpacing());
+  mask->SetDirection(labelMap->GetDirection());
+  mask->SetRegions(box);
+  mask->Allocate();
+  const float wanted = static_cast<float>(extent.label);
+  const auto full = region.GetSize();
+  unsigned char* out = mask->GetBufferPointer();
+  for (std::size_t k = 0; k < size[2]; ++k)
+    for (std::size_t j = 0; j < size[1]; ++j)
+    {
+      const std::size_t row = ((k + index[2] - region.GetIndex()[2]) * full[1] + (j + index[1] - region.GetIndex()[1])) *
+                                full[0] +
+                              (index[0] - region.GetIndex()[0]);
+      const float* in = labelMap->GetBufferPointer() + row;
+      for (std::size_t i = 0; i < size[0]; ++i)
+        *out++ = in[i] == wanted ? 1 : 0;
+    }
+  return mask;
+}
+
+} // namespace slicemesh

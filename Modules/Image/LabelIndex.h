@@ -1,0 +1,33 @@
+// One pass over a label map: every label's voxel count and bounding box, then a mask per label
+// cropped to its box, so N labels cost one scan plus the boxes, not N scans of the volume.
+#ifndef LabelIndex_h
+#define LabelIndex_h
+
+#include "VolumeReader.h"
+
+#include <array>
+#include <vector>
+
+namespace slicemesh
+{
+
+struct LabelExtent
+{
+  int label = 0;
+  std::size_t voxels = 0;
+  std::array<long, 3> lower{ 0, 0, 0 }; ///< smallest index of the label's voxels (inclusive)
+  std::array<long, 3> upper{ 0, 0, 0 }; ///< largest index (inclusive)
+};
+
+/** The non-zero labels of the volume in increasing order, each with its voxel count and index
+ *  box. Throws slicemesh::Error when a voxel is not an integer in [0, 2^31) (not a label map). */
+std::vector<LabelExtent> indexLabels(const ScalarVolume* labelMap);
+
+/** The mask (1 where the voxel equals extent.label) of the label's box: an image whose region
+ *  starts at the box's index, with the label map's spacing, origin and direction, so physical
+ *  points and Logic's stack frame (sliceFrameOf) place it where it is in the full volume. */
+MaskVolume::Pointer cropLabelMask(const ScalarVolume* labelMap, const LabelExtent& extent);
+
+} // namespace slicemesh
+
+#endif

@@ -1,0 +1,34 @@
+// The two orientations a NIfTI-1 header can carry (qform and sform), and whether they disagree.
+#ifndef NiftiOrientation_h
+#define NiftiOrientation_h
+
+#include <array>
+#include <optional>
+#include <string>
+
+namespace slicemesh
+{
+
+using Affine3x4 = std::array<std::array<double, 4>, 3>;
+
+struct NiftiOrientation
+{
+  int qformCode = 0;
+  int sformCode = 0;
+  Affine3x4 qform{}; ///< voxel index -> RAS mm, NIfTI "method 2" (quaternion, pixdim, qoffset)
+  Affine3x4 sform{}; ///< voxel index -> RAS mm, NIfTI "method 3" (srow_x/y/z)
+};
+
+/** Reads the orientation fields of a NIfTI-1 header (.nii, .nii.gz, .hdr); nothing for other files
+ *  or a header that cannot be read. */
+std::optional<NiftiOrientation> readNiftiOrientation(const std::string& path);
+
+/** When both forms are set (code > 0) and map some corner voxel of the volume more than
+ *  `toleranceMm` apart, a one-line warning that says so and which one is used. SliceMesh follows
+ *  ITK's NIfTI reader, which is what 3D Slicer uses: the sform when its code is set and its 3x3
+ *  part is a rotation times the voxel size, else the qform. Nothing when they agree. */
+std::optional<std::string> niftiOrientationWarning(const std::string& path, double toleranceMm = 0.1);
+
+} // namespace slicemesh
+
+#endif

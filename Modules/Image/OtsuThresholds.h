@@ -1,0 +1,21 @@
+// Otsu's thresholds (one or several) of a grayscale volume.
+#ifndef OtsuThresholds_h
+#define OtsuThresholds_h
+
+#include "VolumeReader.h"
+
+#include <vector>
+
+namespace slicemesh
+{
+
+/** The `count` thresholds that split the volume's 256-bin histogram into count + 1 classes with
+ *  the largest between-class variance (ITK's OtsuMultipleThresholdsCalculator), in increasing
+ *  order. Computed on the whole volume, also when the rest of the segmentation works per slice:
+ *  a slice's own histogram (often background only) gives meaningless thresholds.
+ *  Throws slicemesh::Error on a uniform volume or count 0. */
+std::vector<double> otsuThresholds(const ScalarVolume* volume, unsigned int count);
+
+} // namespace slicemesh
+
+#endif
