@@ -1,6 +1,8 @@
 // Per-slice contours of a binary mask by marching squares (ITK's ContourExtractor2DImageFilter).
 #include "ContourExtraction.h"
 
+#include "SliceSmoothing.h"
+
 #include "itkContourExtractor2DImageFilter.h"
 
 #include <algorithm>
@@ -52,9 +54,12 @@ ForegroundBox foregroundBoxOf(const unsigned char* slice, long width, long heigh
 class SliceContourExtractor
 {
 public:
-  SliceContourExtractor(double spacingX, double spacingY)
+  SliceContourExtractor(double spacingX, double spacingY, double sigma = 0.0)
     : m_SpacingX(spacingX)
     , m_SpacingY(spacingY)
+    , m_Sigma(sigma)
+    , m_PadX(1 + gaussianRadius(sigma, spacingX))
+    , m_PadY(1 + gaussianRadius(sigma, spacingY))
     , m_Image(SliceImage::New())
   {}
 
@@ -64,9 +69,10 @@ public:
     if (box.empty())
       return {};
 
-    SliceImage::IndexType start = { { box.iMin - 1, box.jMin - 1 } };
-    SliceImage::SizeType size = { { static_cast<itk::SizeValueType>(box.iMax - box.iMin + 3),
-                                     static_cast<itk::SizeValueType>(box.jMax - box.jMin + 3) } };
+    // The padding ring is wider than one voxel when smoothing spreads the mask beyond its box.
+    SliceImage::IndexType start = { { box.iMin - m_PadX, box.jMin - m_PadY } };
+    SliceImage::SizeType size = { { static_cast<itk::SizeValueType>(box.iMax - box.iMin + 1 + 2 * m_PadX),
+                                     static_cast<itk::SizeValueType>(box.jMax - box.jMin + 1 + 2 * m_PadY) } };
     m_Image->SetRegions(SliceImage::RegionType(start, size));
     m_Image->Allocate();
     // Zero the padding ring explicitly: Allocate(true) does not clear a reused, larger buffer.
@@ -76,10 +82,11 @@ public:
     for (long j = box.jMin; j <= box.jMax; ++j)
     {
       const unsigned char* row = slice + j * width;
-      float* outRow = out + (j - box.jMin + 1) * paddedWidth + 1;
+      float* outRow = out + (j - box.jMin + m_PadY) * paddedWidth + m_PadX;
       for (long i = box.iMin; i <= box.iMax; ++i)
         outRow[i - box.iMin] = row[i] ? 1.0f : 0.0f;
     }
+    smoothSlice(out, paddedWidth, static_cast<long>(size[1]), m_SpacingX, m_SpacingY, m_Sigma);
     m_Image->Modified();
 
     // A fresh filter per slice (cheap next to the tracing): no pipeline state carries over.
@@ -117,12 +124,15 @@ public:
 private:
   double               m_SpacingX;
   double               m_SpacingY;
+  double               m_Sigma;
+  long                 m_PadX;
+  long                 m_PadY;
   SliceImage::Pointer  m_Image;
 };
 
 } // namespace
 
-ContourStack extractContours(const MaskVolume* mask)
+ContourStack extractContours(const MaskVolume* mask, double inPlaneSigma)
 {
   if (!mask)
     throw Error("extractContours: no mask");
@@ -152,7 +162,7 @@ ContourStack extractContours(const MaskVolume* mask)
   auto work = [&](unsigned int worker) {
     try
     {
-      SliceContourExtractor extractor(spacing[0], spacing[1]);
+      SliceContourExtractor extractor(spacing[0], spacing[1], inPlaneSigma);
       for (long k = worker; k < depth; k += workers)
         stack.slices[k].contours = extractor.extract(buffer + k * sliceSize, width, height);
     }
