@@ -8,6 +8,8 @@ packages=(
   libinsighttoolkit5-dev libvtk9-dev libcgal-dev libeigen3-dev libgmp-dev libmpfr-dev
   libgtest-dev libtclap-dev
   libxml2-utils
+  # --snapshot renders through X: Xvfb (xvfb-run needs xauth) where there is no display.
+  xvfb xauth
 )
 
 missing=()

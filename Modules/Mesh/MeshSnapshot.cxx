@@ -1,0 +1,148 @@
+#include "MeshSnapshot.h"
+
+#include "MeshQuality.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkLookupTable.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <X11/Xlib.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <system_error>
+
+namespace slicemesh
+{
+
+bool snapshotAvailable(std::string* reason)
+{
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display)
+  {
+    if (reason)
+      *reason = "no X display (DISPLAY is not set); run under xvfb-run";
+    return false;
+  }
+  Display* connection = XOpenDisplay(nullptr);
+  if (!connection)
+  {
+    if (reason)
+      *reason = std::string("cannot open the X display '") + display + "'; run under xvfb-run";
+    return false;
+  }
+  XCloseDisplay(connection);
+  return true;
+}
+
+void writeSnapshot(const TriangleMesh& mesh, const std::string& path, const SnapshotOptions& options)
+{
+  std::string reason;
+  if (!snapshotAvailable(&reason))
+    throw Error("cannot render snapshot '" + path + "': " + reason);
+  if (mesh.triangles.empty())
+    throw Error("cannot render snapshot '" + path + "': the mesh has no triangles");
+  const std::filesystem::path target(path);
+  const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
+  if (!std::filesystem::is_directory(folder))
+    throw Error("cannot write snapshot '" + path + "': folder '" + folder.string() + "' does not exist");
+
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
+  for (std::size_t i = 0; i < mesh.points.size(); ++i)
+    points->SetPoint(static_cast<vtkIdType>(i), mesh.points[i].x, mesh.points[i].y, mesh.points[i].z);
+  vtkNew<vtkCellArray> cells;
+  cells->AllocateExact(static_cast<vtkIdType>(mesh.triangles.size()), 3 * static_cast<vtkIdType>(mesh.triangles.size()));
+  for (const Triangle& t : mesh.triangles)
+  {
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    cells->InsertNextCell(3, ids);
+  }
+  vtkNew<vtkDoubleArray> minAngle;
+  minAngle->SetName("MinAngle");
+  const std::vector<double> angles = triangleMinAngles(mesh);
+  minAngle->SetNumberOfValues(static_cast<vtkIdType>(angles.size()));
+  for (std::size_t i = 0; i < angles.size(); ++i)
+    minAngle->SetValue(static_cast<vtkIdType>(i), angles[i]);
+  vtkNew<vtkPolyData> polyData;
+  polyData->SetPoints(points);
+  polyData->SetPolys(cells);
+  polyData->GetCellData()->SetScalars(minAngle);
+
+  vtkNew<vtkLookupTable> colours;
+  colours->SetHueRange(0.0, 1.0 / 3.0); // red -> yellow -> green
+  colours->SetSaturationRange(0.9, 0.9);
+  colours->SetValueRange(1.0, 1.0);
+  colours->SetNumberOfTableValues(256);
+  colours->SetTableRange(0.0, options.goodAngleDegrees);
+  colours->Build();
+
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(polyData);
+  mapper->SetLookupTable(colours);
+  mapper->SetScalarModeToUseCellData();
+  mapper->SetScalarRange(0.0, options.goodAngleDegrees);
+  mapper->ScalarVisibilityOn();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->EdgeVisibilityOn();
+  actor->GetProperty()->SetEdgeColor(0.25, 0.25, 0.25);
+  actor->GetProperty()->SetLineWidth(0.5);
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  renderer->SetBackground(1.0, 1.0, 1.0);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  // LPS: the viewer's anterior is -P; look from anterior-right-superior, head up.
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(-1.0, -2.0, 1.2);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  renderer->ResetCamera();
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(options.width, options.height);
+  window->AddRenderer(renderer);
+  window->Render();
+
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+
+  const std::filesystem::path temporary = folder / ("." + target.filename().string() + ".partial.png");
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->SetFileName(temporary.string().c_str());
+  writer->Write();
+  std::error_code error;
+  if (writer->GetErrorCode() != 0 || !std::filesystem::exists(temporary, error) ||
+      std::filesystem::file_size(temporary, error) == 0)
+  {
+    std::filesystem::remove(temporary, error);
+    throw Error("cannot write snapshot '" + path + "'");
+  }
+  std::filesystem::rename(temporary, target, error);
+  if (error)
+  {
+    std::filesystem::remove(temporary, error);
+    throw Error("cannot write snapshot '" + path + "': " + error.message());
+  }
+}
+
+} // namespace slicemesh

@@ -1,0 +1,35 @@
+// A picture of a mesh: rendered off screen with VTK, coloured by triangle quality, saved as PNG.
+#ifndef MeshSnapshot_h
+#define MeshSnapshot_h
+
+#include "SliceMeshTypes.h"
+
+#include <string>
+
+namespace slicemesh
+{
+
+struct SnapshotOptions
+{
+  int width = 1024;
+  int height = 768;
+  /** Colour scale of each triangle's smallest angle (degrees): red at 0, through yellow at half of
+   *  this, to green at and above it. */
+  double goodAngleDegrees = 60.0;
+};
+
+/** Whether an off-screen picture can be rendered here. VTK 9.1 as Debian builds it renders through
+ *  an X display (GLX): without one (no DISPLAY, or no server answering it) this returns false and
+ *  says why in `reason`. Run under `xvfb-run` on a machine without a screen. */
+bool snapshotAvailable(std::string* reason = nullptr);
+
+/** Renders the mesh (physical millimetres) off screen, seen obliquely from the front-right-top of
+ *  its bounding box with the whole mesh in view, each triangle coloured by its smallest angle (see
+ *  SnapshotOptions), edges drawn, on a white background, and writes it as a PNG file (atomically:
+ *  a temporary name in the same folder, renamed when complete). Throws slicemesh::Error when no
+ *  display is available or the file cannot be written. */
+void writeSnapshot(const TriangleMesh& physicalMesh, const std::string& path, const SnapshotOptions& options = {});
+
+} // namespace slicemesh
+
+#endif
