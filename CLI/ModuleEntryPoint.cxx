@@ -67,6 +67,14 @@ PipelineSettings settingsFrom(const ParsedArguments& arguments)
   }
 
   readSegmentationArguments(arguments, settings);
+  settings.undersampling.correspondenceDistance = arguments.number("correspondenceDistance");
+  settings.undersampling.bridgeNonOverlapping = arguments.flag("bridgeNonOverlapping");
+  settings.undersampling.maxSliceSpacingFactor = arguments.number("maxSliceSpacingFactor");
+  if (settings.undersampling.bridgeNonOverlapping && settings.undersampling.correspondenceDistance == 0.0)
+  {
+    std::cerr << "SliceMesh: warning: --bridgeNonOverlapping needs --correspondenceDistance > 0; nothing is bridged"
+              << std::endl;
+  }
   settings.reconstruction.capPlacement =
     arguments.text("capPlacement") == "AtSlice" ? CapPlacement::AtSlice : CapPlacement::HalfSliceBeyond;
   settings.reconstruction.wallRowHeight = arguments.number("wallRowHeight");
@@ -161,6 +169,10 @@ int ModuleEntryPoint(int argc, char* argv[])
       return fail(e.code(), e.what());
     }
 
+    for (const std::string& note : result.sections.notes)
+    {
+      std::cerr << "SliceMesh: warning: " << oneLine(note) << std::endl;
+    }
     std::cout << summaryLine(result, arguments.text("outputModel")) << std::endl;
     if (!arguments.returnParameterFile.empty())
     {

@@ -21,6 +21,7 @@ enum Stage : std::size_t
   Reading,
   Segmentation,
   Contours,
+  Correspondence,
   Tiling,
   Validation,
   Writing
@@ -62,7 +63,8 @@ std::vector<ProgressStage> pipelineStages()
   return { { "Reading", "Reading the input volume", 1.0 },
            { "Segmentation", "Segmenting the volume into a mask", 1.0 },
            { "Contours", "Tracing sub-voxel contours in every slice", 1.5 },
-           { "Tiling", "Matching contours and tiling the slabs between slices", 5.0 },
+           { "Correspondence", "Matching contours between slices; intermediate sections where asked", 0.5 },
+           { "Tiling", "Tiling and refining the slabs between slices", 5.0 },
            { "Validation", "Checking that the mesh is a closed, oriented surface", 1.0 },
            { "Writing", "Writing the mesh", 0.5 } };
 }
@@ -92,12 +94,19 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
     guarded(EmptySegmentation, [&] { return segmentVolume(volume, settings.segmentation); });
 
   progress.start(Contours);
-  const ContourStack stack = guarded(MeshingFailed, [&] { return extractContours(mask); });
-  if (contourCount(stack) == 0)
+  const ContourStack contours = guarded(MeshingFailed, [&] { return extractContours(mask); });
+  if (contourCount(contours) == 0)
   {
     throw PipelineFailure(EmptySegmentation, "the segmentation of '" + settings.inputVolume + "' has no contours");
   }
   const SliceFrame frame = guarded(MeshingFailed, [&] { return sliceFrameOf(volume); });
+
+  // Correspondence by the distance rule: bridging of distance-only pairs and sections in thick slabs
+  // (a copy of the contours when both are off). Overlapping contours are matched inside the tiling.
+  progress.start(Correspondence);
+  PipelineResult result;
+  const ContourStack stack = guarded(
+    MeshingFailed, [&] { return insertIntermediateSections(contours, settings.undersampling, &result.sections); });
 
   progress.start(Tiling);
   ReconstructionOptions options = settings.reconstruction;
@@ -109,7 +118,6 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   }
 
   progress.start(Validation);
-  PipelineResult result;
   result.validation = guarded(MeshingFailed, [&] { return validateMesh(stackMesh); });
 
   progress.start(Writing);

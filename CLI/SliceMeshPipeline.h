@@ -4,6 +4,7 @@
 #define SliceMeshPipeline_h
 
 #include "ExitCodes.h"
+#include "IntermediateSections.h"
 #include "MultiLabelSettings.h"
 #include "MeshValidation.h"
 #include "MeshWriter.h"
@@ -22,6 +23,8 @@ struct PipelineSettings
   std::string inputVolume;
   std::string outputModel;
   SegmentationOptions segmentation;
+  /** Correspondence by the distance rule, bridging and intermediate sections (all off by default). */
+  UndersamplingOptions undersampling;
   ReconstructionOptions reconstruction;
   CoordinateSystem coordinateSystem = CoordinateSystem::LPS;
   /** One mesh per label of a label map (runMultiLabelPipeline, MultiLabelPipeline.h). */
@@ -32,6 +35,7 @@ struct PipelineResult
 {
   MeshValidation validation; ///< of the mesh as written (measured in the stack frame: same volume)
   double seconds = 0.0;      ///< wall-clock time from reading to writing
+  SectionStatistics sections; ///< of the correspondence stage (intermediate sections inserted, notes)
 };
 
 /** A stage failed; carries the exit code that names the kind of failure and a one-line message. */
@@ -52,7 +56,7 @@ private:
 /** The stages, in order, as ProgressReporter shows them. */
 std::vector<ProgressStage> pipelineStages();
 
-/** readVolume -> segmentVolume -> extractContours -> reconstructSurface -> validateMesh ->
+/** readVolume -> segmentVolume -> extractContours -> insertIntermediateSections -> reconstructSurface -> validateMesh ->
  *  mapToPhysicalSpace -> writeMesh. An invalid mesh is still written (the caller decides what
  *  that means); any failure before the write throws PipelineFailure and writes nothing. */
 PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& progress);

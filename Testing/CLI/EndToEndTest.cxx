@@ -108,7 +108,8 @@ TEST(EndToEnd, ProgressCoversEveryStageMonotonicallyFromZeroToOne)
   const RunResult r = runSliceMesh(quoted(twoBoxesLabelMap(folder).string()) + " " +
                                    quoted((folder / "boxes.vtp").string()));
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  const std::vector<std::string> stages = { "Reading", "Segmentation", "Contours", "Tiling", "Validation", "Writing" };
+  const std::vector<std::string> stages = { "Reading", "Segmentation", "Contours", "Correspondence",
+                                              "Tiling", "Validation", "Writing" };
   EXPECT_EQ(stageNames(r.out, "filter-start"), stages);
   EXPECT_EQ(stageNames(r.out, "filter-end"), stages);
   const std::vector<double> progress = tagNumbers(r.out, "filter-progress");

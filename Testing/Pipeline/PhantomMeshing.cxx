@@ -10,7 +10,7 @@ namespace slicemesh::testing
 {
 
 PhantomMeshResult meshPhantom(const Phantom& phantom, const std::array<double, 3>& spacing, const Matrix3& direction,
-                              const ReconstructionOptions& options)
+                              const ReconstructionOptions& options, const UndersamplingOptions& undersampling)
 {
   const GridSpec grid = gridAround(phantom, spacing, 2, direction);
   MaskVolume::Pointer mask = rasterizePhantom(phantom, grid);
@@ -20,7 +20,8 @@ PhantomMeshResult meshPhantom(const Phantom& phantom, const std::array<double, 3
     inside += *it != 0;
   result.voxelVolume = inside * spacing[0] * spacing[1] * spacing[2];
 
-  const ContourStack stack = extractContours(mask);
+  // The CLI's order: contours -> intermediate sections (only where the options ask) -> reconstruction.
+  const ContourStack stack = insertIntermediateSections(extractContours(mask), undersampling, &result.sections);
   const TriangleMesh stackMesh = reconstructSurface(stack, options, &result.statistics);
   result.mesh = mapToPhysicalSpace(stackMesh, sliceFrameOf(mask), CoordinateSystem::LPS);
   result.validation = validateMesh(result.mesh);

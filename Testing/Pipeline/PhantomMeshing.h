@@ -3,6 +3,7 @@
 #ifndef PhantomMeshing_h
 #define PhantomMeshing_h
 
+#include "IntermediateSections.h"
 #include "MeshValidation.h"
 #include "MeshWriter.h"
 #include "Phantom.h"
@@ -17,6 +18,7 @@ struct PhantomMeshResult
   TriangleMesh mesh;               ///< physical (LPS) millimetres
   MeshValidation validation;
   ReconstructionStatistics statistics;
+  SectionStatistics sections;      ///< of the undersampling pre-stage (nothing inserted when it is off)
   double meanDistance = 0.0;       ///< mean over vertices of the distance to the exact surface (mm)
   double maxDistance = 0.0;
   double voxelVolume = 0.0;        ///< volume of the rasterized mask (mm^3)
@@ -25,7 +27,8 @@ struct PhantomMeshResult
 
 PhantomMeshResult meshPhantom(const Phantom& phantom, const std::array<double, 3>& spacing,
                               const Matrix3& direction = Matrix3::Identity(),
-                              const ReconstructionOptions& options = {});
+                              const ReconstructionOptions& options = {},
+                              const UndersamplingOptions& undersampling = {});
 
 /** A rotation by angle (radians) about a unit axis. */
 Matrix3 rotation(const Vector3& axis, double angle);
