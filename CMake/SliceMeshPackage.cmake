@@ -1,0 +1,29 @@
+# Installs SliceMesh's Logic library as a CMake package: headers in include/SliceMesh, the static
+# library in lib, and SliceMeshConfig.cmake + SliceMeshConfigVersion.cmake + the exported targets in
+# lib/cmake/SliceMesh, so another project can find_package(SliceMesh) and link SliceMesh::Logic.
+# Component "Development"; the CLI module (CLI/CMakeLists.txt) is component "Runtime".
+include(CMakePackageConfigHelpers)
+
+set(SLICEMESH_INCLUDE_INSTALL_DIR include/SliceMesh)
+set(SLICEMESH_PACKAGE_INSTALL_DIR lib/cmake/SliceMesh)
+
+set_target_properties(SliceMeshLogic PROPERTIES EXPORT_NAME Logic)
+install(TARGETS SliceMeshLogic EXPORT SliceMeshTargets
+  ARCHIVE DESTINATION lib COMPONENT Development
+  LIBRARY DESTINATION lib COMPONENT Development
+  INCLUDES DESTINATION ${SLICEMESH_INCLUDE_INSTALL_DIR})
+# Every Logic header is public (CGAL stays inside the .cxx files).
+file(GLOB SLICEMESH_LOGIC_HEADERS ${PROJECT_SOURCE_DIR}/Logic/*.h)
+install(FILES ${SLICEMESH_LOGIC_HEADERS} DESTINATION ${SLICEMESH_INCLUDE_INSTALL_DIR} COMPONENT Development)
+install(EXPORT SliceMeshTargets NAMESPACE SliceMesh:: DESTINATION ${SLICEMESH_PACKAGE_INSTALL_DIR}
+  COMPONENT Development)
+
+configure_package_config_file(${PROJECT_SOURCE_DIR}/CMake/SliceMeshConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/SliceMeshConfig.cmake
+  INSTALL_DESTINATION ${SLICEMESH_PACKAGE_INSTALL_DIR}
+  PATH_VARS SLICEMESH_INCLUDE_INSTALL_DIR)
+# 0.x: minor versions may break the interface.
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/SliceMeshConfigVersion.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/SliceMeshConfig.cmake ${PROJECT_BINARY_DIR}/SliceMeshConfigVersion.cmake
+  DESTINATION ${SLICEMESH_PACKAGE_INSTALL_DIR} COMPONENT Development)
