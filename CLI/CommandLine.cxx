@@ -77,6 +77,10 @@ void checkValue(const ModuleParameter& p, const std::string& value)
                        p.tag == "double-vector" || p.tag == "point" || p.tag == "region";
   if (!numeric)
   {
+    if (p.tag == "file" && p.channel == "output" && value.empty() && p.defaultValue.empty())
+    {
+      return; // an optional output file (--report, --snapshot) given empty: none, as Slicer leaves it out
+    }
     if ((p.tag == "image" || p.tag == "geometry" || p.tag == "file") && value.empty())
     {
       throw ArgumentError(who + ": an empty path");

@@ -80,6 +80,11 @@ PipelineSettings settingsFrom(const ParsedArguments& arguments)
   settings.reconstruction.wallRowHeight = arguments.number("wallRowHeight");
   settings.coordinateSystem =
     arguments.text("coordinateSystem") == "RAS" ? CoordinateSystem::RAS : CoordinateSystem::LPS;
+  settings.contours.smoothingSigma = arguments.number("contourSmoothingSigma");
+  settings.contours.simplificationTolerance = arguments.number("contourSimplification");
+  settings.contours.pointSpacing = arguments.number("contourPointSpacing");
+  settings.reportFile = arguments.text("report");
+  settings.snapshotFile = arguments.text("snapshot");
   return settings;
 }
 
@@ -89,7 +94,7 @@ std::string summaryLine(const PipelineResult& result, const std::string& outputM
   std::ostringstream line;
   line << "SliceMesh: " << v.triangles << " triangles, " << (v.closed() ? "closed" : "NOT closed") << ", volume "
        << std::fixed << std::setprecision(1) << v.volume << " mm^3 (" << std::setprecision(2) << v.volume / 1000.0
-       << " mL), " << result.seconds << " s -> " << outputModel;
+       << " mL), " << result.seconds << " s -> " << outputModel << "; " << qualitySummary(v, result.quality);
   return line.str();
 }
 

@@ -1,6 +1,7 @@
 #include "SliceMeshPipeline.h"
 
 #include "ContourExtraction.h"
+#include "MeshSnapshot.h"
 #include "MultiLabelPipeline.h"
 #include "NiftiOrientation.h"
 #include "VolumeReader.h"
@@ -74,6 +75,12 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   if (settings.multiLabel.enabled)
     return runMultiLabelPipeline(settings, progress);
   const auto began = std::chrono::steady_clock::now();
+  StageTimes times;
+  auto startStage = [&](Stage stage)
+  {
+    times.start(pipelineStages()[stage].name);
+    progress.start(stage);
+  };
 
   // Fail before the expensive work when the output could never be written.
   const std::filesystem::path output(settings.outputModel);
@@ -84,17 +91,17 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
                                          folder.string() + "' does not exist");
   }
 
-  progress.start(Reading);
+  startStage(Reading);
   const ScalarVolume::Pointer volume = guarded(UnreadableInput, [&] { return readVolume(settings.inputVolume); });
   if (const auto warning = niftiOrientationWarning(settings.inputVolume))
     std::cerr << "SliceMesh: warning: " << *warning << std::endl;
 
-  progress.start(Segmentation);
+  startStage(Segmentation);
   const MaskVolume::Pointer mask =
     guarded(EmptySegmentation, [&] { return segmentVolume(volume, settings.segmentation); });
 
-  progress.start(Contours);
-  const ContourStack contours = guarded(MeshingFailed, [&] { return extractContours(mask); });
+  startStage(Contours);
+  const ContourStack contours = guarded(MeshingFailed, [&] { return preprocessContours(extractContours(mask, settings.contours.smoothingSigma), settings.contours); });
   if (contourCount(contours) == 0)
   {
     throw PipelineFailure(EmptySegmentation, "the segmentation of '" + settings.inputVolume + "' has no contours");
@@ -103,12 +110,12 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
 
   // Correspondence by the distance rule: bridging of distance-only pairs and sections in thick slabs
   // (a copy of the contours when both are off). Overlapping contours are matched inside the tiling.
-  progress.start(Correspondence);
+  startStage(Correspondence);
   PipelineResult result;
   const ContourStack stack = guarded(
     MeshingFailed, [&] { return insertIntermediateSections(contours, settings.undersampling, &result.sections); });
 
-  progress.start(Tiling);
+  startStage(Tiling);
   ReconstructionOptions options = settings.reconstruction;
   options.progress = [&progress](double fraction) { progress.update(fraction); };
   const TriangleMesh stackMesh = guarded(MeshingFailed, [&] { return reconstructSurface(stack, options); });
@@ -117,19 +124,36 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
     throw PipelineFailure(MeshingFailed, "the reconstruction of '" + settings.inputVolume + "' produced no triangles");
   }
 
-  progress.start(Validation);
+  startStage(Validation);
   result.validation = guarded(MeshingFailed, [&] { return validateMesh(stackMesh); });
 
-  progress.start(Writing);
+  startStage(Writing);
   guarded(WriteFailed,
           [&]
           {
             writeMesh(mapToPhysicalSpace(stackMesh, frame, settings.coordinateSystem), settings.coordinateSystem,
                       settings.outputModel);
           });
+  result.quality = guarded(MeshingFailed, [&] { return measureRun(stackMesh, stack); });
+  result.quality.genus = genusOf(result.validation);
+  if (!settings.snapshotFile.empty())
+  {
+    guarded(WriteFailed,
+            [&] { writeSnapshot(mapToPhysicalSpace(stackMesh, frame, settings.coordinateSystem), settings.snapshotFile); });
+  }
   progress.end();
 
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  result.quality.stageSeconds = times.seconds();
+  if (!settings.reportFile.empty())
+  {
+    guarded(WriteFailed,
+            [&]
+            {
+              writeQualityReport(settings.reportFile, settings.inputVolume, settings.outputModel, result.validation,
+                                 result.quality, result.seconds);
+            });
+  }
   return result;
 }
 

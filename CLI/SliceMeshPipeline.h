@@ -9,6 +9,7 @@
 #include "MeshValidation.h"
 #include "MeshWriter.h"
 #include "ProgressReporter.h"
+#include "QualityReport.h"
 #include "SurfaceReconstruction.h"
 #include "VolumeSegmentation.h"
 
@@ -27,6 +28,10 @@ struct PipelineSettings
   UndersamplingOptions undersampling;
   ReconstructionOptions reconstruction;
   CoordinateSystem coordinateSystem = CoordinateSystem::LPS;
+  /** Contour preprocessing between extraction and tiling (all off by default). */
+  ContourOptions contours;
+  std::string reportFile;   ///< JSON quality report to write; empty: none
+  std::string snapshotFile; ///< PNG picture coloured by triangle quality; empty: none
   /** One mesh per label of a label map (runMultiLabelPipeline, MultiLabelPipeline.h). */
   MultiLabelSettings multiLabel;
 };
@@ -35,6 +40,7 @@ struct PipelineResult
 {
   MeshValidation validation; ///< of the mesh as written (measured in the stack frame: same volume)
   double seconds = 0.0;      ///< wall-clock time from reading to writing
+  RunQuality quality;        ///< shape, Dirichlet energy, spacing ratio, seconds per stage
   SectionStatistics sections; ///< of the correspondence stage (intermediate sections inserted, notes)
 };
 

@@ -1,0 +1,205 @@
+#include "QualityReport.h"
+
+#include "ContourResampling.h"
+#include "ContourSimplification.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace slicemesh::cli
+{
+namespace
+{
+
+std::string jsonString(const std::string& text)
+{
+  std::string out = "\"";
+  for (const char c : text)
+  {
+    switch (c)
+    {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\t': out += "\\t"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20)
+        {
+          char buffer[8];
+          std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
+          out += buffer;
+        }
+        else
+          out += c;
+    }
+  }
+  return out + "\"";
+}
+
+/** JSON has no infinity or NaN: null then. */
+std::string jsonNumber(double value)
+{
+  if (!std::isfinite(value))
+    return "null";
+  std::ostringstream out;
+  out << std::setprecision(10) << value;
+  return out.str();
+}
+
+std::string percent(double fraction)
+{
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(1) << 100.0 * fraction << "%";
+  return out.str();
+}
+
+} // namespace
+
+ContourStack preprocessContours(const ContourStack& stack, const ContourOptions& options)
+{
+  ContourStack result = stack;
+  if (options.simplificationTolerance > 0.0)
+    result = simplifyContours(result, options.simplificationTolerance);
+  if (options.pointSpacing > 0.0)
+    result = resampleContours(result, options.pointSpacing);
+  return result;
+}
+
+void StageTimes::start(const std::string& stage)
+{
+  m_Starts.emplace_back(stage, Clock::now());
+}
+
+std::vector<std::pair<std::string, double>> StageTimes::seconds() const
+{
+  std::vector<std::pair<std::string, double>> result;
+  const Clock::time_point now = Clock::now();
+  for (std::size_t i = 0; i < m_Starts.size(); ++i)
+  {
+    const Clock::time_point end = i + 1 < m_Starts.size() ? m_Starts[i + 1].second : now;
+    result.emplace_back(m_Starts[i].first, std::chrono::duration<double>(end - m_Starts[i].second).count());
+  }
+  return result;
+}
+
+RunQuality measureRun(const TriangleMesh& stackMesh, const ContourStack& stack)
+{
+  RunQuality quality;
+  quality.shape = measureMeshQuality(stackMesh);
+  quality.dirichlet = measureDirichletEnergy(stackMesh, stack);
+  quality.pointSpacing = meanPointSpacing(stack);
+  quality.sliceSpacing = stack.sliceSpacing > 0.0 ? stack.sliceSpacing
+                         : stack.slices.size() > 1 ? (stack.slices.back().z - stack.slices.front().z) / (stack.slices.size() - 1)
+                                                   : 0.0;
+  return quality;
+}
+
+std::string qualitySummary(const MeshValidation& v, const RunQuality& q)
+{
+  std::ostringstream line;
+  line << v.vertices << " vertices, " << v.components << (v.components == 1 ? " component, " : " components, ")
+       << (v.manifold() ? "manifold, " : "NOT manifold, ")
+       << (!v.selfIntersectionChecked ? "self-intersections not checked, "
+           : v.selfIntersections == 0   ? "no self-intersections, "
+                                        : std::to_string(v.selfIntersections) + " self-intersecting pairs, ")
+       << "Euler characteristic " << v.eulerCharacteristic << ", genus ";
+  if (q.genus >= 0)
+    line << q.genus;
+  else
+    line << "undefined";
+  line << std::fixed << std::setprecision(1) << ", min angle " << q.shape.minAngleDegrees << " deg, <30 deg "
+       << percent(q.shape.fractionBelow30) << ", <10 deg " << percent(q.shape.fractionBelow10) << std::setprecision(2)
+       << ", aspect ratio mean " << q.shape.meanAspectRatio << " max " << q.shape.maxAspectRatio << std::setprecision(1)
+       << ", area " << v.area << " mm^2, point/slice spacing " << std::setprecision(2)
+       << (q.sliceSpacing > 0.0 ? q.pointSpacing / q.sliceSpacing : 0.0) << std::setprecision(1) << ", Dirichlet energy "
+       << q.dirichlet.energy << " mm^2";
+  if (!q.stageSeconds.empty())
+  {
+    line << "; stages" << std::setprecision(2);
+    for (std::size_t i = 0; i < q.stageSeconds.size(); ++i)
+      line << (i ? ", " : " ") << q.stageSeconds[i].first << " " << q.stageSeconds[i].second << " s";
+  }
+  return line.str();
+}
+
+void writeQualityReport(const std::string& path, const std::string& inputVolume, const std::string& outputModel,
+                        const MeshValidation& v, const RunQuality& q, double seconds)
+{
+  const std::filesystem::path target(path);
+  const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
+  if (!std::filesystem::is_directory(folder))
+    throw Error("cannot write report '" + path + "': folder '" + folder.string() + "' does not exist");
+
+  std::ostringstream json;
+  auto number = [&](const char* key, double value, bool last = false)
+  { json << "    " << jsonString(key) << ": " << jsonNumber(value) << (last ? "\n" : ",\n"); };
+  auto flag = [&](const char* key, bool value) { json << "    " << jsonString(key) << ": " << (value ? "true" : "false") << ",\n"; };
+  json << "{\n  \"input\": " << jsonString(inputVolume) << ",\n  \"output\": " << jsonString(outputModel) << ",\n";
+  json << "  \"mesh\": {\n";
+  number("vertices", static_cast<double>(v.vertices));
+  number("triangles", static_cast<double>(v.triangles));
+  number("components", static_cast<double>(v.components));
+  flag("closed", v.closed());
+  flag("manifold", v.manifold());
+  flag("oriented", v.oriented());
+  flag("selfIntersectionChecked", v.selfIntersectionChecked);
+  flag("selfIntersecting", v.selfIntersectionChecked && v.selfIntersections > 0);
+  number("selfIntersectingPairs", static_cast<double>(v.selfIntersections));
+  number("boundaryEdges", static_cast<double>(v.boundaryEdges));
+  number("nonManifoldEdges", static_cast<double>(v.nonManifoldEdges));
+  number("nonManifoldVertices", static_cast<double>(v.nonManifoldVertices));
+  number("degenerateTriangles", static_cast<double>(v.degenerateTriangles));
+  number("eulerCharacteristic", static_cast<double>(v.eulerCharacteristic));
+  json << "    \"genus\": " << (q.genus >= 0 ? std::to_string(q.genus) : std::string("null")) << ",\n";
+  flag("valid", v.valid());
+  number("areaMm2", v.area);
+  number("volumeMm3", v.volume, true);
+  json << "  },\n  \"quality\": {\n";
+  number("minAngleDegrees", q.shape.minAngleDegrees);
+  number("maxAngleDegrees", q.shape.maxAngleDegrees);
+  number("percentTrianglesBelow30Degrees", 100.0 * q.shape.fractionBelow30);
+  number("percentTrianglesBelow10Degrees", 100.0 * q.shape.fractionBelow10);
+  json << "    \"aspectRatio\": { \"definition\": \"circumradius / (2 inradius), 1 for equilateral\", \"mean\": "
+       << jsonNumber(q.shape.meanAspectRatio) << ", \"median\": " << jsonNumber(q.shape.medianAspectRatio)
+       << ", \"p95\": " << jsonNumber(q.shape.p95AspectRatio) << ", \"max\": " << jsonNumber(q.shape.maxAspectRatio)
+       << " },\n";
+  number("pointSpacingMm", q.pointSpacing);
+  number("sliceSpacingMm", q.sliceSpacing);
+  number("pointToSliceSpacingRatio", q.sliceSpacing > 0.0 ? q.pointSpacing / q.sliceSpacing : 0.0, true);
+  json << "  },\n  \"dirichletEnergy\": {\n";
+  number("energyMm2", q.dirichlet.energy);
+  number("slopedTilingTriangles", static_cast<double>(q.dirichlet.tilingTriangles));
+  number("flipCandidates", static_cast<double>(q.dirichlet.flipCandidates));
+  number("loweringFlips", static_cast<double>(q.dirichlet.loweringFlips));
+  number("largestDecreaseMm2", q.dirichlet.largestDecrease, true);
+  json << "  },\n  \"seconds\": {\n";
+  for (const auto& [stage, s] : q.stageSeconds)
+    json << "    " << jsonString(stage) << ": " << jsonNumber(s) << ",\n";
+  json << "    \"total\": " << jsonNumber(seconds) << "\n  }\n}\n";
+
+  const std::filesystem::path temporary = folder / ("." + target.filename().string() + ".partial");
+  {
+    std::ofstream out(temporary);
+    out << json.str();
+    out.close();
+    if (!out)
+    {
+      std::error_code ignored;
+      std::filesystem::remove(temporary, ignored);
+      throw Error("cannot write report '" + path + "'");
+    }
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, target, error);
+  if (error)
+  {
+    std::filesystem::remove(temporary, error);
+    throw Error("cannot write report '" + path + "': " + error.message());
+  }
+}
+
+} // namespace slicemesh::cli
