@@ -43,10 +43,13 @@ fs::path twoBoxesLabelMap(const fs::path& folder)
 }
 
 /** Contours at the 0.5 level cut each voxel-square corner by a right triangle of legs 0.5 voxel;
- *  caps half a slice beyond give the full height. Volume of an a x b voxel box (1 mm pixels). */
+ *  the end caps are domes rising half a slice (r) on a quarter circle, each lacking about
+ *  perimeter * r^2 * (1 - pi/4) of the full height. Volume of an a x b voxel box (1 mm pixels). */
 double expectedBoxVolume(int a, int b, int slices, double sliceThickness)
 {
-  return (a * b - 4 * 0.125) * slices * sliceThickness;
+  const double r = 0.5 * sliceThickness;
+  const double perimeter = 2.0 * (a + b) - 4.0 + 4.0 * std::sqrt(0.5);
+  return (a * b - 4 * 0.125) * slices * sliceThickness - 2.0 * perimeter * r * r * (1.0 - M_PI / 4.0);
 }
 
 std::map<std::string, std::string> returnParameterMap(const fs::path& path)
