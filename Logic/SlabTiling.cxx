@@ -528,8 +528,10 @@ double SlabOverlay::Impl::interpolatedHeight(const Point2& p) const
   // transforms): 0 on the lower contour, 1 on the upper one.
   const double dLower = lowerNearest->distance(p);
   const double dUpper = upperNearest->distance(p);
+  // Kept strictly inside the slab: a point lifted exactly onto a slice plane (a Steiner point a
+  // rounding error away from a contour) could lie flat against the neighbouring slab's triangles.
   const double t = dLower + dUpper > 0.0 ? dLower / (dLower + dUpper) : 0.5;
-  return z0 + t * (z1 - z0);
+  return z0 + std::clamp(t, 1e-3, 1.0 - 1e-3) * (z1 - z0);
 }
 
 std::vector<Sector> SlabOverlay::Impl::mixedSectors(bool assignCornerLevels)
@@ -816,7 +818,8 @@ double SlabOverlay::Impl::domeHeight(int component, const Point2& p) const
     return base;
   const NearestSegment& rim = components[component].capLevel() == LowerLevel ? *lowerNearest : *upperNearest;
   const double s = std::min(1.0, rim.distance(p) / std::abs(rise));
-  return base + rise * std::sqrt(1.0 - (1.0 - s) * (1.0 - s));
+  // Never flat on the contour's own slice, where the neighbouring slab's triangles meet it.
+  return base + rise * std::max(1e-3, std::sqrt(1.0 - (1.0 - s) * (1.0 - s)));
 }
 
 std::size_t SlabOverlay::Impl::addCapRows(MeshBuilder& mesh, double edgeLength)
