@@ -78,6 +78,9 @@ PipelineSettings settingsFrom(const ParsedArguments& arguments)
   settings.reconstruction.capPlacement =
     arguments.text("capPlacement") == "AtSlice" ? CapPlacement::AtSlice : CapPlacement::HalfSliceBeyond;
   settings.reconstruction.wallRowHeight = arguments.number("wallRowHeight");
+  settings.reconstruction.minAngleDegrees = arguments.number("minimumAngle");
+  settings.reconstruction.maxEdgeLength = arguments.number("maxEdgeLength");
+  settings.reconstruction.planarTiling = arguments.flag("planarTiling");
   settings.coordinateSystem =
     arguments.text("coordinateSystem") == "RAS" ? CoordinateSystem::RAS : CoordinateSystem::LPS;
   settings.contours.smoothingSigma = arguments.number("contourSmoothingSigma");

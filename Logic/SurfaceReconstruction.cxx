@@ -97,6 +97,7 @@ TriangleMesh reconstructSurface(const ContourStack& stack, const ReconstructionO
   liftOptions.capPlacement = options.capPlacement;
   liftOptions.minAngleDegrees = options.minAngleDegrees;
   liftOptions.maxEdgeLength = options.maxEdgeLength;
+  liftOptions.surfaceMetricFlips = !options.planarTiling;
   liftOptions.rowHeight = options.wallRowHeight > 0.0 ? options.wallRowHeight : medianEdgeLength(slices);
 
   // Slab k lies between slice k-1 and slice k; slabs 0 and n lie beyond the ends and only cap.

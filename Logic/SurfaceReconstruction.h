@@ -25,6 +25,11 @@ struct ReconstructionOptions
   double minAngleDegrees = 30.0;
   /** Steiner refinement: target edge length in mm; 0 means the median contour edge length. */
   double maxEdgeLength = 0.0;
+  /** Keep the tiling the paper's planar constrained Delaunay triangulation of all its points, which
+   *  minimises the Dirichlet energy of the height field (Rippa). Off by default: then edges are also
+   *  flipped towards the largest smallest angle of the lifted 3D triangles, which planar Delaunay
+   *  cannot give where the surface climbs steeply between nearly parallel contours. */
+  bool planarTiling = false;
   /** Points of the same slice closer than this (mm) are one point. */
   double mergeTolerance = 1e-6;
   /** Called with a fraction 0..1 as slabs are tiled; may be empty. */
