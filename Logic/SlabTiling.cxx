@@ -181,7 +181,10 @@ struct SlabOverlay::Impl
   }
   std::size_t addCapRows(MeshBuilder& mesh, double edgeLength);
   Point3 approximateLift(FaceHandle f, int i, const MeshBuilder& mesh) const;
-  bool insertSteiner(const Point2& p, double z, MeshBuilder& mesh);
+  bool insertSteiner(const Point2& p, double z, MeshBuilder& mesh, double clearance = 0.0);
+  /** Optional Steiner points keep this far (in 3D) from every contour (mm): closer, their triangles
+   *  are slivers. */
+  double optionalClearance() const { return 0.1 * typicalEdge; }
   std::size_t addRows(MeshBuilder& mesh, double edgeLength);
   std::size_t refineBadTriangles(MeshBuilder& mesh, double minAngle, double edgeLength, std::size_t budget);
   std::size_t flipTowardsSurfaceQuality(const MeshBuilder& mesh);
@@ -721,8 +724,13 @@ Point3 SlabOverlay::Impl::approximateLift(FaceHandle f, int i, const MeshBuilder
   return { v.p.x, v.p.y, v.lowerId >= 0 ? z0 : z1 };
 }
 
-bool SlabOverlay::Impl::insertSteiner(const Point2& p, double z, MeshBuilder& mesh)
+bool SlabOverlay::Impl::insertSteiner(const Point2& p, double z, MeshBuilder& mesh, double clearance)
 {
+  // Measured in 3D: a row point just above a contour in projection is fine, a point beside a contour
+  // at that contour's own height makes a sliver.
+  if (clearance > 0.0 && (std::hypot(lowerNearest->distance(p), z - z0) < clearance ||
+                          std::hypot(upperNearest->distance(p), z1 - z) < clearance))
+    return false;
   // Steiner points go strictly inside difference polygons: never on a contour edge, which the
   // neighbouring slab shares.
   CDT::Locate_type type;
@@ -884,7 +892,7 @@ std::size_t SlabOverlay::Impl::addCapRows(MeshBuilder& mesh, double edgeLength)
   }
   std::size_t inserted = 0;
   for (const auto& [p, z] : candidates)
-    inserted += insertSteiner(p, z, mesh);
+    inserted += insertSteiner(p, z, mesh, optionalClearance());
   if (inserted > 0)
     classify();
   return inserted;
@@ -947,7 +955,7 @@ std::size_t SlabOverlay::Impl::addRows(MeshBuilder& mesh, double edgeLength)
     int index = 0;
     FaceHandle f = cdt.locate(Kernel::Point_2(p.x, p.y), type, index);
     if (type != CDT::VERTEX && !cdt.is_infinite(f) && inMixed(f))
-      inserted += insertSteiner(p, z, mesh);
+      inserted += insertSteiner(p, z, mesh, optionalClearance());
   }
   if (inserted > 0)
     classify();
@@ -993,7 +1001,7 @@ std::size_t SlabOverlay::Impl::refineBadTriangles(MeshBuilder& mesh, double minA
       const double z = steinerHeight(f, p);
       if (placed.hasPointWithin({ p.x, p.y, z }, 0.5 * radius))
         continue;
-      if (insertSteiner(p, z, mesh))
+      if (insertSteiner(p, z, mesh, optionalClearance()))
       {
         placed.add({ p.x, p.y, z });
         ++added;
