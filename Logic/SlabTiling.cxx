@@ -39,6 +39,7 @@ struct FaceData
   int component = -1;      ///< difference polygon the face belongs to, -1 outside the symmetric difference
   std::array<signed char, 3> cornerLevel{ NoLevel, NoLevel, NoLevel }; ///< for corners on both slices
   std::array<std::int32_t, 3> lifted{ -1, -1, -1 };                   ///< mesh ids, in output winding
+  std::array<std::int32_t, 3> cornerId{ -1, -1, -1 }; ///< chain node taken by a corner where the surface switches slices
 };
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -1104,40 +1105,47 @@ void SlabOverlay::lift(MeshBuilder& mesh, const SlabLiftOptions& options, Recons
   if (options.minAngleDegrees > 0.0 && options.surfaceMetricFlips)
     d.flipTowardsSurfaceQuality(mesh);
 
-  // Levels of common vertices, and where the surface switches from one slice to the other.
+  // Where the surface switches from one slice to the other at a vertex common to both, the rise is
+  // spread over the sector's fan: each face takes the node of the vertex's vertical chain nearest the
+  // height of its Steiner corners, and each fan edge where consecutive faces differ carries a small
+  // vertical fan over the chain nodes between them (one tall fan from a single point would be slivers).
   for (auto f = d.cdt.finite_faces_begin(); f != d.cdt.finite_faces_end(); ++f)
+  {
     f->info().cornerLevel = { NoLevel, NoLevel, NoLevel };
+    f->info().cornerId = { -1, -1, -1 };
+  }
   struct Switch
   {
-    VertexHandle vertex;
-    VertexHandle far;
-    FaceHandle before;
-    Level from;
-    Level to;
+    std::int32_t far;                 ///< the fan edge's Steiner end
+    FaceHandle before;                ///< the face on the start side of the fan edge
+    std::vector<std::int32_t> nodes;  ///< chain nodes climbed, in the direction from start to end
   };
+  std::map<int, std::vector<std::int32_t>> chains;
   std::vector<Switch> switches;
   for (const Sector& s : d.mixedSectors(true))
   {
-    // Switch on the fan edge whose vertical triangle is best shaped.
-    const OverlayVertex& v = d.vertices[s.vertex->info()];
-    std::size_t best = 0;
-    double bestAngle = -1.0;
-    for (std::size_t k = 0; k < s.fan.size(); ++k)
-    {
-      const double angle = minAngle3(mesh.point(v.lowerId), mesh.point(v.upperId),
-                                     mesh.point(d.vertices[s.fan[k]->info()].steinerId));
-      if (angle > bestAngle)
-      {
-        bestAngle = angle;
-        best = k;
-      }
-    }
-    for (std::size_t k = 0; k < s.faces.size(); ++k)
-      s.faces[k]->info().cornerLevel[s.faces[k]->index(s.vertex)] = k <= best ? s.startLevel : s.endLevel;
-    switches.push_back({ s.vertex, s.fan[best], s.faces[best], s.startLevel, s.endLevel });
+    std::vector<std::int32_t> chain = d.wallChain(s.vertex->info(), chains, rows, mesh);
+    if (s.startLevel == UpperLevel)
+      std::reverse(chain.begin(), chain.end());
+    const int n = static_cast<int>(chain.size()) - 1;
+    const double zStart = mesh.point(chain.front()).z, zEnd = mesh.point(chain.back()).z;
+    auto fraction = [&](VertexHandle w) {
+      return std::clamp((mesh.point(d.vertices[w->info()].steinerId).z - zStart) / (zEnd - zStart), 0.0, 1.0);
+    };
+    const std::size_t faces = s.faces.size();
+    std::vector<int> node(faces, 0);
+    node.back() = n;
+    for (std::size_t k = 1; k + 1 < faces; ++k)
+      node[k] = std::clamp(static_cast<int>(std::lround(0.5 * (fraction(s.fan[k - 1]) + fraction(s.fan[k])) * n)),
+                           node[k - 1], n);
+    for (std::size_t k = 0; k < faces; ++k)
+      s.faces[k]->info().cornerId[s.faces[k]->index(s.vertex)] = chain[node[k]];
+    for (std::size_t k = 0; k + 1 < faces; ++k)
+      if (node[k] != node[k + 1])
+        switches.push_back({ d.vertices[s.fan[k]->info()].steinerId, s.faces[k],
+                             std::vector<std::int32_t>(chain.begin() + node[k], chain.begin() + node[k + 1] + 1) });
   }
 
-  std::map<int, std::vector<std::int32_t>> chains;
   for (auto f = d.cdt.finite_faces_begin(); f != d.cdt.finite_faces_end(); ++f)
   {
     if (!d.isDifference(f))
@@ -1153,6 +1161,8 @@ void SlabOverlay::lift(MeshBuilder& mesh, const SlabLiftOptions& options, Recons
         ids[i] = c.capLevel() == LowerLevel ? v.lowerId : v.upperId;
       else if (!v.onBoth())
         ids[i] = v.lowerId >= 0 ? v.lowerId : v.upperId;
+      else if (f->info().cornerId[i] >= 0)
+        ids[i] = f->info().cornerId[i];
       else
       {
         const signed char level = f->info().cornerLevel[i];
@@ -1169,24 +1179,20 @@ void SlabOverlay::lift(MeshBuilder& mesh, const SlabLiftOptions& options, Recons
     ++(c.isCap() ? statistics.capTriangles : statistics.tilingTriangles);
   }
 
-  // Vertical fans where the surface switches slices at a common vertex.
+  // The vertical fans, wound to match the face before them.
   for (const Switch& s : switches)
   {
-    std::vector<std::int32_t> chain = d.wallChain(s.vertex->info(), chains, rows, mesh);
-    if (s.from == UpperLevel)
-      std::reverse(chain.begin(), chain.end());
-    const std::int32_t w = d.vertices[s.far->info()].steinerId;
     const auto& t = s.before->info().lifted;
-    bool farToVertex = false; // whether the face before the switch runs w -> chain[0]
+    bool farToVertex = false; // whether the face before the switch runs far -> nodes[0]
     for (int i = 0; i < 3; ++i)
-      if (t[i] == w && t[(i + 1) % 3] == chain.front())
+      if (t[i] == s.far && t[(i + 1) % 3] == s.nodes.front())
         farToVertex = true;
-    for (std::size_t r = 0; r + 1 < chain.size(); ++r)
+    for (std::size_t r = 0; r + 1 < s.nodes.size(); ++r)
     {
       if (farToVertex)
-        mesh.addTriangle(chain[r], w, chain[r + 1]);
+        mesh.addTriangle(s.nodes[r], s.far, s.nodes[r + 1]);
       else
-        mesh.addTriangle(w, chain[r], chain[r + 1]);
+        mesh.addTriangle(s.far, s.nodes[r], s.nodes[r + 1]);
       ++statistics.wallTriangles;
     }
   }
