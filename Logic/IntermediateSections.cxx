@@ -31,13 +31,8 @@ double medianEdgeLength(const ContourStack& stack)
 {
   std::vector<double> lengths;
   for (const Slice& slice : stack.slices)
-    for (const Polygon2& polygon : slice.contours)
-      for (std::size_t i = 0; i < polygon.size(); ++i)
-        lengths.push_back(distance(polygon[i], polygon[(i + 1) % polygon.size()]));
-  if (lengths.empty())
-    return 0.0;
-  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
-  return lengths[lengths.size() / 2];
+    appendEdgeLengths(slice.contours, lengths);
+  return median(std::move(lengths), 0.0);
 }
 
 Box2 unionBox(const Layer& a, const Layer& b)

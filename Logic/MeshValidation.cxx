@@ -1,5 +1,7 @@
 #include "MeshValidation.h"
 
+#include "DisjointSets.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
@@ -20,26 +22,6 @@ namespace
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
-
-class UnionFind
-{
-public:
-  explicit UnionFind(std::size_t n)
-    : m_Parent(n)
-  {
-    std::iota(m_Parent.begin(), m_Parent.end(), 0);
-  }
-  std::size_t find(std::size_t i)
-  {
-    while (m_Parent[i] != i)
-      i = m_Parent[i] = m_Parent[m_Parent[i]];
-    return i;
-  }
-  void join(std::size_t a, std::size_t b) { m_Parent[find(a)] = find(b); }
-
-private:
-  std::vector<std::size_t> m_Parent;
-};
 
 std::uint64_t directedKey(std::int32_t a, std::int32_t b)
 {
@@ -106,7 +88,7 @@ MeshValidation validateMesh(const TriangleMesh& mesh)
   std::unordered_map<std::uint64_t, int> directed;
   std::unordered_map<std::uint64_t, int> undirected;
   std::vector<char> used(nPoints, 0);
-  UnionFind pieces(nPoints);
+  DisjointSets pieces(nPoints);
   double minAngle = M_PI;
   std::size_t below30 = 0;
   for (const Triangle& t : mesh.triangles)
@@ -132,7 +114,7 @@ MeshValidation validateMesh(const TriangleMesh& mesh)
       ++directed[directedKey(p, q)];
       ++undirected[directedKey(std::min(p, q), std::max(p, q))];
       used[p] = 1;
-      pieces.join(p, q);
+      pieces.unite(p, q);
     }
   }
   for (const auto& [key, count] : directed)
@@ -161,9 +143,9 @@ MeshValidation validateMesh(const TriangleMesh& mesh)
       local.emplace(a, local.size());
       local.emplace(b, local.size());
     }
-    UnionFind fan(local.size());
+    DisjointSets fan(local.size());
     for (const auto& [a, b] : links[p])
-      fan.join(local[a], local[b]);
+      fan.unite(local[a], local[b]);
     std::size_t fans = 0;
     for (std::size_t i = 0; i < local.size(); ++i)
       fans += fan.find(i) == i;

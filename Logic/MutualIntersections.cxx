@@ -73,14 +73,9 @@ private:
 double medianEdgeLength(const std::vector<Polygon2>& a, const std::vector<Polygon2>& b)
 {
   std::vector<double> lengths;
-  for (const auto* set : { &a, &b })
-    for (const Polygon2& polygon : *set)
-      for (std::size_t i = 0; i < polygon.size(); ++i)
-        lengths.push_back(distance(polygon[i], polygon[(i + 1) % polygon.size()]));
-  if (lengths.empty())
-    return 1.0;
-  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
-  return std::max(lengths[lengths.size() / 2], 1e-9);
+  appendEdgeLengths(a, lengths);
+  appendEdgeLengths(b, lengths);
+  return std::max(median(std::move(lengths), 1.0), 1e-9);
 }
 
 /** Rebuilds each contour with its insertions placed along their edges. */

@@ -107,4 +107,19 @@ Box2 boundingBox(const Polygon2& polygon)
   return box;
 }
 
+void appendEdgeLengths(const std::vector<Polygon2>& contours, std::vector<double>& lengths)
+{
+  for (const Polygon2& polygon : contours)
+    for (std::size_t i = 0; i < polygon.size(); ++i)
+      lengths.push_back(distance(polygon[i], polygon[(i + 1) % polygon.size()]));
+}
+
+double median(std::vector<double> values, double fallback)
+{
+  if (values.empty())
+    return fallback;
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
 } // namespace slicemesh

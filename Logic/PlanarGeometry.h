@@ -38,6 +38,12 @@ struct Box2
 
 Box2 boundingBox(const Polygon2& polygon);
 
+/** Appends the length of every edge of the closed contours to lengths. */
+void appendEdgeLengths(const std::vector<Polygon2>& contours, std::vector<double>& lengths);
+
+/** The median of the values (the upper one for an even count), or fallback when there are none. */
+double median(std::vector<double> values, double fallback);
+
 } // namespace slicemesh
 
 #endif

@@ -51,13 +51,8 @@ double medianEdgeLength(const std::vector<PreparedSlice>& slices)
 {
   std::vector<double> lengths;
   for (const PreparedSlice& slice : slices)
-    for (const Polygon2& polygon : slice.contours)
-      for (std::size_t i = 0; i < polygon.size(); ++i)
-        lengths.push_back(distance(polygon[i], polygon[(i + 1) % polygon.size()]));
-  if (lengths.empty())
-    return 1.0;
-  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
-  return lengths[lengths.size() / 2];
+    appendEdgeLengths(slice.contours, lengths);
+  return median(std::move(lengths), 1.0);
 }
 
 } // namespace
