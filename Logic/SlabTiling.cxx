@@ -1012,6 +1012,9 @@ std::size_t SlabOverlay::Impl::refineBadTriangles(MeshBuilder& mesh, double minA
       break;
     inserted += added;
     classify();
+    // Insertion restores planar Delaunay around each new point; restore the surface metric too.
+    if (liftOptions && liftOptions->surfaceMetricFlips)
+      flipTowardsSurfaceQuality(mesh);
   }
   return inserted;
 }
