@@ -36,6 +36,23 @@ PhantomMeshResult meshPhantom(const Phantom& phantom, const std::array<double, 3
     result.upper = { std::max(result.upper.x, p.x), std::max(result.upper.y, p.y), std::max(result.upper.z, p.z) };
   }
   result.meanDistance /= static_cast<double>(result.mesh.points.size());
+  double area = 0.0;
+  for (const Triangle& t : result.mesh.triangles)
+  {
+    const Point3 &a = result.mesh.points[t[0]], &b = result.mesh.points[t[1]], &c = result.mesh.points[t[2]];
+    const Vector3 u(b.x - a.x, b.y - a.y, b.z - a.z), v(c.x - a.x, c.y - a.y, c.z - a.z);
+    const double triangleArea = 0.5 * u.cross(v).norm();
+    auto mid = [](const Point3& p, const Point3& q, double w) {
+      return Point3{ p.x + w * (q.x - p.x), p.y + w * (q.y - p.y), p.z + w * (q.z - p.z) };
+    };
+    const Point3 centroid{ (a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0, (a.z + b.z + c.z) / 3.0 };
+    const double d = (distanceToSurface(phantom, centroid) + distanceToSurface(phantom, mid(a, b, 0.5)) +
+                      distanceToSurface(phantom, mid(b, c, 0.5)) + distanceToSurface(phantom, mid(c, a, 0.5))) /
+                     4.0;
+    result.surfaceDistance += triangleArea * d;
+    area += triangleArea;
+  }
+  result.surfaceDistance /= area;
   return result;
 }
 

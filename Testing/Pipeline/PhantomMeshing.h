@@ -21,6 +21,9 @@ struct PhantomMeshResult
   SectionStatistics sections;      ///< of the undersampling pre-stage (nothing inserted when it is off)
   double meanDistance = 0.0;       ///< mean over vertices of the distance to the exact surface (mm)
   double maxDistance = 0.0;
+  /** Area-weighted mean distance of the surface (each triangle sampled at its centroid and edge
+   *  midpoints): what the triangles' interiors do, which the vertices alone do not show (mm). */
+  double surfaceDistance = 0.0;
   double voxelVolume = 0.0;        ///< volume of the rasterized mask (mm^3)
   Point3 lower, upper;             ///< the mesh's bounding box
 };
