@@ -75,6 +75,7 @@ PipelineSettings settingsFrom(const ParsedArguments& arguments)
     std::cerr << "SliceMesh: warning: --bridgeNonOverlapping needs --correspondenceDistance > 0; nothing is bridged"
               << std::endl;
   }
+  settings.minimumComponentVolume = arguments.number("minimumComponentVolume");
   settings.reconstruction.capPlacement =
     arguments.text("capPlacement") == "AtSlice" ? CapPlacement::AtSlice : CapPlacement::HalfSliceBeyond;
   settings.reconstruction.wallRowHeight = arguments.number("wallRowHeight");

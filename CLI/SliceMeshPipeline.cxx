@@ -1,14 +1,20 @@
 #include "SliceMeshPipeline.h"
 
 #include "ContourExtraction.h"
+#include "SmallComponentRemoval.h"
 #include "MeshSnapshot.h"
 #include "MultiLabelPipeline.h"
 #include "NiftiOrientation.h"
 #include "VolumeReader.h"
 
+#include <cerrno>
 #include <chrono>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <functional>
+#include <sstream>
+#include <unistd.h>
 #include <iostream>
 
 namespace slicemesh::cli
@@ -90,6 +96,19 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
     throw PipelineFailure(WriteFailed, "cannot write mesh '" + settings.outputModel + "': folder '" +
                                          folder.string() + "' does not exist");
   }
+  // ... or cannot be written: probe with a file of our own (access() says yes to root on any folder).
+  {
+    std::string probe = (folder / ".SliceMesh-probe-XXXXXX").string();
+    const int descriptor = ::mkstemp(probe.data());
+    if (descriptor < 0)
+    {
+      const int error = errno;
+      throw PipelineFailure(WriteFailed, "cannot write mesh '" + settings.outputModel + "': folder '" +
+                                           folder.string() + "' is not writable (" + std::strerror(error) + ")");
+    }
+    ::close(descriptor);
+    ::unlink(probe.c_str());
+  }
 
   startStage(Reading);
   const ScalarVolume::Pointer volume = guarded(UnreadableInput, [&] { return readVolume(settings.inputVolume); });
@@ -99,6 +118,20 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   startStage(Segmentation);
   const MaskVolume::Pointer mask =
     guarded(EmptySegmentation, [&] { return segmentVolume(volume, settings.segmentation); });
+  if (settings.minimumComponentVolume > 0.0)
+  {
+    const SmallComponentRemoval removal =
+      guarded(MeshingFailed, [&] { return removeSmallComponents(mask, settings.minimumComponentVolume); });
+    if (removal.removedComponents == removal.components)
+    {
+      std::ostringstream message;
+      message << "every one of the " << removal.components << " connected components of the segmentation of '"
+              << settings.inputVolume << "' is smaller than the minimum component volume "
+              << settings.minimumComponentVolume << " mm^3 (the largest is " << removal.largestComponentVolume
+              << " mm^3)";
+      throw PipelineFailure(EmptySegmentation, message.str());
+    }
+  }
 
   startStage(Contours);
   const ContourStack contours = guarded(MeshingFailed, [&] { return preprocessContours(extractContours(mask, settings.contours.smoothingSigma), settings.contours); });

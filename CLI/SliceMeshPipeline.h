@@ -24,6 +24,8 @@ struct PipelineSettings
   std::string inputVolume;
   std::string outputModel;
   SegmentationOptions segmentation;
+  /** Connected components of the mask smaller than this (mm^3) are dropped; 0 keeps all. */
+  double minimumComponentVolume = 0.0;
   /** Correspondence by the distance rule, bridging and intermediate sections (all off by default). */
   UndersamplingOptions undersampling;
   ReconstructionOptions reconstruction;

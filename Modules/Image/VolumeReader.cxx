@@ -2,6 +2,8 @@
 // slicemesh::Error with a one-line message that names the input.
 #include "VolumeReader.h"
 
+#include "MemoryBudget.h"
+
 #include "SliceMeshTypes.h"
 
 #include "itkGDCMImageIO.h"
@@ -13,7 +15,10 @@
 #include <zlib.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
+#include <iostream>
 #include <sstream>
 
 namespace slicemesh
@@ -95,6 +100,11 @@ void checkGeometry(const std::string& path, const ScalarVolume* volume)
   checkGeometry(path, spacing, direction);
 }
 
+/** Bytes per voxel a run holds at its peak besides the file's own voxels: the float volume (4), the
+ *  mask (1), and the contours and mesh of a large structure. Measured: 1.66 GB peak for a 512 x 512 x
+ *  400 label map with a large ellipsoid (2.56 M triangles), 15.8 bytes per voxel (README, "Limits"). */
+constexpr double bytesPerVoxelOfARun = 15.0;
+
 /** Checks what the file header says before any voxel is read: dimension, components, geometry. */
 void checkHeader(const std::string& path, const itk::ImageIOBase* io)
 {
@@ -114,6 +124,20 @@ void checkHeader(const std::string& path, const itk::ImageIOBase* io)
             << " components per voxel; SliceMesh needs a scalar volume";
     throw Error(message.str());
   }
+  // Memory, before a voxel is allocated: the file's voxels (when not float already), the float
+  // volume, the mask and the work on them (measured: see the README's "Limits").
+  double voxels = 1.0;
+  for (unsigned int axis = 0; axis < 3; ++axis)
+    voxels *= static_cast<double>(io->GetDimensions(axis));
+  const double fileBytesPerVoxel =
+    io->GetComponentType() == itk::IOComponentEnum::FLOAT ? 0.0 : static_cast<double>(io->GetComponentSize());
+  {
+    std::ostringstream what;
+    what << path << ": a " << io->GetDimensions(0) << " x " << io->GetDimensions(1) << " x " << io->GetDimensions(2)
+         << " volume";
+    checkMemoryBudget(what.str(), voxels * (fileBytesPerVoxel + bytesPerVoxelOfARun));
+  }
+
   double spacing[3];
   double direction[3][3];
   for (unsigned int axis = 0; axis < 3; ++axis)
@@ -154,6 +178,92 @@ bool endsWith(const std::string& text, const std::string& suffix)
   return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+/** Catches what a reader writes to std::cerr while it runs: MetaIO reports a short read of the
+ *  voxels there (several lines) and carries on with garbage. Restores std::cerr when it goes. */
+class CapturedErrorStream
+{
+public:
+  CapturedErrorStream()
+    : m_Saved(std::cerr.rdbuf(m_Text.rdbuf()))
+  {
+  }
+  ~CapturedErrorStream() { std::cerr.rdbuf(m_Saved); }
+  CapturedErrorStream(const CapturedErrorStream&) = delete;
+  CapturedErrorStream& operator=(const CapturedErrorStream&) = delete;
+  std::string text() const { return m_Text.str(); }
+
+private:
+  std::ostringstream m_Text;
+  std::streambuf*    m_Saved;
+};
+
+/** An uncompressed single-file NIfTI holds its voxels after a header of at least 352 bytes; ITK 5.2
+ *  reads a truncated one without complaint (the missing voxels come out as zeros). */
+void checkNiftiFileSize(const std::string& path, const itk::ImageIOBase* io)
+{
+  if (!endsWith(path, ".nii") && !endsWith(path, ".NII"))
+    return;
+  std::error_code error;
+  const auto fileSize = std::filesystem::file_size(path, error);
+  if (error)
+    return;
+  const double needed = 352.0 + static_cast<double>(io->GetImageSizeInBytes());
+  if (static_cast<double>(fileSize) < needed)
+  {
+    std::ostringstream message;
+    message << path << ": a truncated NIfTI file (" << fileSize << " bytes; its header promises at least "
+            << static_cast<std::uintmax_t>(needed) << ")";
+    throw Error(message.str());
+  }
+}
+
+/** NIfTI-1 stores the spacing as pixdim[1..3]; the NIfTI library (and so ITK) silently replaces a zero
+ *  or negative one by 1 mm, which would mesh at a made-up scale. Read those three floats from the header
+ *  (plain or gzip) and refuse what is not positive and finite. NIfTI-2 and other formats are left
+ *  to ITK's own values, checked by checkGeometry. */
+void checkNiftiSpacing(const std::string& path)
+{
+  if (!endsWith(path, ".nii") && !endsWith(path, ".nii.gz") && !endsWith(path, ".NII") && !endsWith(path, ".NII.GZ"))
+    return;
+  gzFile file = gzopen(path.c_str(), "rb");
+  if (!file)
+    return;
+  unsigned char header[348];
+  const int read = gzread(file, header, sizeof header);
+  gzclose(file);
+  if (read != static_cast<int>(sizeof header))
+    return; // ITK reports the short file
+  auto word = [&](int offset, bool swap)
+  {
+    unsigned char bytes[4] = { header[offset], header[offset + 1], header[offset + 2], header[offset + 3] };
+    if (swap)
+      std::swap(bytes[0], bytes[3]), std::swap(bytes[1], bytes[2]);
+    std::uint32_t value;
+    std::memcpy(&value, bytes, 4);
+    return value;
+  };
+  bool swap = false;
+  if (word(0, false) != 348)
+  {
+    if (word(0, true) != 348)
+      return; // not NIfTI-1
+    swap = true;
+  }
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const std::uint32_t bits = word(80 + 4 * axis, swap); // float pixdim[8] starts at byte 76
+    float spacing;
+    std::memcpy(&spacing, &bits, 4);
+    if (!std::isfinite(spacing) || spacing <= 0.0f)
+    {
+      std::ostringstream message;
+      message << path << ": spacing along axis " << axis << " is " << spacing
+              << " in the NIfTI header; SliceMesh needs positive, finite voxel spacing";
+      throw Error(message.str());
+    }
+  }
+}
+
 ScalarVolume::Pointer readImageFile(const std::string& path)
 {
   if (endsWith(path, ".gz") || endsWith(path, ".GZ"))
@@ -165,6 +275,7 @@ ScalarVolume::Pointer readImageFile(const std::string& path)
     throw Error(path + ": not an image file SliceMesh can read (NIfTI, NRRD, MetaImage, DICOM)");
   try
   {
+    CapturedErrorStream quiet; // MetaIO's multi-line complaints; ITK's exception says it in one line
     io->SetFileName(path);
     io->ReadImageInformation();
   }
@@ -173,19 +284,26 @@ ScalarVolume::Pointer readImageFile(const std::string& path)
     throw Error(path + ": cannot read the image header: " + describe(error));
   }
   checkHeader(path, io);
+  checkNiftiFileSize(path, io);
+  checkNiftiSpacing(path);
 
   using Reader = itk::ImageFileReader<ScalarVolume>;
   auto reader = Reader::New();
   reader->SetFileName(path);
   reader->SetImageIO(io);
+  std::string complaints;
   try
   {
+    CapturedErrorStream captured;
     reader->Update();
+    complaints = captured.text();
   }
   catch (const itk::ExceptionObject& error)
   {
     throw Error(path + ": cannot read the voxels: " + describe(error));
   }
+  if (!complaints.empty())
+    throw Error(path + ": cannot read the voxels (a truncated or damaged file?): " + oneLine(complaints));
   ScalarVolume::Pointer volume = reader->GetOutput();
   volume->DisconnectPipeline();
 

@@ -1,0 +1,102 @@
+// MemAvailable from /proc/meminfo and the cgroup v2 / v1 limit: Linux's own accounting, read once
+// per check (cheap: a few small files).
+#include "MemoryBudget.h"
+
+#include "SliceMeshTypes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace slicemesh
+{
+namespace
+{
+
+/** The first number in a file, or -1 (missing file, "max", garbage). */
+double numberInFile(const char* path)
+{
+  std::ifstream file(path);
+  double value = -1.0;
+  if (!(file >> value))
+    return -1.0;
+  return value;
+}
+
+double memAvailableBytes()
+{
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  double kilobytes = 0.0;
+  std::string unit;
+  while (meminfo >> key >> kilobytes)
+  {
+    std::getline(meminfo, unit);
+    if (key == "MemAvailable:")
+      return kilobytes * 1024.0;
+  }
+  return -1.0;
+}
+
+/** Room left under the cgroup's limit, or -1 when there is no limit. */
+double cgroupRoomBytes()
+{
+  // cgroup v2
+  const double limit2 = numberInFile("/sys/fs/cgroup/memory.max");
+  if (limit2 > 0.0)
+  {
+    const double used = std::max(0.0, numberInFile("/sys/fs/cgroup/memory.current"));
+    return std::max(0.0, limit2 - used);
+  }
+  // cgroup v1 (an unlimited group reports a huge number)
+  const double limit1 = numberInFile("/sys/fs/cgroup/memory/memory.limit_in_bytes");
+  if (limit1 > 0.0 && limit1 < 1e17)
+  {
+    const double used = std::max(0.0, numberInFile("/sys/fs/cgroup/memory/memory.usage_in_bytes"));
+    return std::max(0.0, limit1 - used);
+  }
+  return -1.0;
+}
+
+std::string gibibytes(double bytes)
+{
+  constexpr double mebibyte = 1024.0 * 1024.0;
+  std::ostringstream text;
+  if (bytes < 1024.0 * mebibyte)
+    text << std::fixed << std::setprecision(0) << std::ceil(bytes / mebibyte) << " MiB";
+  else
+    text << std::fixed << std::setprecision(1) << bytes / (1024.0 * mebibyte) << " GiB";
+  return text.str();
+}
+
+} // namespace
+
+double availableMemoryBytes()
+{
+  if (const char* limit = std::getenv("SLICEMESH_MEMORY_LIMIT_MB"))
+  {
+    char* end = nullptr;
+    const double megabytes = std::strtod(limit, &end);
+    if (end != limit && megabytes > 0.0)
+      return megabytes * 1024.0 * 1024.0;
+  }
+  const double available = memAvailableBytes();
+  const double room = cgroupRoomBytes();
+  if (available < 0.0)
+    return room < 0.0 ? 0.0 : room;
+  return room < 0.0 ? available : std::min(available, room);
+}
+
+void checkMemoryBudget(const std::string& what, double neededBytes)
+{
+  const double available = availableMemoryBytes();
+  if (available <= 0.0 || neededBytes <= available)
+    return;
+  throw Error(what + " needs about " + gibibytes(neededBytes) + " of memory; " + gibibytes(available) +
+              " are available (SliceMesh stops here rather than be killed for lack of memory)");
+}
+
+} // namespace slicemesh

@@ -1,0 +1,23 @@
+// How much memory a run may use, and a clear error instead of the OOM killer when it would not fit.
+#ifndef MemoryBudget_h
+#define MemoryBudget_h
+
+#include <cstddef>
+#include <string>
+
+namespace slicemesh
+{
+
+/** Bytes this process may still allocate: the smaller of the system's MemAvailable and the
+ *  room left under the cgroup (container) memory limit. The environment variable
+ *  SLICEMESH_MEMORY_LIMIT_MB, when set to a positive number, replaces the measurement (for tests,
+ *  and to keep a shared machine responsive). Returns 0 when nothing can be measured. */
+double availableMemoryBytes();
+
+/** Throws slicemesh::Error ("<what> needs about X GiB of memory; Y GiB are available ...") when
+ *  neededBytes exceed availableMemoryBytes(). Does nothing when the available memory is unknown. */
+void checkMemoryBudget(const std::string& what, double neededBytes);
+
+} // namespace slicemesh
+
+#endif

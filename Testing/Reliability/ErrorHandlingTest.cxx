@@ -1,0 +1,291 @@
+// Every documented failure of the executable, run end to end: a one-line error on stderr, the
+// documented exit code (README, "Exit codes"), no output and no temporary file left behind, and an
+// existing output file left untouched.
+#include "CLITestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace slicemesh::testing
+{
+namespace
+{
+
+constexpr int badArguments = 2;
+constexpr int unreadableInput = 3;
+constexpr int emptySegmentation = 4;
+constexpr int writeFailed = 6;
+
+const std::string precious = "an earlier mesh, to be kept";
+
+/** Runs SliceMesh on input -> folder/out.vtp (which holds `precious` beforehand) and checks the
+ *  failure: code, one line naming `mention`, the old output intact, nothing else in the folder. */
+void expectFailure(const fs::path& folder, const std::string& input, int code, const std::string& mention,
+                   const std::string& options = "", const std::string& output = "out.vtp")
+{
+  const fs::path out = folder / output;
+  std::ofstream(folder / "out.vtp") << precious;
+  std::vector<fs::path> before;
+  for (const auto& entry : fs::directory_iterator(folder))
+    before.push_back(entry.path());
+
+  const RunResult r = runSliceMesh(options + " " + quoted(input) + " " + quoted(out.string()));
+  SCOPED_TRACE(options + " " + input + " -> " + output);
+  EXPECT_EQ(r.exitCode, code) << r.err;
+  const std::vector<std::string> lines = linesOf(r.err);
+  ASSERT_EQ(lines.size(), 1u) << r.err;
+  EXPECT_EQ(lines[0].rfind("SliceMesh: error: ", 0), 0u) << lines[0];
+  EXPECT_NE(lines[0].find(mention), std::string::npos) << lines[0];
+  EXPECT_EQ(fileText(folder / "out.vtp"), precious);
+  std::vector<fs::path> after;
+  for (const auto& entry : fs::directory_iterator(folder))
+    after.push_back(entry.path());
+  std::sort(before.begin(), before.end());
+  std::sort(after.begin(), after.end());
+  EXPECT_EQ(after, before) << "a file was left behind";
+}
+
+/** The inputs live in their own folder so the output folder's listing is only the outputs. */
+struct Folders
+{
+  fs::path inputs, outputs;
+};
+
+Folders foldersFor(const std::string& name)
+{
+  return { freshFolder(name + "-in"), freshFolder(name + "-out") };
+}
+
+void writeText(const fs::path& path, const std::string& text)
+{
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+/** A MetaImage with a free-form header (a line per entry) and `voxels` bytes of data. */
+void writeMetaImageWith(const fs::path& path, const std::string& header, std::size_t voxels, unsigned char value = 1)
+{
+  std::ofstream out(path, std::ios::binary);
+  out << "ObjectType = Image\n" << header << "ElementType = MET_UCHAR\nElementDataFile = LOCAL\n";
+  for (std::size_t v = 0; v < voxels; ++v)
+    out.put(static_cast<char>(v % 7 == 0 ? value : 0));
+}
+
+void writeNrrd(const fs::path& path, const std::string& spaceDirections)
+{
+  std::ofstream out(path, std::ios::binary);
+  out << "NRRD0004\ntype: uchar\ndimension: 3\nspace: left-posterior-superior\nsizes: 8 8 8\n"
+      << "space directions: " << spaceDirections << "\nencoding: raw\nspace origin: (0,0,0)\n\n";
+  for (int v = 0; v < 512; ++v)
+    out.put(static_cast<char>(v % 5 == 0));
+}
+
+std::string readBytes(const fs::path& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
+/** The sample label map, uncompressed, with pixdim[axis + 1] (the spacing) replaced. */
+fs::path niftiWithSpacing(const fs::path& folder, const std::string& name, int axis, float spacing)
+{
+  const fs::path path = folder / name;
+  const RunResult r = runCommand("gzip -dc " + quoted(SLICEMESH_DATA_DIR "/sample-labelmap.nii.gz") + " > " +
+                                 quoted(path.string()));
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  std::string bytes = readBytes(path);
+  std::memcpy(&bytes[80 + 4 * axis], &spacing, sizeof spacing); // NIfTI-1: float pixdim[8] at byte 76
+  writeText(path, bytes);
+  return path;
+}
+
+TEST(ErrorHandling, MissingInput)
+{
+  const Folders f = foldersFor("missing");
+  expectFailure(f.outputs, (f.inputs / "nothing-here.nii.gz").string(), unreadableInput, "no such file");
+}
+
+TEST(ErrorHandling, NotAnImage)
+{
+  const Folders f = foldersFor("not-an-image");
+  writeText(f.inputs / "notes.nii", "this is not an image\n");
+  writeText(f.inputs / "notes.txt", "this is not an image\n");
+  expectFailure(f.outputs, (f.inputs / "notes.nii").string(), unreadableInput, "not an image file");
+  expectFailure(f.outputs, (f.inputs / "notes.txt").string(), unreadableInput, "not an image file");
+  expectFailure(f.outputs, f.inputs.string(), unreadableInput, "DICOM"); // a folder without a series
+}
+
+TEST(ErrorHandling, TruncatedOrCorruptFiles)
+{
+  const Folders f = foldersFor("truncated");
+  const std::string sample = readBytes(SLICEMESH_DATA_DIR "/sample-labelmap.nii.gz");
+  writeText(f.inputs / "half.nii.gz", sample.substr(0, sample.size() / 2));
+  writeText(f.inputs / "head.nii.gz", sample.substr(0, 100));
+  std::string flipped = sample;
+  flipped[flipped.size() / 2] = static_cast<char>(flipped[flipped.size() / 2] ^ 0x5a);
+  writeText(f.inputs / "flipped.nii.gz", flipped);
+  expectFailure(f.outputs, (f.inputs / "half.nii.gz").string(), unreadableInput, "truncated");
+  expectFailure(f.outputs, (f.inputs / "head.nii.gz").string(), unreadableInput, "truncated");
+  expectFailure(f.outputs, (f.inputs / "flipped.nii.gz").string(), unreadableInput, "damaged");
+
+  // Uncompressed files cut short: ITK alone reads them without complaint.
+  const fs::path whole = niftiWithSpacing(f.inputs, "whole.nii", 0, 1.0f);
+  const std::string nifti = readBytes(whole);
+  fs::remove(whole);
+  writeText(f.inputs / "cut.nii", nifti.substr(0, nifti.size() / 3));
+  expectFailure(f.outputs, (f.inputs / "cut.nii").string(), unreadableInput, "truncated");
+  writeMetaImageWith(f.inputs / "cut.mha", "NDims = 3\nDimSize = 8 8 8\nElementSpacing = 1 1 1\n", 300);
+  expectFailure(f.outputs, (f.inputs / "cut.mha").string(), unreadableInput, "cannot read the voxels");
+}
+
+TEST(ErrorHandling, TwoAndFourDimensionalImages)
+{
+  const Folders f = foldersFor("dimensions");
+  writeMetaImageWith(f.inputs / "flat.mha", "NDims = 2\nDimSize = 8 8\nElementSpacing = 1 1\n", 64);
+  writeMetaImageWith(f.inputs / "series.mha", "NDims = 4\nDimSize = 8 8 8 3\nElementSpacing = 1 1 1 1\n", 1536);
+  expectFailure(f.outputs, (f.inputs / "flat.mha").string(), unreadableInput, "a 2-D image; SliceMesh needs a 3-D volume");
+  expectFailure(f.outputs, (f.inputs / "series.mha").string(), unreadableInput, "a 4-D image; SliceMesh needs a 3-D volume");
+}
+
+TEST(ErrorHandling, ZeroNegativeAndNonFiniteSpacing)
+{
+  const Folders f = foldersFor("spacing");
+  writeMetaImageWith(f.inputs / "zero.mha", "NDims = 3\nDimSize = 8 8 8\nElementSpacing = 1 0 1\n", 512);
+  writeMetaImageWith(f.inputs / "negative.mha", "NDims = 3\nDimSize = 8 8 8\nElementSpacing = 1 1 -2\n", 512);
+  writeNrrd(f.inputs / "zero.nrrd", "(0,0,0) (0,1,0) (0,0,1)");
+  expectFailure(f.outputs, (f.inputs / "zero.mha").string(), unreadableInput, "spacing along axis 1 is 0");
+  expectFailure(f.outputs, (f.inputs / "negative.mha").string(), unreadableInput, "spacing along axis 2 is -2");
+  expectFailure(f.outputs, (f.inputs / "zero.nrrd").string(), unreadableInput, "spacing along axis 0 is 0");
+  // NIfTI carries the spacing as binary floats: NaN and infinity get through the format.
+  expectFailure(f.outputs, niftiWithSpacing(f.inputs, "nan.nii", 1, std::nanf("")).string(), unreadableInput,
+                "spacing");
+  expectFailure(f.outputs,
+                niftiWithSpacing(f.inputs, "inf.nii", 2, std::numeric_limits<float>::infinity()).string(),
+                unreadableInput, "spacing");
+  expectFailure(f.outputs, niftiWithSpacing(f.inputs, "zero.nii", 0, 0.0f).string(), unreadableInput, "spacing");
+  // Text formats that cannot even parse a non-finite spacing still fail on one line.
+  writeNrrd(f.inputs / "nan.nrrd", "(nan,0,0) (0,1,0) (0,0,1)");
+  expectFailure(f.outputs, (f.inputs / "nan.nrrd").string(), unreadableInput, "nan.nrrd");
+  writeMetaImageWith(f.inputs / "nan.mha", "NDims = 3\nDimSize = 8 8 8\nElementSpacing = 1 nan 1\n", 512);
+  expectFailure(f.outputs, (f.inputs / "nan.mha").string(), unreadableInput, "nan.mha");
+}
+
+TEST(ErrorHandling, SingularDirection)
+{
+  const Folders f = foldersFor("direction");
+  writeMetaImageWith(f.inputs / "singular.mha",
+                     "NDims = 3\nDimSize = 8 8 8\nElementSpacing = 1 1 1\nTransformMatrix = 1 0 0 1 0 0 0 0 1\n", 512);
+  writeNrrd(f.inputs / "singular.nrrd", "(1,0,0) (2,0,0) (0,0,1)");
+  expectFailure(f.outputs, (f.inputs / "singular.mha").string(), unreadableInput, "direction matrix is singular");
+  expectFailure(f.outputs, (f.inputs / "singular.nrrd").string(), unreadableInput, "direction matrix is singular");
+}
+
+TEST(ErrorHandling, EmptyMaskAndAbsentLabel)
+{
+  const Folders f = foldersFor("empty");
+  writeMetaImage(f.inputs / "zeros.mha", { 6, 6, 6 }, { 1, 1, 1 }, [](int, int, int) { return 0; });
+  writeMetaImage(f.inputs / "labels.mha", { 8, 8, 8 }, { 1, 1, 1 },
+                 [](int i, int, int k) -> unsigned char { return k > 1 && k < 6 ? (i < 4 ? 2 : 5) : 0; });
+  expectFailure(f.outputs, (f.inputs / "zeros.mha").string(), emptySegmentation, "nothing to mesh");
+  expectFailure(f.outputs, (f.inputs / "labels.mha").string(), emptySegmentation, "2", "--label 3");
+  const RunResult r = runSliceMesh("--label 3 " + quoted((f.inputs / "labels.mha").string()) + " " +
+                                   quoted((f.outputs / "x.vtp").string()));
+  EXPECT_NE(r.err.find("2"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("5"), std::string::npos) << "lists the labels present: " << r.err;
+}
+
+TEST(ErrorHandling, EverythingSmallerThanTheMinimumComponentVolume)
+{
+  const Folders f = foldersFor("specks");
+  writeMetaImage(f.inputs / "specks.mha", { 12, 12, 12 }, { 1, 1, 1 },
+                 [](int i, int j, int k) -> unsigned char { return i % 3 == 1 && j % 3 == 1 && k % 3 == 1; });
+  expectFailure(f.outputs, (f.inputs / "specks.mha").string(), emptySegmentation, "minimum component volume",
+                "--minimumComponentVolume 2");
+  // With a minimum the specks go and the run succeeds on what is left.
+  writeMetaImage(f.inputs / "block.mha", { 14, 14, 14 }, { 1, 1, 1 },
+                 [](int i, int j, int k) -> unsigned char
+                 { return (i % 3 == 1 && j % 3 == 1 && k % 3 == 1) || (i >= 5 && i < 9 && j >= 5 && j < 9 && k >= 5 && k < 9); });
+  const RunResult r = runSliceMesh("--minimumComponentVolume 2 " + quoted((f.inputs / "block.mha").string()) + " " +
+                                   quoted((f.outputs / "block.vtp").string()));
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+}
+
+TEST(ErrorHandling, OutputFolderMissingOrNotWritable)
+{
+  const Folders f = foldersFor("output-folder");
+  writeMetaImage(f.inputs / "box.mha", { 6, 6, 6 }, { 1, 1, 1 },
+                 [](int i, int j, int k) -> unsigned char { return i > 1 && i < 4 && j > 1 && j < 4 && k > 1 && k < 4; });
+  const std::string input = quoted((f.inputs / "box.mha").string());
+  RunResult r = runSliceMesh(input + " " + quoted((f.outputs / "nowhere" / "out.vtp").string()));
+  EXPECT_EQ(r.exitCode, writeFailed);
+  EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
+
+  // /proc takes no new files, even from root.
+  r = runSliceMesh(input + " /proc/slicemesh-out.vtp");
+  EXPECT_EQ(r.exitCode, writeFailed);
+  EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("not writable"), std::string::npos) << r.err;
+
+  if (::geteuid() != 0) // root writes into a read-only folder regardless
+  {
+    const fs::path locked = f.outputs / "locked";
+    fs::create_directory(locked);
+    std::ofstream(locked / "out.vtp") << precious;
+    fs::permissions(locked, fs::perms::owner_read | fs::perms::owner_exec);
+    r = runSliceMesh(input + " " + quoted((locked / "out.vtp").string()));
+    fs::permissions(locked, fs::perms::owner_all);
+    EXPECT_EQ(r.exitCode, writeFailed) << r.err;
+    EXPECT_NE(r.err.find("not writable"), std::string::npos) << r.err;
+    EXPECT_EQ(fileText(locked / "out.vtp"), precious);
+  }
+}
+
+TEST(ErrorHandling, UnknownOutputExtension)
+{
+  const Folders f = foldersFor("extension");
+  writeMetaImage(f.inputs / "box.mha", { 6, 6, 6 }, { 1, 1, 1 }, [](int, int, int) { return 1; });
+  expectFailure(f.outputs, (f.inputs / "box.mha").string(), badArguments, ".vtp", "", "out.mesh");
+  expectFailure(f.outputs, (f.inputs / "box.mha").string(), badArguments, ".vtp", "", "out");
+}
+
+TEST(ErrorHandling, OutOfRangeAndMalformedParameters)
+{
+  const Folders f = foldersFor("parameters");
+  writeMetaImage(f.inputs / "box.mha", { 6, 6, 6 }, { 1, 1, 1 }, [](int, int, int) { return 1; });
+  const std::string input = (f.inputs / "box.mha").string();
+  expectFailure(f.outputs, input, badArguments, "wallRowHeight", "--wallRowHeight -1");
+  expectFailure(f.outputs, input, badArguments, "wallRowHeight", "--wallRowHeight 51");
+  expectFailure(f.outputs, input, badArguments, "wallRowHeight", "--wallRowHeight nan");
+  expectFailure(f.outputs, input, badArguments, "minimumComponentVolume", "--minimumComponentVolume -5");
+  expectFailure(f.outputs, input, badArguments, "label", "--label 1.5");
+  expectFailure(f.outputs, input, badArguments, "threshold", "--threshold abc");
+  expectFailure(f.outputs, input, badArguments, "inputKind", "--inputKind Mesh");
+}
+
+TEST(ErrorHandling, VolumeLargerThanTheMemoryAvailableIsAClearError)
+{
+  const Folders f = foldersFor("memory");
+  const fs::path out = f.outputs / "out.vtp";
+  std::ofstream(out) << precious;
+  const RunResult r = runCommand("SLICEMESH_MEMORY_LIMIT_MB=1 " + quoted(SLICEMESH_EXECUTABLE) + " " +
+                                 quoted(SLICEMESH_DATA_DIR "/sample-labelmap.nii.gz") + " " + quoted(out.string()));
+  EXPECT_EQ(r.exitCode, unreadableInput);
+  ASSERT_EQ(linesOf(r.err).size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("of memory"), std::string::npos) << r.err;
+  EXPECT_EQ(fileText(out), precious);
+}
+
+} // namespace
+} // namespace slicemesh::testing

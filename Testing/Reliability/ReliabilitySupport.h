@@ -1,0 +1,79 @@
+// The real path from a mask to a checked mesh, and seeded random label maps, for the reliability
+// tests (hard geometry, the property test) and the fuzz targets.
+#ifndef ReliabilitySupport_h
+#define ReliabilitySupport_h
+
+#include "MeshValidation.h"
+#include "SurfaceReconstruction.h"
+#include "VolumeReader.h"
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+
+namespace slicemesh::testing
+{
+
+/** A mask of the given size, spacing, origin 0 and direction (columns: axis unit vectors). */
+MaskVolume::Pointer makeMask(std::array<std::size_t, 3> size, std::array<double, 3> spacing = { 1.0, 1.0, 1.0 },
+                             const std::array<std::array<double, 3>, 3>& direction = { { { 1.0, 0.0, 0.0 },
+                                                                                        { 0.0, 1.0, 0.0 },
+                                                                                        { 0.0, 0.0, 1.0 } } });
+
+/** A mask whose voxel (i, j, k) is inside(i, j, k). */
+MaskVolume::Pointer makeMask(std::array<std::size_t, 3> size, std::array<double, 3> spacing,
+                             const std::function<bool(long, long, long)>& inside);
+
+struct MaskMeshResult
+{
+  std::string error;         ///< what reconstructSurface or validateMesh threw, else empty
+  TriangleMesh mesh;         ///< physical (LPS) millimetres
+  MeshValidation validation; ///< of the physical mesh
+  double voxelVolume = 0.0;  ///< number of mask voxels times the voxel volume (mm^3)
+  double voxelFaceArea = 0.0; ///< area of the boundary faces of the voxels (mm^2)
+  double maxSpacing = 0.0;
+  std::size_t contours = 0;
+
+  /** The stated volume tolerance: the mesh lies within half a voxel of the voxels' boundary (0.5
+   *  level contours, caps half a slice beyond), so its volume differs from the voxels' by less than
+   *  a shell a quarter of the largest spacing thick over the voxels' boundary faces. */
+  double volumeTolerance() const { return 0.25 * maxSpacing * voxelFaceArea; }
+  bool volumeWithinTolerance() const
+  {
+    return std::abs(validation.volume - voxelVolume) <= volumeTolerance();
+  }
+  /** valid() and the volume check, with a one-line reason when not. */
+  std::string problem() const;
+};
+
+/** mask -> extractContours -> reconstructSurface -> mapToPhysicalSpace (LPS) -> validateMesh. */
+MaskMeshResult meshMask(const MaskVolume* mask, const ReconstructionOptions& options = {});
+
+/** Kinds of random label maps the property test draws from. */
+enum class RandomMaskKind
+{
+  Blobs,        ///< a few random ellipsoids, some cut by the image border
+  Noise,        ///< independent voxels (salt), thin to dense
+  BlobsAndNoise,
+  Touching,     ///< voxels placed to touch only at edges and corners (diagonal runs, checkerboards)
+  Thin,         ///< one-slice-thick sheets and one-voxel rods
+  Any           ///< one of the above, by the seed
+};
+
+struct RandomMask
+{
+  MaskVolume::Pointer mask;
+  std::string description; ///< size, spacing, direction and kind, to reproduce by hand
+};
+
+/** A random mask, the same for the same seed and kind: size 1..20 per axis, isotropic, anisotropic
+ *  or thick-slice spacing, identity, oblique or mirrored direction. */
+RandomMask randomMask(std::uint64_t seed, RandomMaskKind kind);
+
+/** The mask as C++ source (a makeMask call with the set voxels listed): a reproducer to paste. */
+std::string maskAsCode(const MaskVolume* mask);
+
+} // namespace slicemesh::testing
+
+#endif
