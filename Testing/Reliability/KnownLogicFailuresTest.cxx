@@ -1,6 +1,6 @@
-// Minimal masks on which the Logic (commit a818514) gives an invalid mesh, shrunk from property-test
-// seeds by MinimizeFailingMask. DISABLED_ until the Logic owner fixes them: they do not run by
-// default; run them with --gtest_also_run_disabled_tests --gtest_filter='KnownLogicFailures.*'.
+// Minimal masks on which the Logic (commit a818514) gave an invalid mesh, shrunk from property-test
+// seeds by MinimizeFailingMask; regression tests since ac6e1f8 (Steiner heights kept strictly
+// inside the slab).
 // All are pieces that touch across slices at voxel edges or corners in thick-slice or anisotropic
 // grids: the slabs' surfaces of neighbouring pieces cross (self-intersections), or a triangle
 // collapses (degenerate).
@@ -26,21 +26,21 @@ void expectValidMesh(std::array<std::size_t, 3> size, std::array<double, 3> spac
 }
 
 // Seed 4001 (touching): 36 self-intersecting pairs, 3 components.
-TEST(KnownLogicFailures, DISABLED_Seed4001SixVoxelsTouchingAcrossThickSlices)
+TEST(KnownLogicFailures, Seed4001SixVoxelsTouchingAcrossThickSlices)
 {
   expectValidMesh({ 6, 15, 11 }, { 0.7, 0.7, 3 },
                   { { 5, 8, 7 }, { 4, 9, 7 }, { 5, 8, 8 }, { 5, 9, 8 }, { 5, 8, 9 }, { 4, 9, 9 } });
 }
 
 // Seed 2040 (noise): 25 self-intersecting pairs, 3 components.
-TEST(KnownLogicFailures, DISABLED_Seed2040EightVoxels)
+TEST(KnownLogicFailures, Seed2040EightVoxels)
 {
   expectValidMesh({ 10, 5, 16 }, { 0.7, 0.7, 3 },
                   { { 8, 1, 2 }, { 9, 4, 2 }, { 8, 1, 3 }, { 8, 2, 3 }, { 8, 3, 3 }, { 9, 3, 3 }, { 8, 2, 4 }, { 9, 4, 4 } });
 }
 
 // Seed 3034 (blobs+noise): 3 self-intersecting pairs in one component; fine slices, oblique grid.
-TEST(KnownLogicFailures, DISABLED_Seed3034NineVoxelsOneComponent)
+TEST(KnownLogicFailures, Seed3034NineVoxelsOneComponent)
 {
   expectValidMesh({ 16, 6, 13 }, { 0.37167094479655383, 1.2913124925737245, 0.35551725184415356 },
                   { { 1, 2, 4 }, { 1, 3, 4 }, { 2, 3, 4 }, { 2, 2, 5 }, { 1, 3, 5 }, { 2, 3, 5 }, { 2, 2, 6 }, { 1, 3, 6 },
@@ -48,7 +48,7 @@ TEST(KnownLogicFailures, DISABLED_Seed3034NineVoxelsOneComponent)
 }
 
 // Seed 2054 (noise): 36 self-intersecting pairs, 3 components, anisotropic spacing.
-TEST(KnownLogicFailures, DISABLED_Seed2054ElevenVoxels)
+TEST(KnownLogicFailures, Seed2054ElevenVoxels)
 {
   expectValidMesh({ 12, 4, 16 }, { 1.3768358446013231, 1.6441535296029026, 2.252408243656109 },
                   { { 1, 0, 8 }, { 4, 0, 8 }, { 1, 1, 8 }, { 2, 1, 8 }, { 2, 0, 9 }, { 3, 0, 9 }, { 4, 0, 9 }, { 1, 0, 10 },
@@ -56,12 +56,19 @@ TEST(KnownLogicFailures, DISABLED_Seed2054ElevenVoxels)
 }
 
 // Seed 2039 (noise): one degenerate (zero-area) triangle, no self-intersection; two slices.
-TEST(KnownLogicFailures, DISABLED_Seed2039DegenerateTriangle)
+TEST(KnownLogicFailures, Seed2039DegenerateTriangle)
 {
   expectValidMesh({ 13, 3, 12 }, { 0.7, 0.7, 3 },
                   { { 5, 0, 7 },  { 12, 0, 7 }, { 0, 1, 7 },  { 3, 1, 7 },  { 9, 1, 7 }, { 5, 2, 7 },  { 8, 2, 7 },  { 11, 2, 7 },
                     { 12, 2, 7 }, { 2, 0, 8 },  { 3, 0, 8 },  { 7, 0, 8 },  { 9, 0, 8 }, { 0, 1, 8 },  { 1, 1, 8 },  { 2, 1, 8 },
                     { 4, 1, 8 },  { 12, 1, 8 }, { 2, 2, 8 },  { 4, 2, 8 },  { 7, 2, 8 }, { 10, 2, 8 }, { 11, 2, 8 } });
+}
+
+// Seed 2060 (noise), failing at 24484fa: 3 self-intersecting pairs, 3 components; five voxels, one
+// of them alone in slice 0, two touching at an edge in slice 1 under a thick (3 mm) slice spacing.
+TEST(KnownLogicFailures, DISABLED_Seed2060FiveVoxels)
+{
+  expectValidMesh({ 2, 7, 5 }, { 0.7, 0.7, 3 }, { { 1, 6, 0 }, { 0, 0, 1 }, { 1, 2, 1 }, { 0, 3, 1 }, { 1, 3, 1 } });
 }
 
 } // namespace
