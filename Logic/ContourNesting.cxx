@@ -7,7 +7,7 @@
 namespace slicemesh
 {
 
-Polygon2 cleanContour(const Polygon2& contour, double tolerance)
+Polygon2 cleanContour(const Polygon2& contour, double tolerance, bool dropArealess)
 {
   Polygon2 cleaned;
   cleaned.reserve(contour.size());
@@ -47,7 +47,7 @@ Polygon2 cleanContour(const Polygon2& contour, double tolerance)
       changed = true;
     }
   }
-  if (cleaned.size() < 3 || twiceSignedArea(cleaned) == 0.0)
+  if (cleaned.size() < 3 || (dropArealess && twiceSignedArea(cleaned) == 0.0))
     return {};
   return cleaned;
 }

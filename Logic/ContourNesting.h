@@ -19,8 +19,8 @@ struct ContourNesting
 };
 
 /** Removes consecutive points closer than tolerance (mm) and spikes that turn straight back;
- *  returns an empty polygon when fewer than three points or no area remain. */
-Polygon2 cleanContour(const Polygon2& contour, double tolerance);
+ *  returns an empty polygon when fewer than three points remain, or (dropArealess) no area. */
+Polygon2 cleanContour(const Polygon2& contour, double tolerance, bool dropArealess = true);
 
 /** Orients the contours in place, outer boundaries counter-clockwise and holes clockwise (seen from +z),
  *  so the solid is always on the left of a contour, and returns their nesting. */

@@ -1,5 +1,6 @@
 #include "SurfaceReconstruction.h"
 
+#include "ContourCrossings.h"
 #include "ContourNesting.h"
 #include "MutualIntersections.h"
 #include "PlanarGeometry.h"
@@ -30,6 +31,32 @@ void checkStack(const ContourStack& stack)
     throw Error("contour stack: a single slice needs its slice spacing (thickness) set");
 }
 
+bool onOneLine(const Polygon2& contour)
+{
+  for (std::size_t i = 2; i < contour.size(); ++i)
+    if (orientation(contour[0], contour[1], contour[i]) != 0)
+      return false;
+  return true;
+}
+
+/** Contours of a slice must be simple and apart (a mask's contours always are); crossing or touching
+ *  ones, which hand-made contours can have, have no inside to mesh. */
+void rejectCrossingContours(const PreparedSlice& slice)
+{
+  const auto crossings = contourCrossings(slice.contours);
+  if (crossings.empty())
+    return;
+  const ContourEdge& first = crossings.front().first;
+  const ContourEdge& second = crossings.front().second;
+  const Point2& where = slice.contours[first.contour][first.edge];
+  std::ostringstream message;
+  message << "contour stack: in the slice at z = " << slice.z << " mm, contour " << first.contour
+          << (first.contour == second.contour ? " crosses or touches itself" : " crosses or touches contour " +
+                                                                                  std::to_string(second.contour))
+          << " near (" << where.x << ", " << where.y << ")";
+  throw Error(message.str());
+}
+
 std::vector<PreparedSlice> prepareSlices(const ContourStack& stack, double tolerance)
 {
   std::vector<PreparedSlice> slices(stack.slices.size());
@@ -38,10 +65,13 @@ std::vector<PreparedSlice> prepareSlices(const ContourStack& stack, double toler
     slices[k].z = stack.slices[k].z;
     for (const Polygon2& contour : stack.slices[k].contours)
     {
-      Polygon2 cleaned = cleanContour(contour, tolerance);
-      if (!cleaned.empty())
+      // A contour on one line has nothing inside: dropped. A figure eight has no area either, yet
+      // is no sliver: it is kept for the crossing check, which rejects it.
+      Polygon2 cleaned = cleanContour(contour, tolerance, false);
+      if (!cleaned.empty() && !onOneLine(cleaned))
         slices[k].contours.push_back(std::move(cleaned));
     }
+    rejectCrossingContours(slices[k]);
     slices[k].nesting = orientAndNest(slices[k].contours);
   }
   return slices;

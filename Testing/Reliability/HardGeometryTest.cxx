@@ -186,7 +186,7 @@ void expectRejected(const Polygon2& contour)
   }
 }
 
-TEST(HardGeometry, DISABLED_SelfIntersectingContourIsRejectedWithAClearError)
+TEST(HardGeometry, SelfIntersectingContourIsRejectedWithAClearError)
 {
   expectRejected({ { 0, 0 }, { 2, 2 }, { 2, 0 }, { 0, 2 } });                     // a bow tie
   expectRejected({ { 0, 0 }, { 4, 0 }, { 4, 4 }, { 2, 4 }, { 2, -1 }, { 0, -1 } }); // an edge crossing another
