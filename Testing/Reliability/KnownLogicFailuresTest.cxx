@@ -64,9 +64,9 @@ TEST(KnownLogicFailures, Seed2039DegenerateTriangle)
                     { 4, 1, 8 },  { 12, 1, 8 }, { 2, 2, 8 },  { 4, 2, 8 },  { 7, 2, 8 }, { 10, 2, 8 }, { 11, 2, 8 } });
 }
 
-// Seed 2060 (noise), failing at 24484fa: 3 self-intersecting pairs, 3 components; five voxels, one
+// Seed 2060 (noise), failed at 24484fa (passes since 0e1c0c4-era fixes): 3 self-intersecting pairs, 3 components; five voxels, one
 // of them alone in slice 0, two touching at an edge in slice 1 under a thick (3 mm) slice spacing.
-TEST(KnownLogicFailures, DISABLED_Seed2060FiveVoxels)
+TEST(KnownLogicFailures, Seed2060FiveVoxels)
 {
   expectValidMesh({ 2, 7, 5 }, { 0.7, 0.7, 3 }, { { 1, 6, 0 }, { 0, 0, 1 }, { 1, 2, 1 }, { 0, 3, 1 }, { 1, 3, 1 } });
 }
