@@ -84,7 +84,8 @@ TEST(EndToEnd, LabelMapGivesAClosedMeshSummaryAndReturnParameters)
 
   // Exactly the return parameters the XML declares, in its order.
   std::vector<std::string> declared;
-  for (const cli::ModuleParameter* p : cli::parseModuleDescription(cli::moduleXml()).parameters())
+  const auto description = cli::parseModuleDescription(cli::moduleXml()); // outlives the loop's pointers
+  for (const cli::ModuleParameter* p : description.parameters())
   {
     if (p->isReturnParameter())
     {
