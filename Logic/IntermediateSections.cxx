@@ -40,13 +40,13 @@ Box2 unionBox(const Layer& a, const Layer& b)
   Box2 box{ HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
   for (const Layer* layer : { &a, &b })
     for (const Polygon2& polygon : *layer)
-      for (const Point2& p : polygon)
-      {
-        box.xmin = std::min(box.xmin, p.x);
-        box.ymin = std::min(box.ymin, p.y);
-        box.xmax = std::max(box.xmax, p.x);
-        box.ymax = std::max(box.ymax, p.y);
-      }
+    {
+      if (polygon.empty())
+        continue;
+      const Box2 own = boundingBox(polygon);
+      box = { std::min(box.xmin, own.xmin), std::min(box.ymin, own.ymin), std::max(box.xmax, own.xmax),
+              std::max(box.ymax, own.ymax) };
+    }
   return box;
 }
 
