@@ -3,6 +3,8 @@
 #include "ContourCrossings.h"
 #include "ContourResampling.h"
 #include "ContourSimplification.h"
+#include "ContourSmoothing.h"
+#include "MarchingSquares.h"
 #include "PlanarGeometry.h"
 
 #include "ContourStacks.h"
@@ -10,6 +12,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <random>
 
 using namespace slicemesh;
 using namespace slicemesh::testing;
@@ -43,6 +47,26 @@ double perimeter(const Polygon2& polygon)
   for (std::size_t i = 0; i < polygon.size(); ++i)
     length += distance(polygon[i], polygon[(i + 1) % polygon.size()]);
   return length;
+}
+
+/** The marching-squares contours of a binary image on a 1 mm grid: value -1 (inside) at the nodes
+ *  where inside(x, y) holds, +1 elsewhere, traced at 0 (the midpoints of inside-outside edges, as
+ *  the binary mask's 0.5 level): the voxel staircase. */
+std::vector<Polygon2> staircaseContours(std::size_t nx, std::size_t ny, const std::function<bool(double, double)>& inside)
+{
+  ScalarGrid2 grid;
+  grid.nx = nx;
+  grid.ny = ny;
+  grid.values.resize(nx * ny);
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t i = 0; i < nx; ++i)
+      grid.values[j * nx + i] = inside(static_cast<double>(i), static_cast<double>(j)) ? -1.0 : 1.0;
+  return zeroContours(grid);
+}
+
+double polygonArea(const Polygon2& polygon)
+{
+  return 0.5 * twiceSignedArea(polygon);
 }
 
 } // namespace
@@ -140,4 +164,129 @@ TEST(ContourSimplification, NeverCreatesCrossings)
   ASSERT_EQ(out.slices.size(), 2u);
   EXPECT_TRUE(out.slices[1].contours.empty());
   EXPECT_EQ(meanPointSpacing(ContourStack{ { { 0.0, { rectangle(0, 0, 2, 2) } } }, 1.0 }), 2.0);
+}
+
+TEST(ContourSmoothing, StaircaseCircleComesCloserToTheTrueCircle)
+{
+  // A disk of radius 12.3 mm off the grid's nodes, traced on a 1 mm grid.
+  const double cx = 20.37, cy = 19.21, r = 12.3;
+  const std::vector<Polygon2> traced =
+    staircaseContours(41, 41, [&](double x, double y) { return std::hypot(x - cx, y - cy) < r; });
+  ASSERT_EQ(traced.size(), 1u);
+  auto meanError = [&](const Polygon2& polygon) {
+    double sum = 0.0;
+    for (const Point2& p : polygon)
+      sum += std::abs(std::hypot(p.x - cx, p.y - cy) - r);
+    return sum / static_cast<double>(polygon.size());
+  };
+  ContourSmoothingOptions options;
+  options.iterations = 30;
+  options.maxDisplacement = 0.3;
+  const Polygon2 smoothed = smoothContour(traced[0], options);
+  ASSERT_EQ(smoothed.size(), traced[0].size());
+  const double before = meanError(traced[0]), after = meanError(smoothed);
+  std::printf("mean distance to the circle: traced %.4f mm, smoothed %.4f mm; area %.3f -> %.3f mm^2\n", before, after,
+              polygonArea(traced[0]), polygonArea(smoothed));
+  EXPECT_LT(after, 0.7 * before); // measured: 0.192 -> 0.122 mm
+  // No point moves farther than the bound; the area is kept (restored after the filter).
+  for (std::size_t i = 0; i < smoothed.size(); ++i)
+    EXPECT_LE(distance(smoothed[i], traced[0][i]), 0.3 + 1e-12);
+  EXPECT_NEAR(polygonArea(smoothed), polygonArea(traced[0]), 1e-3 * polygonArea(traced[0]));
+  EXPECT_TRUE(contourCrossings({ smoothed }).empty());
+}
+
+TEST(ContourSmoothing, KeepsTheAreaOfSmallContoursAndTheOrientationOfHoles)
+{
+  ContourSmoothingOptions options;
+  options.iterations = 30;
+  options.maxDisplacement = 0.3;
+  // A single voxel's contour (a diamond of 4 points) and a 2 x 1 voxel one: Taubin's filter alone
+  // shrinks them (their shape is above the pass band); the area is restored.
+  const Polygon2 voxel = { { 0.5, 0.0 }, { 1.0, 0.5 }, { 0.5, 1.0 }, { 0.0, 0.5 } };
+  const Polygon2 pair = { { 0.5, 0.0 }, { 1.5, 0.0 }, { 2.0, 0.5 }, { 1.5, 1.0 }, { 0.5, 1.0 }, { 0.0, 0.5 } };
+  for (const Polygon2& contour : { voxel, pair })
+  {
+    const Polygon2 smoothed = smoothContour(contour, options);
+    std::printf("small contour area %.4f -> %.4f mm^2\n", polygonArea(contour), polygonArea(smoothed));
+    EXPECT_NEAR(polygonArea(smoothed), polygonArea(contour), 0.02 * polygonArea(contour));
+  }
+  // A hole (clockwise) stays clockwise with its area.
+  const Polygon2 hole = circle(0, 0, 5, 60, true);
+  const Polygon2 smoothedHole = smoothContour(hole, options);
+  EXPECT_LT(twiceSignedArea(smoothedHole), 0.0);
+  EXPECT_NEAR(polygonArea(smoothedHole), polygonArea(hole), 1e-3 * std::abs(polygonArea(hole)));
+  // Off, or fewer than 4 points: unchanged.
+  options.iterations = 0;
+  EXPECT_EQ(smoothContour(hole, options).front().x, hole.front().x);
+  options.iterations = 30;
+  const Polygon2 triangle = { { 0, 0 }, { 1, 0 }, { 0, 1 } };
+  EXPECT_EQ(smoothContour(triangle, options)[1].x, 1.0);
+}
+
+TEST(ContourSmoothing, ContoursNeverCrossAfterSmoothing)
+{
+  // Random blobs on a 1 mm grid (voxels touching at corners, one-voxel gaps and necks, holes): the
+  // contours of corner-touching voxels are 0.71 mm apart, so a bound of 0.3 mm alone keeps them
+  // apart; at a bound of 1.5 mm only the safety net does.
+  std::mt19937 random(4);
+  for (int trial = 0; trial < 40; ++trial)
+  {
+    std::vector<char> occupied(30 * 30);
+    std::bernoulli_distribution coin(0.55);
+    for (std::size_t j = 1; j + 1 < 30; ++j)
+      for (std::size_t i = 1; i + 1 < 30; ++i)
+        occupied[j * 30 + i] = coin(random);
+    const std::vector<Polygon2> traced =
+      staircaseContours(30, 30, [&](double x, double y) { return occupied[static_cast<std::size_t>(y) * 30 + static_cast<std::size_t>(x)] != 0; });
+    ASSERT_TRUE(contourCrossings(traced).empty());
+    for (double bound : { 0.3, 1.5 })
+    {
+      ContourSmoothingOptions options;
+      options.iterations = 30;
+      options.maxDisplacement = bound;
+      const std::vector<Polygon2> smoothed = smoothContours(traced, options);
+      ASSERT_EQ(smoothed.size(), traced.size());
+      EXPECT_TRUE(contourCrossings(smoothed).empty()) << "trial " << trial << ", bound " << bound;
+      for (std::size_t c = 0; c < traced.size(); ++c)
+      {
+        ASSERT_EQ(smoothed[c].size(), traced[c].size());
+        for (std::size_t i = 0; i < traced[c].size(); ++i)
+          EXPECT_LE(distance(smoothed[c][i], traced[c][i]), bound + 1e-12);
+        EXPECT_EQ(twiceSignedArea(smoothed[c]) > 0.0, twiceSignedArea(traced[c]) > 0.0);
+
+      }
+    }
+  }
+
+}
+
+TEST(ContourSmoothing, SafetyNetPutsBackContoursThatWouldCross)
+{
+  // A block with a notch 3 voxels wide and an island one voxel wide in the notch, 1 voxel from its
+  // walls: strong smoothing with a loose bound closes the notch onto the island; the net keeps
+  // the block as traced.
+  auto inside = [](double x, double y) {
+    const bool block = x >= 2 && x <= 17 && y >= 2 && y <= 17 && !(x >= 8 && x <= 10 && y >= 10);
+    const bool island = x == 9 && y >= 12 && y <= 16;
+    return block || island;
+  };
+  const std::vector<Polygon2> traced = staircaseContours(20, 20, inside);
+  ASSERT_EQ(traced.size(), 2u);
+  ASSERT_TRUE(contourCrossings(traced).empty());
+  ContourSmoothingOptions options;
+  options.iterations = 300;
+  options.mu = 0.0; // no inflation: plain Laplacian smoothing, which fills the notch
+  options.maxDisplacement = 3.0;
+  std::vector<Polygon2> alone;
+  for (const Polygon2& contour : traced)
+    alone.push_back(smoothContour(contour, options));
+  ASSERT_FALSE(contourCrossings(alone).empty()); // what the net is for
+  const std::vector<Polygon2> smoothed = smoothContours(traced, options);
+  EXPECT_TRUE(contourCrossings(smoothed).empty());
+  // A stack keeps its slices, empty ones included.
+  const ContourStack stack{ { { 0.0, traced }, { 1.0, {} } }, 1.0 };
+  const ContourStack out = smoothContours(stack, options);
+  ASSERT_EQ(out.slices.size(), 2u);
+  EXPECT_EQ(out.slices[0].contours.size(), 2u);
+  EXPECT_TRUE(out.slices[1].contours.empty());
 }
