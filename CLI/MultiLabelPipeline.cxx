@@ -3,7 +3,9 @@
 #include "ColorTable.h"
 #include "ContourExtraction.h"
 #include "LabelIndex.h"
+#include "MeshSnapshot.h"
 #include "NiftiOrientation.h"
+#include "SmallComponentRemoval.h"
 #include "VolumeReader.h"
 
 #include <chrono>
@@ -43,6 +45,15 @@ std::string labelFileName(const LabelColor& entry, int width, const std::string&
   return std::string(value) + "_" + safeFileName(entry.name) + extension;
 }
 
+std::size_t contourPoints(const ContourStack& stack)
+{
+  std::size_t points = 0;
+  for (const Slice& slice : stack.slices)
+    for (const Polygon2& contour : slice.contours)
+      points += contour.size();
+  return points;
+}
+
 void accumulate(MeshValidation& sum, const MeshValidation& v)
 {
   sum.vertices += v.vertices;
@@ -66,6 +77,7 @@ PipelineResult runMultiLabelPipeline(const PipelineSettings& settings, ProgressR
                                      std::vector<LabelMeshOutcome>* outcomes)
 {
   const auto began = Clock::now();
+  StageTimes times;
   namespace fs = std::filesystem;
   const MultiLabelSettings& multi = settings.multiLabel;
   const fs::path output(settings.outputModel);
@@ -81,6 +93,10 @@ PipelineResult runMultiLabelPipeline(const PipelineSettings& settings, ProgressR
       throw PipelineFailure(WriteFailed, "cannot create the output folder '" + multi.outputDirectory +
                                            "': " + error.message());
   }
+  // A picture that cannot be rendered here (no X display) fails the run before any work or file.
+  std::string noSnapshot;
+  if (!settings.snapshotFile.empty() && !snapshotAvailable(&noSnapshot))
+    throw PipelineFailure(WriteFailed, "cannot render snapshot '" + settings.snapshotFile + "': " + noSnapshot);
   ColorTable colors;
   bool haveColors = false;
   if (!multi.colorTable.empty())
@@ -96,6 +112,7 @@ PipelineResult runMultiLabelPipeline(const PipelineSettings& settings, ProgressR
     }
   }
 
+  times.start("Reading");
   progress.start(stageIndex("Reading"));
   ScalarVolume::Pointer volume;
   try
@@ -109,6 +126,7 @@ PipelineResult runMultiLabelPipeline(const PipelineSettings& settings, ProgressR
   if (const auto warning = niftiOrientationWarning(settings.inputVolume, volume))
     std::cerr << "SliceMesh: warning: " << *warning << std::endl;
 
+  times.start("Segmentation");
   progress.start(stageIndex("Segmentation")); // one pass for every label's box
   std::vector<LabelExtent> extents;
   try
@@ -151,7 +169,9 @@ PipelineResult runMultiLabelPipeline(const PipelineSettings& settings, ProgressR
   PipelineResult result;
   result.validation.selfIntersectionChecked = true;
   std::vector<std::string> failures;
+  std::vector<LabelMeshOutcome> labels;
 
+  times.start("Tiling");
   progress.start(stageIndex("Tiling")); // label by label
   for (std::size_t n = 0; n < extents.size(); ++n)
   {
@@ -162,11 +182,36 @@ PipelineResult runMultiLabelPipeline(const PipelineSettings& settings, ProgressR
     outcome.voxels = extent.voxels;
     const LabelColor entry = colors.entry(extent.label);
     outcome.name = entry.name;
+    auto record = [&]
+    {
+      outcome.seconds = secondsSince(labelBegan);
+      labels.push_back(outcome);
+      progress.update(static_cast<double>(n + 1) / static_cast<double>(extents.size()));
+    };
     try
     {
       const MaskVolume::Pointer mask = cropLabelMask(volume, extent);
       if (refinement.any())
         refineMask(mask, refinement);
+      if (settings.minimumComponentVolume > 0.0)
+      {
+        const SmallComponentRemoval removal = removeSmallComponents(mask, settings.minimumComponentVolume);
+        outcome.removedComponents = removal.removedComponents;
+        if (removal.removedComponents == removal.components)
+        {
+          // Specks only: dropped, not a failure (the option asks for exactly this).
+          outcome.dropped = true;
+          std::cerr << "SliceMesh: warning: label " << extent.label << " (" << entry.name << ") dropped: each of its "
+                    << removal.components << " connected components is smaller than the minimum component volume "
+                    << settings.minimumComponentVolume << " mm^3 (the largest is " << removal.largestComponentVolume
+                    << " mm^3)" << std::endl;
+        }
+      }
+      if (outcome.dropped)
+      {
+        record();
+        continue;
+      }
       const ContourStack stack = extractContours(mask);
       const SliceFrame frame = sliceFrameOf(mask);
       ReconstructionOptions options = settings.reconstruction;
@@ -175,6 +220,9 @@ PipelineResult runMultiLabelPipeline(const PipelineSettings& settings, ProgressR
       if (stackMesh.triangles.empty())
         throw Error("the reconstruction produced no triangles");
       outcome.validation = validateMesh(stackMesh);
+      outcome.quality = measureRun(stackMesh, stack);
+      outcome.quality.genus = genusOf(outcome.validation);
+      outcome.contourPoints = contourPoints(stack);
       const TriangleMesh physical = mapToPhysicalSpace(stackMesh, frame, settings.coordinateSystem);
 
       MeshAttributes attributes;
@@ -217,12 +265,18 @@ PipelineResult runMultiLabelPipeline(const PipelineSettings& settings, ProgressR
       failures.push_back(failure.str());
       std::cerr << "SliceMesh: error: " << failures.back() << std::endl;
     }
-    outcome.seconds = secondsSince(labelBegan);
-    if (outcomes)
-      outcomes->push_back(outcome);
-    progress.update(static_cast<double>(n + 1) / static_cast<double>(extents.size()));
+    record();
   }
 
+  if (merged.triangles.empty() && failures.empty())
+  {
+    std::ostringstream message;
+    message << "every label of '" << settings.inputVolume << "' is smaller than the minimum component volume "
+            << settings.minimumComponentVolume << " mm^3; nothing to mesh";
+    throw PipelineFailure(EmptySegmentation, message.str());
+  }
+
+  times.start("Writing");
   progress.start(stageIndex("Writing"));
   if (!merged.triangles.empty())
   {
@@ -235,7 +289,35 @@ PipelineResult runMultiLabelPipeline(const PipelineSettings& settings, ProgressR
       throw PipelineFailure(WriteFailed, e.what());
     }
   }
+  result.quality = combinedQuality(labels, result.validation, merged);
+  if (!settings.snapshotFile.empty() && !merged.triangles.empty())
+  {
+    try
+    {
+      writeSnapshot(merged, mergedAttributes.cellColors, settings.snapshotFile);
+    }
+    catch (const std::exception& e)
+    {
+      throw PipelineFailure(WriteFailed, e.what());
+    }
+  }
   progress.end();
+  result.seconds = secondsSince(began);
+  result.quality.stageSeconds = times.seconds();
+  if (!settings.reportFile.empty())
+  {
+    try
+    {
+      writeQualityReport(settings.reportFile, settings.inputVolume, settings.outputModel, result.validation,
+                         result.quality, result.seconds, labels);
+    }
+    catch (const std::exception& e)
+    {
+      throw PipelineFailure(WriteFailed, e.what());
+    }
+  }
+  if (outcomes)
+    outcomes->insert(outcomes->end(), labels.begin(), labels.end());
   if (!failures.empty())
   {
     std::ostringstream message;
@@ -243,7 +325,6 @@ PipelineResult runMultiLabelPipeline(const PipelineSettings& settings, ProgressR
             << failures.front();
     throw PipelineFailure(MeshingFailed, message.str());
   }
-  result.seconds = secondsSince(began);
   return result;
 }
 

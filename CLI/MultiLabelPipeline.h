@@ -9,20 +9,16 @@
 namespace slicemesh::cli
 {
 
-struct LabelMeshOutcome
-{
-  int label = 0;
-  std::string name;
-  std::string path;             ///< the per-label file, empty when no folder was given
-  MeshValidation validation;    ///< of the label's mesh
-  std::size_t voxels = 0;
-  double seconds = 0.0;
-  std::string error;            ///< why the label failed; empty on success
-};
+/** What happened to one label: its figures, file, and why it failed (QualityReport.h). */
+using LabelMeshOutcome = LabelReport;
 
 /** Runs the labels in increasing order. A label whose meshing throws is reported (error) and
- *  skipped; the others are still written. The returned validation sums the labels' figures
- *  (triangles, volume, defects), so `valid()` holds when every label's mesh is valid. Throws
+ *  skipped; the others are still written. --minimumComponentVolume applies to each label's mask as
+ *  in the single-label path (26-connected components); a label left empty by it is dropped with a
+ *  warning (no file), and the run fails with EmptySegmentation only when every label is dropped.
+ *  The returned validation sums the labels' figures (triangles, volume, defects), so `valid()`
+ *  holds when every label's mesh is valid; the quality is combinedQuality's over the labels. The
+ *  snapshot shows every label's mesh in its colour, the report lists every label. Throws
  *  PipelineFailure as runPipeline does; after writing, MeshingFailed names the failed labels. */
 PipelineResult runMultiLabelPipeline(const PipelineSettings& settings, ProgressReporter& progress,
                                      std::vector<LabelMeshOutcome>* outcomes = nullptr);

@@ -3,6 +3,7 @@
 #include "ContourResampling.h"
 #include "ContourSimplification.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -98,6 +99,38 @@ RunQuality measureRun(const TriangleMesh& stackMesh, const ContourStack& stack)
   return quality;
 }
 
+RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshValidation& summed,
+                           const TriangleMesh& allTriangles)
+{
+  RunQuality combined;
+  combined.shape = measureMeshQuality(allTriangles);
+  combined.genus = genusOf(summed);
+  double points = 0.0;
+  for (const LabelReport& label : labels)
+  {
+    if (!label.meshed())
+      continue;
+    const DirichletEnergy& d = label.quality.dirichlet;
+    combined.dirichlet.energy += d.energy;
+    combined.dirichlet.tilingTriangles += d.tilingTriangles;
+    combined.dirichlet.flipCandidates += d.flipCandidates;
+    combined.dirichlet.loweringFlips += d.loweringFlips;
+    combined.dirichlet.largestDecrease = std::max(combined.dirichlet.largestDecrease, d.largestDecrease);
+    combined.dirichlet.largestRelativeDecrease =
+      std::max(combined.dirichlet.largestRelativeDecrease, d.largestRelativeDecrease);
+    const double weight = static_cast<double>(label.contourPoints);
+    combined.pointSpacing += weight * label.quality.pointSpacing;
+    combined.sliceSpacing += weight * label.quality.sliceSpacing;
+    points += weight;
+  }
+  if (points > 0.0)
+  {
+    combined.pointSpacing /= points;
+    combined.sliceSpacing /= points;
+  }
+  return combined;
+}
+
 std::string qualitySummary(const MeshValidation& v, const RunQuality& q)
 {
   std::ostringstream line;
@@ -126,20 +159,17 @@ std::string qualitySummary(const MeshValidation& v, const RunQuality& q)
   return line.str();
 }
 
-void writeQualityReport(const std::string& path, const std::string& inputVolume, const std::string& outputModel,
-                        const MeshValidation& v, const RunQuality& q, double seconds)
+namespace
 {
-  const std::filesystem::path target(path);
-  const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
-  if (!std::filesystem::is_directory(folder))
-    throw Error("cannot write report '" + path + "': folder '" + folder.string() + "' does not exist");
 
-  std::ostringstream json;
+/** The "mesh", "quality" and "dirichletEnergy" blocks of one mesh, each line after `indent`. */
+void writeMeshBlocks(std::ostream& json, const std::string& indent, const MeshValidation& v, const RunQuality& q)
+{
   auto number = [&](const char* key, double value, bool last = false)
-  { json << "    " << jsonString(key) << ": " << jsonNumber(value) << (last ? "\n" : ",\n"); };
-  auto flag = [&](const char* key, bool value) { json << "    " << jsonString(key) << ": " << (value ? "true" : "false") << ",\n"; };
-  json << "{\n  \"input\": " << jsonString(inputVolume) << ",\n  \"output\": " << jsonString(outputModel) << ",\n";
-  json << "  \"mesh\": {\n";
+  { json << indent << "  " << jsonString(key) << ": " << jsonNumber(value) << (last ? "\n" : ",\n"); };
+  auto flag = [&](const char* key, bool value)
+  { json << indent << "  " << jsonString(key) << ": " << (value ? "true" : "false") << ",\n"; };
+  json << indent << "\"mesh\": {\n";
   number("vertices", static_cast<double>(v.vertices));
   number("triangles", static_cast<double>(v.triangles));
   number("components", static_cast<double>(v.components));
@@ -154,32 +184,73 @@ void writeQualityReport(const std::string& path, const std::string& inputVolume,
   number("nonManifoldVertices", static_cast<double>(v.nonManifoldVertices));
   number("degenerateTriangles", static_cast<double>(v.degenerateTriangles));
   number("eulerCharacteristic", static_cast<double>(v.eulerCharacteristic));
-  json << "    \"genus\": " << (q.genus >= 0 ? std::to_string(q.genus) : std::string("null")) << ",\n";
+  json << indent << "  \"genus\": " << (q.genus >= 0 ? std::to_string(q.genus) : std::string("null")) << ",\n";
   flag("valid", v.valid());
   number("areaMm2", v.area);
   number("volumeMm3", v.volume, true);
-  json << "  },\n  \"quality\": {\n";
+  json << indent << "},\n" << indent << "\"quality\": {\n";
   number("minAngleDegrees", q.shape.minAngleDegrees);
   number("maxAngleDegrees", q.shape.maxAngleDegrees);
   number("percentTrianglesBelow30Degrees", 100.0 * q.shape.fractionBelow30);
   number("percentTrianglesBelow10Degrees", 100.0 * q.shape.fractionBelow10);
-  json << "    \"aspectRatio\": { \"definition\": \"circumradius / (2 inradius), 1 for equilateral\", \"mean\": "
+  json << indent
+       << "  \"aspectRatio\": { \"definition\": \"circumradius / (2 inradius), 1 for equilateral\", \"mean\": "
        << jsonNumber(q.shape.meanAspectRatio) << ", \"median\": " << jsonNumber(q.shape.medianAspectRatio)
        << ", \"p95\": " << jsonNumber(q.shape.p95AspectRatio) << ", \"max\": " << jsonNumber(q.shape.maxAspectRatio)
        << " },\n";
   number("pointSpacingMm", q.pointSpacing);
   number("sliceSpacingMm", q.sliceSpacing);
   number("pointToSliceSpacingRatio", q.sliceSpacing > 0.0 ? q.pointSpacing / q.sliceSpacing : 0.0, true);
-  json << "  },\n  \"dirichletEnergy\": {\n";
+  json << indent << "},\n" << indent << "\"dirichletEnergy\": {\n";
   number("energyMm2", q.dirichlet.energy);
   number("slopedTilingTriangles", static_cast<double>(q.dirichlet.tilingTriangles));
   number("flipCandidates", static_cast<double>(q.dirichlet.flipCandidates));
   number("loweringFlips", static_cast<double>(q.dirichlet.loweringFlips));
   number("largestDecreaseMm2", q.dirichlet.largestDecrease, true);
-  json << "  },\n  \"seconds\": {\n";
+  json << indent << "}";
+}
+
+} // namespace
+
+void writeQualityReport(const std::string& path, const std::string& inputVolume, const std::string& outputModel,
+                        const MeshValidation& v, const RunQuality& q, double seconds,
+                        const std::vector<LabelReport>& labels)
+{
+  const std::filesystem::path target(path);
+  const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
+  if (!std::filesystem::is_directory(folder))
+    throw Error("cannot write report '" + path + "': folder '" + folder.string() + "' does not exist");
+
+  std::ostringstream json;
+  json << "{\n  \"input\": " << jsonString(inputVolume) << ",\n  \"output\": " << jsonString(outputModel) << ",\n";
+  writeMeshBlocks(json, "  ", v, q);
+  json << ",\n  \"seconds\": {\n";
   for (const auto& [stage, s] : q.stageSeconds)
     json << "    " << jsonString(stage) << ": " << jsonNumber(s) << ",\n";
-  json << "    \"total\": " << jsonNumber(seconds) << "\n  }\n}\n";
+  json << "    \"total\": " << jsonNumber(seconds) << "\n  }";
+  if (!labels.empty())
+  {
+    // Failed and dropped labels keep their entry, without mesh blocks.
+    json << ",\n  \"labels\": [";
+    for (std::size_t n = 0; n < labels.size(); ++n)
+    {
+      const LabelReport& label = labels[n];
+      json << (n ? ",\n" : "\n") << "    {\n      \"label\": " << label.label << ",\n      \"name\": "
+           << jsonString(label.name) << ",\n      \"file\": " << (label.path.empty() ? "null" : jsonString(label.path))
+           << ",\n      \"voxels\": " << label.voxels << ",\n      \"removedComponents\": "
+           << label.removedComponents << ",\n      \"dropped\": " << (label.dropped ? "true" : "false")
+           << ",\n      \"seconds\": " << jsonNumber(label.seconds)
+           << ",\n      \"error\": " << (label.error.empty() ? "null" : jsonString(label.error));
+      if (label.meshed())
+      {
+        json << ",\n";
+        writeMeshBlocks(json, "      ", label.validation, label.quality);
+      }
+      json << "\n    }";
+    }
+    json << "\n  ]";
+  }
+  json << "\n}\n";
 
   const std::filesystem::path temporary = folder / ("." + target.filename().string() + ".partial");
   {

@@ -58,10 +58,36 @@ RunQuality measureRun(const TriangleMesh& stackMesh, const ContourStack& stack);
  *  spacing 0.83, Dirichlet 812.3 mm^2; stages Reading 0.01 s, ..." */
 std::string qualitySummary(const MeshValidation& validation, const RunQuality& quality);
 
-/** Writes the report as JSON (atomically: a temporary name, renamed when complete).
+/** The figures of one label of a multi-label run (runMultiLabelPipeline), as the report lists it. */
+struct LabelReport
+{
+  int label = 0;
+  std::string name;
+  std::string path;             ///< the per-label file, empty when no folder was given
+  MeshValidation validation;    ///< of the label's mesh
+  RunQuality quality;           ///< of the label's mesh (no stage times: seconds below)
+  std::size_t voxels = 0;
+  std::size_t contourPoints = 0;     ///< of the label's contours
+  std::size_t removedComponents = 0; ///< components under --minimumComponentVolume, dropped
+  bool dropped = false;         ///< every component was under --minimumComponentVolume: no mesh
+  double seconds = 0.0;
+  std::string error;            ///< why the label failed; empty on success
+  bool meshed() const { return error.empty() && !dropped; }
+};
+
+/** Combines the labels' figures into one for the whole run (their meshes taken together): shape
+ *  measured on `allTriangles` (the merged mesh; angles do not change from stack frame to physical
+ *  space), Dirichlet energies and counts summed (largest decreases: the largest), genus from the
+ *  summed validation, spacings averaged over the labels weighted by their contour points. */
+RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshValidation& summed,
+                           const TriangleMesh& allTriangles);
+
+/** Writes the report as JSON (atomically: a temporary name, renamed when complete); with labels,
+ *  a "labels" array follows, one entry per label with its own mesh, quality and Dirichlet blocks.
  *  Throws slicemesh::Error when it cannot. */
 void writeQualityReport(const std::string& path, const std::string& inputVolume, const std::string& outputModel,
-                        const MeshValidation& validation, const RunQuality& quality, double seconds);
+                        const MeshValidation& validation, const RunQuality& quality, double seconds,
+                        const std::vector<LabelReport>& labels = {});
 
 } // namespace slicemesh::cli
 

@@ -13,9 +13,12 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
+#include <vtkPolyDataNormals.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
 #include <X11/Xlib.h>
@@ -48,7 +51,11 @@ bool snapshotAvailable(std::string* reason)
   return true;
 }
 
-void writeSnapshot(const TriangleMesh& mesh, const std::string& path, const SnapshotOptions& options)
+namespace
+{
+
+/** The checks every snapshot makes before rendering: a display, triangles, a folder. */
+void checkSnapshotTarget(const TriangleMesh& mesh, const std::string& path)
 {
   std::string reason;
   if (!snapshotAvailable(&reason))
@@ -59,7 +66,10 @@ void writeSnapshot(const TriangleMesh& mesh, const std::string& path, const Snap
   const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
   if (!std::filesystem::is_directory(folder))
     throw Error("cannot write snapshot '" + path + "': folder '" + folder.string() + "' does not exist");
+}
 
+vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh)
+{
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
@@ -72,37 +82,16 @@ void writeSnapshot(const TriangleMesh& mesh, const std::string& path, const Snap
     const vtkIdType ids[3] = { t[0], t[1], t[2] };
     cells->InsertNextCell(3, ids);
   }
-  vtkNew<vtkDoubleArray> minAngle;
-  minAngle->SetName("MinAngle");
-  const std::vector<double> angles = triangleMinAngles(mesh);
-  minAngle->SetNumberOfValues(static_cast<vtkIdType>(angles.size()));
-  for (std::size_t i = 0; i < angles.size(); ++i)
-    minAngle->SetValue(static_cast<vtkIdType>(i), angles[i]);
-  vtkNew<vtkPolyData> polyData;
+  auto polyData = vtkSmartPointer<vtkPolyData>::New();
   polyData->SetPoints(points);
   polyData->SetPolys(cells);
-  polyData->GetCellData()->SetScalars(minAngle);
+  return polyData;
+}
 
-  vtkNew<vtkLookupTable> colours;
-  colours->SetHueRange(0.0, 1.0 / 3.0); // red -> yellow -> green
-  colours->SetSaturationRange(0.9, 0.9);
-  colours->SetValueRange(1.0, 1.0);
-  colours->SetNumberOfTableValues(256);
-  colours->SetTableRange(0.0, options.goodAngleDegrees);
-  colours->Build();
-
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(polyData);
-  mapper->SetLookupTable(colours);
-  mapper->SetScalarModeToUseCellData();
-  mapper->SetScalarRange(0.0, options.goodAngleDegrees);
-  mapper->ScalarVisibilityOn();
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->EdgeVisibilityOn();
-  actor->GetProperty()->SetEdgeColor(0.25, 0.25, 0.25);
-  actor->GetProperty()->SetLineWidth(0.5);
-
+/** Renders the actor off screen from the front-right-top, whole in view, on white, and writes the
+ *  PNG atomically (a temporary name in the same folder, renamed when complete). */
+void renderToPng(vtkActor* actor, const std::string& path, const SnapshotOptions& options)
+{
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
   renderer->SetBackground(1.0, 1.0, 1.0);
@@ -125,6 +114,8 @@ void writeSnapshot(const TriangleMesh& mesh, const std::string& path, const Snap
   grab->ReadFrontBufferOff();
   grab->Update();
 
+  const std::filesystem::path target(path);
+  const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
   const std::filesystem::path temporary = folder / ("." + target.filename().string() + ".partial.png");
   vtkNew<vtkPNGWriter> writer;
   writer->SetInputConnection(grab->GetOutputPort());
@@ -143,6 +134,77 @@ void writeSnapshot(const TriangleMesh& mesh, const std::string& path, const Snap
     std::filesystem::remove(temporary, error);
     throw Error("cannot write snapshot '" + path + "': " + error.message());
   }
+}
+
+} // namespace
+
+void writeSnapshot(const TriangleMesh& mesh, const std::string& path, const SnapshotOptions& options)
+{
+  checkSnapshotTarget(mesh, path);
+  const vtkSmartPointer<vtkPolyData> polyData = toPolyData(mesh);
+  vtkNew<vtkDoubleArray> minAngle;
+  minAngle->SetName("MinAngle");
+  const std::vector<double> angles = triangleMinAngles(mesh);
+  minAngle->SetNumberOfValues(static_cast<vtkIdType>(angles.size()));
+  for (std::size_t i = 0; i < angles.size(); ++i)
+    minAngle->SetValue(static_cast<vtkIdType>(i), angles[i]);
+  polyData->GetCellData()->SetScalars(minAngle);
+
+  vtkNew<vtkLookupTable> colours;
+  colours->SetHueRange(0.0, 1.0 / 3.0); // red -> yellow -> green
+  colours->SetSaturationRange(0.9, 0.9);
+  colours->SetValueRange(1.0, 1.0);
+  colours->SetNumberOfTableValues(256);
+  colours->SetTableRange(0.0, options.goodAngleDegrees);
+  colours->Build();
+
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(polyData);
+  mapper->SetLookupTable(colours);
+  mapper->SetScalarModeToUseCellData();
+  mapper->SetScalarRange(0.0, options.goodAngleDegrees);
+  mapper->ScalarVisibilityOn();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->EdgeVisibilityOn();
+  actor->GetProperty()->SetEdgeColor(0.25, 0.25, 0.25);
+  actor->GetProperty()->SetLineWidth(0.5);
+  renderToPng(actor, path, options);
+}
+
+void writeSnapshot(const TriangleMesh& meshes, const std::vector<std::array<unsigned char, 3>>& triangleColors,
+                   const std::string& path, const SnapshotOptions& options)
+{
+  checkSnapshotTarget(meshes, path);
+  if (triangleColors.size() != meshes.triangles.size())
+    throw Error("cannot render snapshot '" + path + "': " + std::to_string(triangleColors.size()) + " colours for " +
+                std::to_string(meshes.triangles.size()) + " triangles");
+  const vtkSmartPointer<vtkPolyData> polyData = toPolyData(meshes);
+  vtkNew<vtkUnsignedCharArray> colours;
+  colours->SetName("Color");
+  colours->SetNumberOfComponents(3);
+  colours->SetNumberOfTuples(static_cast<vtkIdType>(triangleColors.size()));
+  for (std::size_t i = 0; i < triangleColors.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      colours->SetTypedComponent(static_cast<vtkIdType>(i), c, triangleColors[i][c]);
+  polyData->GetCellData()->SetScalars(colours);
+
+  // Vertex normals for smooth shading; the meshes are already outward oriented and share no
+  // vertices, so no reorientation and no splitting at sharp edges beyond the default angle.
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(polyData);
+  normals->ConsistencyOff();
+  normals->AutoOrientNormalsOff();
+  normals->SetFeatureAngle(60.0);
+
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(normals->GetOutputPort());
+  mapper->SetScalarModeToUseCellData();
+  mapper->SetColorModeToDirectScalars();
+  mapper->ScalarVisibilityOn();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  renderToPng(actor, path, options);
 }
 
 } // namespace slicemesh

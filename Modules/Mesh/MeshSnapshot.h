@@ -1,18 +1,21 @@
-// A picture of a mesh: rendered off screen with VTK, coloured by triangle quality, saved as PNG.
+// A picture of a mesh: rendered off screen with VTK, coloured by triangle quality (one mesh) or by
+// structure (several meshes, e.g. the labels of an atlas), saved as PNG.
 #ifndef MeshSnapshot_h
 #define MeshSnapshot_h
 
 #include "SliceMeshTypes.h"
 
+#include <array>
 #include <string>
+#include <vector>
 
 namespace slicemesh
 {
 
 struct SnapshotOptions
 {
-  int width = 1024;
-  int height = 768;
+  int width = 800;
+  int height = 600;
   /** Colour scale of each triangle's smallest angle (degrees): red at 0, through yellow at half of
    *  this, to green at and above it. */
   double goodAngleDegrees = 60.0;
@@ -29,6 +32,14 @@ bool snapshotAvailable(std::string* reason = nullptr);
  *  a temporary name in the same folder, renamed when complete). Throws slicemesh::Error when no
  *  display is available or the file cannot be written. */
 void writeSnapshot(const TriangleMesh& physicalMesh, const std::string& path, const SnapshotOptions& options = {});
+
+/** Several meshes in one picture, each in its own colour: `meshes` holds them merged (each its own
+ *  closed pieces, as the multi-label output model) and `triangleColors` the RGB colour of each
+ *  triangle, its mesh's. Same view, background, size and file handling as above; smooth shading,
+ *  no edges drawn (an atlas has millions of triangles), and `goodAngleDegrees` is not used.
+ *  Throws slicemesh::Error as above, and when there is not one colour per triangle. */
+void writeSnapshot(const TriangleMesh& meshes, const std::vector<std::array<unsigned char, 3>>& triangleColors,
+                   const std::string& path, const SnapshotOptions& options = {});
 
 } // namespace slicemesh
 

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -218,6 +219,176 @@ TEST(EndToEnd, SameInputGivesTheSameFileBitForBit)
   ASSERT_EQ(runSliceMesh(quoted(input.string()) + " " + quoted((folder / "a.obj").string())).exitCode, 0);
   ASSERT_EQ(runSliceMesh(quoted(input.string()) + " " + quoted((folder / "b.obj").string())).exitCode, 0);
   EXPECT_EQ(fileText(folder / "a.obj"), fileText(folder / "b.obj"));
+}
+
+/** The two boxes of twoBoxesLabelMap with one-voxel specks (2 mm^3 each, touching nothing, not
+ *  even at a corner): label 1 gets one, label 2 two, and label 3 is a speck only. */
+fs::path boxesWithSpecksLabelMap(const fs::path& folder)
+{
+  const fs::path path = folder / "boxes-and-specks.mha";
+  writeMetaImage(path, { 16, 16, 10 }, { 1.0, 1.0, 2.0 },
+                 [](int i, int j, int k) -> unsigned char
+                 {
+                   if (i >= 3 && i < 9 && j >= 3 && j < 9 && k >= 2 && k < 6)
+                     return 1;
+                   if (i >= 11 && i < 14 && j >= 3 && j < 7 && k >= 3 && k < 7)
+                     return 2;
+                   if (i == 14 && j == 14 && k == 8)
+                     return 1;
+                   if ((i == 1 && j == 14 && k == 1) || (i == 14 && j == 1 && k == 8))
+                     return 2;
+                   if (i == 1 && j == 1 && k == 8)
+                     return 3;
+                   return 0;
+                 });
+  return path;
+}
+
+/** The text of a multi-label report's entry for one label (from its "label" key to the next). */
+std::string labelEntry(const std::string& report, int label)
+{
+  const std::string key = "\"label\": " + std::to_string(label) + ",";
+  const std::size_t begin = report.find(key);
+  if (begin == std::string::npos)
+    return "";
+  return report.substr(begin, report.find("\"label\": ", begin + key.size()) - begin);
+}
+
+TEST(EndToEnd, MultiLabelDropsComponentsUnderTheMinimumVolume)
+{
+  const fs::path folder = freshFolder("e2e-multilabel-specks");
+  const fs::path input = boxesWithSpecksLabelMap(folder);
+
+  // Without the option every speck is meshed: 2 + 3 + 1 components, label 3 has a file.
+  const RunResult all = runSliceMesh("--outputDirectory " + quoted((folder / "all").string()) + " " +
+                                     quoted(input.string()) + " " + quoted((folder / "all.vtp").string()));
+  ASSERT_EQ(all.exitCode, 0) << all.err;
+  EXPECT_NE(linesOf(all.out).back().find("6 components"), std::string::npos) << linesOf(all.out).back();
+  EXPECT_TRUE(fs::exists(folder / "all" / "003_Label_3.vtp"));
+
+  // With it (10 mm^3: five voxels) the specks go, as in the single-label path: one box per label,
+  // label 3 is dropped with a warning and no file, and the report says what was removed.
+  const fs::path report = folder / "kept.json";
+  const RunResult kept =
+    runSliceMesh("--minimumComponentVolume 10 --report " + quoted(report.string()) + " --outputDirectory " +
+                 quoted((folder / "kept").string()) + " " + quoted(input.string()) + " " +
+                 quoted((folder / "kept.vtp").string()));
+  ASSERT_EQ(kept.exitCode, 0) << kept.err;
+  EXPECT_NE(linesOf(kept.out).back().find("2 components"), std::string::npos) << linesOf(kept.out).back();
+  EXPECT_NE(kept.err.find("label 3 (Label_3) dropped"), std::string::npos) << kept.err;
+  EXPECT_TRUE(fs::exists(folder / "kept" / "001_Label_1.vtp"));
+  EXPECT_TRUE(fs::exists(folder / "kept" / "002_Label_2.vtp"));
+  EXPECT_FALSE(fs::exists(folder / "kept" / "003_Label_3.vtp"));
+  const std::string json = fileText(report);
+  EXPECT_NE(labelEntry(json, 1).find("\"removedComponents\": 1,"), std::string::npos) << labelEntry(json, 1);
+  EXPECT_NE(labelEntry(json, 1).find("\"components\": 1,"), std::string::npos) << labelEntry(json, 1);
+  EXPECT_NE(labelEntry(json, 2).find("\"removedComponents\": 2,"), std::string::npos) << labelEntry(json, 2);
+  EXPECT_NE(labelEntry(json, 3).find("\"dropped\": true"), std::string::npos) << labelEntry(json, 3);
+  EXPECT_EQ(labelEntry(json, 3).find("\"mesh\""), std::string::npos) << labelEntry(json, 3);
+
+  // When the option removes every label there is nothing to mesh: exit 4, nothing written.
+  const fs::path output = folder / "none.vtp";
+  const RunResult none = runSliceMesh("--minimumComponentVolume 1000 --outputDirectory " +
+                                      quoted((folder / "none").string()) + " " + quoted(input.string()) + " " +
+                                      quoted(output.string()));
+  EXPECT_EQ(none.exitCode, emptySegmentation) << none.err;
+  EXPECT_FALSE(fs::exists(output));
+  EXPECT_TRUE(fs::is_empty(folder / "none"));
+}
+
+/** A number that follows `"key": ` in a JSON text (the first occurrence after `from`); NaN if none. */
+double jsonNumberAfter(const std::string& json, const std::string& key, std::size_t from = 0)
+{
+  const std::size_t at = json.find("\"" + key + "\": ", from);
+  return at == std::string::npos ? std::nan("") : std::stod(json.substr(at + key.size() + 4));
+}
+
+TEST(EndToEnd, MultiLabelSummaryAndReportCarryRealQuality)
+{
+  const fs::path folder = freshFolder("e2e-multilabel-quality");
+  const fs::path report = folder / "quality.json";
+  // Label 1 a stepped pyramid (each slice one voxel smaller all round: sloped tilings, a non-zero
+  // Dirichlet energy), label 2 a box (vertical walls only: zero energy).
+  const fs::path input = folder / "pyramid-and-box.mha";
+  writeMetaImage(input, { 16, 16, 10 }, { 1.0, 1.0, 2.0 },
+                 [](int i, int j, int k) -> unsigned char
+                 {
+                   const int s = k - 2;
+                   if (k >= 2 && k < 5 && i >= 2 + s && i < 10 - s && j >= 2 + s && j < 10 - s)
+                     return 1;
+                   if (i >= 11 && i < 14 && j >= 3 && j < 7 && k >= 3 && k < 7)
+                     return 2;
+                   return 0;
+                 });
+  const RunResult r = runSliceMesh("--splitLabels --report " + quoted(report.string()) + " " + quoted(input.string()) +
+                                   " " + quoted((folder / "labels.vtp").string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string summary = linesOf(r.out).back();
+  // Two solids: genus 0 each, angles of real triangles, 1 mm points on 2 mm slices.
+  EXPECT_NE(summary.find("2 components"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("genus 0,"), std::string::npos) << summary;
+  EXPECT_EQ(summary.find("min angle 0.0 deg"), std::string::npos) << summary;
+  EXPECT_EQ(summary.find("point/slice spacing 0.00"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("stages Reading"), std::string::npos) << summary;
+
+  const std::string json = fileText(report);
+  const std::string first = labelEntry(json, 1), second = labelEntry(json, 2);
+  ASSERT_FALSE(first.empty()) << json;
+  ASSERT_FALSE(second.empty()) << json;
+  // The whole run: the smallest angle is the smaller of the labels', the energy their sum, the
+  // spacing ratio between theirs, the volume their sum.
+  const double minAngle1 = jsonNumberAfter(first, "minAngleDegrees"), minAngle2 = jsonNumberAfter(second, "minAngleDegrees");
+  EXPECT_GT(minAngle1, 0.0);
+  EXPECT_GT(minAngle2, 0.0);
+  EXPECT_DOUBLE_EQ(jsonNumberAfter(json, "minAngleDegrees"), std::min(minAngle1, minAngle2));
+  EXPECT_NEAR(jsonNumberAfter(json, "energyMm2"),
+              jsonNumberAfter(first, "energyMm2") + jsonNumberAfter(second, "energyMm2"), 1e-6);
+  EXPECT_GT(jsonNumberAfter(first, "energyMm2"), 0.0);
+  EXPECT_EQ(jsonNumberAfter(second, "energyMm2"), 0.0);
+  const double ratio = jsonNumberAfter(json, "pointToSliceSpacingRatio");
+  EXPECT_GT(ratio, 0.3);
+  EXPECT_LE(ratio, std::max(jsonNumberAfter(first, "pointToSliceSpacingRatio"),
+                            jsonNumberAfter(second, "pointToSliceSpacingRatio")) + 1e-9);
+  EXPECT_EQ(jsonNumberAfter(json, "genus"), 0.0);
+  EXPECT_NEAR(jsonNumberAfter(second, "volumeMm3"), expectedBoxVolume(3, 4, 4, 2.0), 0.05 * 96.0);
+  EXPECT_NEAR(jsonNumberAfter(json, "volumeMm3"),
+              jsonNumberAfter(first, "volumeMm3") + jsonNumberAfter(second, "volumeMm3"), 1e-6);
+}
+
+TEST(EndToEnd, MultiLabelSnapshotShowsEveryLabel)
+{
+  // The picture needs an X display: a virtual one from xvfb-run (package xvfb, in the installer).
+  if (runCommand("command -v xvfb-run").exitCode != 0)
+    GTEST_SKIP() << "xvfb-run is not installed";
+  const fs::path folder = freshFolder("e2e-multilabel-snapshot");
+  const fs::path png = folder / "labels.png";
+  const RunResult r =
+    runCommand("xvfb-run -a " + quoted(SLICEMESH_EXECUTABLE) + " --splitLabels --snapshot " + quoted(png.string()) +
+               " " + quoted(twoBoxesLabelMap(folder).string()) + " " + quoted((folder / "boxes.vtp").string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_TRUE(fs::exists(png));
+  // A PNG of the default size: the signature, then the IHDR chunk's big-endian width and height.
+  const std::string bytes = fileText(png);
+  ASSERT_GT(bytes.size(), 24u);
+  EXPECT_EQ(bytes.substr(1, 3), "PNG");
+  auto bigEndian = [&](std::size_t at)
+  {
+    unsigned value = 0;
+    for (std::size_t n = 0; n < 4; ++n)
+      value = (value << 8) | static_cast<unsigned char>(bytes[at + n]);
+    return value;
+  };
+  EXPECT_EQ(bigEndian(16), 800u);
+  EXPECT_EQ(bigEndian(20), 600u);
+
+  // Without a display the run fails at once, writing nothing.
+  const fs::path output = folder / "no-display.vtp";
+  const RunResult noDisplay = runCommand("env -u DISPLAY " + quoted(SLICEMESH_EXECUTABLE) + " --splitLabels --snapshot " +
+                                         quoted((folder / "no.png").string()) + " " +
+                                         quoted((folder / "two-boxes.mha").string()) + " " + quoted(output.string()));
+  EXPECT_EQ(noDisplay.exitCode, 6) << noDisplay.err;
+  EXPECT_FALSE(fs::exists(output));
+  EXPECT_FALSE(fs::exists(folder / "no.png"));
 }
 
 } // namespace

@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
@@ -177,4 +179,48 @@ TEST(MeshSnapshot, FailsWithAOneLineErrorAndNoFile)
   EXPECT_THROW(writeSnapshot(uvSphere(8, 8), "/nonexistent-folder/x.png"), Error);
   EXPECT_THROW(writeSnapshot(TriangleMesh{}, (fs::path(SLICEMESH_TEST_OUTPUT_DIR) / "empty.png").string()), Error);
   EXPECT_FALSE(fs::exists(fs::path(SLICEMESH_TEST_OUTPUT_DIR) / "empty.png"));
+}
+
+TEST(MeshSnapshot, SeveralMeshesEachInItsColour)
+{
+  std::string reason;
+  if (!snapshotAvailable(&reason))
+    GTEST_SKIP() << "no X display and no Xvfb could be started: " << reason;
+  const fs::path folder = fs::path(SLICEMESH_TEST_OUTPUT_DIR) / "snapshot";
+  fs::create_directories(folder);
+  const fs::path png = folder / "two-labels.png";
+  fs::remove(png);
+  SnapshotOptions options;
+  options.width = 320;
+  options.height = 240;
+  // Two spheres side by side, as two labels merged: the left one blue, the right one red.
+  TriangleMesh meshes = uvSphere(16, 24);
+  const std::size_t first = meshes.triangles.size();
+  appendUvSphere(meshes, 16, 24, 25.0);
+  std::vector<std::array<unsigned char, 3>> colours(meshes.triangles.size(), { 200, 30, 30 });
+  std::fill(colours.begin(), colours.begin() + static_cast<std::ptrdiff_t>(first), std::array<unsigned char, 3>{ 30, 30, 200 });
+  EXPECT_THROW(writeSnapshot(meshes, std::vector<std::array<unsigned char, 3>>(first), png.string(), options), Error);
+  EXPECT_FALSE(fs::exists(png));
+  writeSnapshot(meshes, colours, png.string(), options);
+  ASSERT_TRUE(fs::exists(png));
+
+  vtkNew<vtkPNGReader> reader;
+  reader->SetFileName(png.string().c_str());
+  reader->Update();
+  vtkDataArray* pixels = reader->GetOutput()->GetPointData()->GetScalars();
+  ASSERT_NE(pixels, nullptr);
+  // Both colours are drawn, each over a good part of the picture, and nothing is green (no quality
+  // colouring). Shading darkens a colour but keeps its dominant channel.
+  std::size_t reddish = 0, bluish = 0, greenish = 0;
+  for (vtkIdType i = 0; i < pixels->GetNumberOfTuples(); ++i)
+  {
+    const double r = pixels->GetComponent(i, 0), g = pixels->GetComponent(i, 1), b = pixels->GetComponent(i, 2);
+    reddish += r > g + 40 && r > b + 40;
+    bluish += b > r + 40 && b > g + 40;
+    greenish += g > r + 40 && g > b + 40;
+  }
+  std::printf("two labels: %zu red, %zu blue, %zu green pixels\n", reddish, bluish, greenish);
+  EXPECT_GT(reddish, 2000u);
+  EXPECT_GT(bluish, 2000u);
+  EXPECT_EQ(greenish, 0u);
 }
