@@ -114,6 +114,22 @@ double minAngle3(const Point3& a, const Point3& b, const Point3& c)
   return std::min({ angle(a, b, c), angle(b, c, a), angle(c, a, b) });
 }
 
+/** The finite edges, each once, in an order that depends only on the triangulation. CGAL's edge
+ *  iterator reports an edge from whichever of its two faces lies at the lower address, so its
+ *  order (and the face an edge is seen from) changed from run to run with the heap's layout; the
+ *  order of flips and Steiner points, and so the mesh, changed with it. Here an edge is seen from
+ *  the face in which it runs from the lower vertex id to the higher one (or from its only finite face). */
+std::vector<CDT::Edge> finiteEdgesInStableOrder(const CDT& cdt)
+{
+  std::vector<CDT::Edge> edges;
+  edges.reserve(3 * cdt.number_of_faces());
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    for (int i = 0; i < 3; ++i)
+      if (cdt.is_infinite(f->neighbor(i)) || f->vertex(CDT::cw(i))->info() < f->vertex(CDT::ccw(i))->info())
+        edges.emplace_back(f, i);
+  return edges;
+}
+
 } // namespace
 
 struct SlabOverlay::Impl
@@ -591,10 +607,10 @@ std::size_t SlabOverlay::Impl::liftFlatChords(MeshBuilder& mesh)
           splits.push_back({ 0.5 * (s.vertex->point().x() + w->point().x()),
                              0.5 * (s.vertex->point().y() + w->point().y()) });
     }
-    for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
+    for (const CDT::Edge& e : finiteEdgesInStableOrder(cdt))
     {
-      FaceHandle f = e->first;
-      const int i = e->second;
+      FaceHandle f = e.first;
+      const int i = e.second;
       if (f->is_constrained(i))
         continue;
       if (!needsLiftedChords(f))
@@ -602,7 +618,7 @@ std::size_t SlabOverlay::Impl::liftFlatChords(MeshBuilder& mesh)
       if (cdt.is_infinite(f) || !needsLiftedChords(f))
         continue;
       // The edge's two ends, with their levels in face f (both faces of a chord agree on them).
-      VertexHandle a = e->first->vertex(CDT::cw(i)), b = e->first->vertex(CDT::ccw(i));
+      VertexHandle a = e.first->vertex(CDT::cw(i)), b = e.first->vertex(CDT::ccw(i));
       auto levelIn = [&](VertexHandle v) -> Level {
         const OverlayVertex& ov = vertices[v->info()];
         if (ov.isSteiner())
@@ -1056,9 +1072,9 @@ std::size_t SlabOverlay::Impl::flipTowardsSurfaceQuality(const MeshBuilder& mesh
     return after > before + 1e-9;
   };
   std::vector<std::pair<VertexHandle, VertexHandle>> queue;
-  for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
-    if (!e->first->is_constrained(e->second) && isDifference(e->first))
-      queue.emplace_back(e->first->vertex(CDT::cw(e->second)), e->first->vertex(CDT::ccw(e->second)));
+  for (const CDT::Edge& e : finiteEdgesInStableOrder(cdt))
+    if (!e.first->is_constrained(e.second) && isDifference(e.first))
+      queue.emplace_back(e.first->vertex(CDT::cw(e.second)), e.first->vertex(CDT::ccw(e.second)));
   std::size_t flips = 0;
   const std::size_t limit = 20 * queue.size() + 100;
   while (!queue.empty() && flips < limit)

@@ -6,9 +6,26 @@
 
 #include <cmath>
 #include <functional>
+#include <random>
 
 namespace slicemesh::testing
 {
+
+/** A random star-shaped contour of n points around (cx, cy): radius modulated by random second and
+ *  third harmonics of up to a quarter of it, so neighbouring slices cross each other everywhere. */
+inline Polygon2 randomStar(std::mt19937& rng, double cx, double cy, double radius, int n, bool clockwise)
+{
+  std::uniform_real_distribution<double> amplitude(0.0, 0.25), phase(0.0, 2 * M_PI);
+  const double a2 = amplitude(rng), a3 = amplitude(rng), p2 = phase(rng), p3 = phase(rng), p0 = phase(rng);
+  Polygon2 polygon;
+  for (int i = 0; i < n; ++i)
+  {
+    const double t = p0 + 2 * M_PI * i / n * (clockwise ? -1 : 1);
+    const double r = radius * (1.0 + a2 * std::sin(2 * t + p2) + a3 * std::sin(3 * t + p3));
+    polygon.push_back({ cx + r * std::cos(t), cy + r * std::sin(t) });
+  }
+  return polygon;
+}
 
 /** A circle of n points, counter-clockwise unless reversed. */
 inline Polygon2 circle(double cx, double cy, double r, int n, bool clockwise = false, double phase = 0.0)

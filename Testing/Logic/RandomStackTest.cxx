@@ -6,28 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include <random>
-
 using namespace slicemesh;
-
-namespace
-{
-
-Polygon2 randomStar(std::mt19937& rng, double cx, double cy, double radius, int n, bool clockwise)
-{
-  std::uniform_real_distribution<double> amplitude(0.0, 0.25), phase(0.0, 2 * M_PI);
-  const double a2 = amplitude(rng), a3 = amplitude(rng), p2 = phase(rng), p3 = phase(rng), p0 = phase(rng);
-  Polygon2 polygon;
-  for (int i = 0; i < n; ++i)
-  {
-    const double t = p0 + 2 * M_PI * i / n * (clockwise ? -1 : 1);
-    const double r = radius * (1.0 + a2 * std::sin(2 * t + p2) + a3 * std::sin(3 * t + p3));
-    polygon.push_back({ cx + r * std::cos(t), cy + r * std::sin(t) });
-  }
-  return polygon;
-}
-
-} // namespace
+using slicemesh::testing::randomStar;
 
 class RandomStack : public ::testing::TestWithParam<int>
 {

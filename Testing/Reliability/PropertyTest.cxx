@@ -28,11 +28,11 @@ std::uint64_t environmentNumber(const char* name, std::uint64_t fallback)
 
 /** Seeds on which the Logic of commit 24484fa fails (self-intersections where pieces touch across
  *  thick slices), reported to the Logic owner with minimal masks: see KnownLogicFailuresTest.cxx.
- *  Seed 3048 passes or fails from run to run: the Logic's result depends on memory addresses (it is
- *  the same in every run with ASLR off, `setarch -R`), so another seed may flip now and then too.
+ *  (Seed 3048 used to pass or fail from run to run: the tiling followed CGAL's address-ordered edge
+ *  iteration. Fixed; Testing/Logic/DeterminismTest.cxx guards it.)
  *  They are meshed and reported, but do not fail the default run; SLICEMESH_PROPERTY_STRICT=1
  *  counts them. Remove a seed once it passes (the run says so). */
-const std::uint64_t knownLogicFailures[] = { 2060, 3048 };
+const std::uint64_t knownLogicFailures[] = { 2060 };
 /** Seeds on which reconstructSurface did not return (over 20 s on a 16^3 mask) at 25f8b8a; they pass
  *  at 24484fa. Skipped unless SLICEMESH_PROPERTY_STRICT=1; 0 is a placeholder, never a seed here. */
 const std::uint64_t knownLogicHangs[] = { 0 };
