@@ -39,6 +39,12 @@ struct UndersamplingOptions
   /** 0: off. Otherwise slabs thicker than this factor times the in-plane spacing (the median contour
    *  edge length of the stack) get evenly spaced sections until they are not. */
   double maxSliceSpacingFactor = 0.0;
+  /** Bridged slabs get sections until consecutive layers of every group overlap by at least this
+   *  share of the smaller region. The paper asks only that they overlap (0), but the tiling between
+   *  partly overlapping contours loses volume, the more so the smaller the overlap (measured for an
+   *  ellipse 5.85 x 2 mm sliding along its long axis, mean area across the slab: overlap 0.38 -23%,
+   *  0.57 -11%, 0.78 -3%, 0.89 -1%). */
+  double sectionOverlap = 0.8;
   /** Most sections inserted into one slab. */
   std::size_t maxSectionsPerSlab = 16;
   /** The budget of centres per fit (see ContourConstraints.h). */
@@ -54,6 +60,7 @@ struct SectionStatistics
   std::size_t bridgesFailed = 0;     ///< slabs whose distance-only pairs could not be joined within the cap
   std::size_t slabsRejected = 0;     ///< slabs whose sections changed the topology and were dropped
   std::size_t sectionsInserted = 0;
+  double smallestBridgeOverlap = 1.0; ///< least overlap share of consecutive layers in bridged slabs
   std::size_t largestFit = 0;        ///< centres in the largest fit
   double fitSeconds = 0.0;           ///< building and solving the implicit functions
   double extractSeconds = 0.0;       ///< evaluating grids and extracting and checking sections

@@ -60,6 +60,72 @@ std::size_t contourCount(const ContourStack& stack, std::size_t slice)
   return stack.slices[slice].contours.size();
 }
 
+/** An ellipse with semi-axes a (along x) and b, centred at (cx, 0), n points counter-clockwise. */
+Polygon2 ellipse(double cx, double a, double b, int n)
+{
+  Polygon2 polygon;
+  for (int i = 0; i < n; ++i)
+  {
+    const double t = 2.0 * M_PI * i / n;
+    polygon.push_back({ cx + a * std::cos(t), b * std::sin(t) });
+  }
+  return polygon;
+}
+
+double regionArea(const std::vector<Polygon2>& contours)
+{
+  double twice = 0.0;
+  for (const Polygon2& c : contours)
+    twice += twiceSignedArea(c);
+  return 0.5 * std::abs(twice);
+}
+
+/** Share of the smaller region that the other covers, counted on a grid of 0.02 mm (independent of
+ *  the scanline measure the Logic uses). One contour per layer. */
+double overlapShare(const Polygon2& a, const Polygon2& b)
+{
+  const Box2 ba = boundingBox(a), bb = boundingBox(b);
+  const double x0 = std::max(ba.xmin, bb.xmin), x1 = std::min(ba.xmax, bb.xmax);
+  const double y0 = std::max(ba.ymin, bb.ymin), y1 = std::min(ba.ymax, bb.ymax);
+  const double h = 0.02;
+  double both = 0.0;
+  for (double x = x0 + 0.5 * h; x < x1; x += h)
+    for (double y = y0 + 0.5 * h; y < y1; y += h)
+      both += isInside(a, { x, y }) && isInside(b, { x, y }) ? h * h : 0.0;
+  return both / std::min(regionArea({ a }), regionArea({ b }));
+}
+
+/** Area of the mesh's cross-section by the plane z (a closed, outward-wound mesh): each triangle the
+ *  plane cuts adds its segment, directed with the solid on its left, to the shoelace sum. */
+double crossSectionArea(const TriangleMesh& mesh, double z)
+{
+  double twice = 0.0;
+  for (const Triangle& t : mesh.triangles)
+  {
+    const Point3* p[3] = { &mesh.points[t[0]], &mesh.points[t[1]], &mesh.points[t[2]] };
+    std::vector<Point2> cut;
+    for (int i = 0; i < 3; ++i)
+    {
+      const Point3 &u = *p[i], &v = *p[(i + 1) % 3];
+      if ((u.z < z) != (v.z < z))
+      {
+        const double s = (z - u.z) / (v.z - u.z);
+        cut.push_back({ u.x + s * (v.x - u.x), u.y + s * (v.y - u.y) });
+      }
+    }
+    if (cut.size() != 2)
+      continue;
+    // Outward normal n: the section's boundary runs along (-n.y, n.x) (counter-clockwise seen from +z).
+    const double ux = p[1]->x - p[0]->x, uy = p[1]->y - p[0]->y, uz = p[1]->z - p[0]->z;
+    const double vx = p[2]->x - p[0]->x, vy = p[2]->y - p[0]->y, vz = p[2]->z - p[0]->z;
+    const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz;
+    if ((cut[1].x - cut[0].x) * -ny + (cut[1].y - cut[0].y) * nx < 0.0)
+      std::swap(cut[0], cut[1]);
+    twice += cut[0].x * cut[1].y - cut[1].x * cut[0].y;
+  }
+  return 0.5 * twice;
+}
+
 } // namespace
 
 TEST(IntermediateSections, NothingAskedNothingChanged)
@@ -209,4 +275,57 @@ TEST(IntermediateSections, TwoTubesDriftingApartAreBridgedSeparately)
   const MeshValidation v = validateMesh(reconstructSurface(bridged));
   EXPECT_TRUE(v.valid()) << v.summary();
   EXPECT_EQ(v.components, 2u);
+}
+
+TEST(IntermediateSections, BridgedSectionsKeepTheAreaAndOverlapEnough)
+{
+  // A sheared elliptic prism (the tilted capsule of the pipeline test): ellipses 5.85 x 2 mm whose
+  // centres move 13.7 mm along their long axis per 5 mm slice, so consecutive slices do not overlap.
+  // Every cross-section of the true solid is the same ellipse, so every section should have its area,
+  // consecutive layers should overlap by the asked share, and the mesh between the slices should keep
+  // the area (the tiling loses volume where consecutive contours overlap only in part).
+  const double a = 5.85, b = 2.0, shift = 13.7, dz = 5.0;
+  for (const int slices : { 2, 4 }) // 2: each fit sees the slab's two slices only
+  {
+    ContourStack stack;
+    stack.sliceSpacing = dz;
+    for (int k = 0; k < slices; ++k)
+      stack.slices.push_back({ k * dz, { ellipse(k * shift, a, b, 64) } });
+    const double area = regionArea(stack.slices[0].contours);
+    UndersamplingOptions options;
+    options.correspondenceDistance = 3.0;
+    options.bridgeNonOverlapping = true;
+    SectionStatistics statistics;
+    const ContourStack bridged = insertIntermediateSections(stack, options, &statistics);
+    EXPECT_EQ(statistics.slabsBridged, static_cast<std::size_t>(slices - 1));
+    EXPECT_GE(statistics.smallestBridgeOverlap, options.sectionOverlap);
+    std::cout << "[ sections ] sheared ellipse, " << slices << " slices: " << statistics.sectionsInserted
+              << " sections, least overlap " << statistics.smallestBridgeOverlap << "\n";
+    double worstArea = 0.0, leastOverlap = 1.0;
+    for (std::size_t k = 0; k < bridged.slices.size(); ++k)
+    {
+      ASSERT_EQ(contourCount(bridged, k), 1u) << "z " << bridged.slices[k].z;
+      worstArea = std::max(worstArea, std::abs(regionArea(bridged.slices[k].contours) / area - 1.0));
+      if (k > 0)
+        leastOverlap = std::min(leastOverlap, overlapShare(bridged.slices[k - 1].contours[0], bridged.slices[k].contours[0]));
+    }
+    std::cout << "[ sections ] worst section area " << 100.0 * worstArea << "%, least overlap (grid) " << leastOverlap
+              << "\n";
+    EXPECT_LT(worstArea, 0.03) << "sections should keep the prism's cross-section area";
+    EXPECT_GE(leastOverlap, options.sectionOverlap - 0.02);
+
+    const TriangleMesh mesh = reconstructSurface(bridged);
+    const MeshValidation v = validateMesh(mesh);
+    EXPECT_TRUE(v.valid()) << v.summary();
+    EXPECT_EQ(v.components, 1u);
+    // Mean cross-section area between the first and last slice, against the ellipse's.
+    double sum = 0.0;
+    const int samples = 40 * (slices - 1);
+    for (int i = 0; i < samples; ++i)
+      sum += crossSectionArea(mesh, (i + 0.5) * dz * (slices - 1) / samples);
+    const double kept = sum / samples / area;
+    std::cout << "[ sections ] mesh cross-sections between the slices: " << 100.0 * kept << "% of the area\n";
+    EXPECT_GT(kept, 0.95);
+    EXPECT_LT(kept, 1.02);
+  }
 }
