@@ -1071,10 +1071,21 @@ std::size_t SlabOverlay::Impl::flipTowardsSurfaceQuality(const MeshBuilder& mesh
     const double after = std::min(minAngle3(A, B, Q), minAngle3(B, A, P));
     return after > before + 1e-9;
   };
-  std::vector<std::pair<VertexHandle, VertexHandle>> queue;
+  // The worst triangles' edges are taken first (the queue pops from the back): the flips then settle
+  // in a better local optimum than in mesh order.
+  std::vector<std::pair<double, CDT::Edge>> ranked;
   for (const CDT::Edge& e : finiteEdgesInStableOrder(cdt))
-    if (!e.first->is_constrained(e.second) && isDifference(e.first))
-      queue.emplace_back(e.first->vertex(CDT::cw(e.second)), e.first->vertex(CDT::ccw(e.second)));
+    if (!e.first->is_constrained(e.second) && isDifference(e.first) && !cdt.is_infinite(e.first->neighbor(e.second)))
+    {
+      const FaceHandle f = e.first, g = f->neighbor(e.second);
+      const double worst = std::min(minAngle3(lifted(f->vertex(0)), lifted(f->vertex(1)), lifted(f->vertex(2))),
+                                    minAngle3(lifted(g->vertex(0)), lifted(g->vertex(1)), lifted(g->vertex(2))));
+      ranked.emplace_back(worst, e);
+    }
+  std::stable_sort(ranked.begin(), ranked.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+  std::vector<std::pair<VertexHandle, VertexHandle>> queue;
+  for (const auto& [worst, e] : ranked)
+    queue.emplace_back(e.first->vertex(CDT::cw(e.second)), e.first->vertex(CDT::ccw(e.second)));
   std::size_t flips = 0;
   const std::size_t limit = 20 * queue.size() + 100;
   while (!queue.empty() && flips < limit)
