@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <functional>
 #include <map>
 #include <sstream>
 #include <unordered_map>
@@ -132,6 +133,11 @@ std::vector<CDT::Edge> finiteEdgesInStableOrder(const CDT& cdt)
 
 } // namespace
 
+namespace
+{
+class SpacingGrid;
+} // namespace
+
 struct SlabOverlay::Impl
 {
   const PreparedSlice* lower = nullptr;
@@ -203,6 +209,12 @@ struct SlabOverlay::Impl
    *  are slivers. */
   double optionalClearance() const { return 0.1 * typicalEdge; }
   std::size_t addRows(MeshBuilder& mesh, double edgeLength);
+  /** The lifted corners of the difference faces: new Steiner points keep their distance from them. */
+  void addLiftedCorners(SpacingGrid& placed, const MeshBuilder& mesh) const;
+  /** Inserts each candidate (point, height) whose face `accepts` takes, with the optional clearance;
+   *  classifies the faces again if any went in. */
+  std::size_t insertCandidates(const std::vector<std::pair<Point2, double>>& candidates, MeshBuilder& mesh,
+                               const std::function<bool(FaceHandle)>& accepts);
   std::size_t refineBadTriangles(MeshBuilder& mesh, double minAngle, double edgeLength, std::size_t budget);
   std::size_t flipTowardsSurfaceQuality(const MeshBuilder& mesh);
   std::vector<std::int32_t> wallChain(int vertex, std::map<int, std::vector<std::int32_t>>& chains, int rows,
@@ -852,10 +864,7 @@ std::size_t SlabOverlay::Impl::addCapRows(MeshBuilder& mesh, double edgeLength)
   // Rows of Steiner points parallel to each domed cap's contour, an edge length apart in 3D, so the
   // dome's rounded rim is tiled by well-shaped triangles; the flat top is filled by refinement.
   SpacingGrid placed(edgeLength);
-  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
-    if (isDifference(f))
-      for (int i = 0; i < 3; ++i)
-        placed.add(approximateLift(f, i, mesh));
+  addLiftedCorners(placed, mesh);
   std::vector<std::pair<Point2, double>> candidates;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
   {
@@ -907,12 +916,7 @@ std::size_t SlabOverlay::Impl::addCapRows(MeshBuilder& mesh, double edgeLength)
       candidates.emplace_back(p, z);
     }
   }
-  std::size_t inserted = 0;
-  for (const auto& [p, z] : candidates)
-    inserted += insertSteiner(p, z, mesh, optionalClearance());
-  if (inserted > 0)
-    classify();
-  return inserted;
+  return insertCandidates(candidates, mesh, [&](FaceHandle f) { return isCapFace(f); });
 }
 
 std::size_t SlabOverlay::Impl::addRows(MeshBuilder& mesh, double edgeLength)
@@ -922,10 +926,7 @@ std::size_t SlabOverlay::Impl::addRows(MeshBuilder& mesh, double edgeLength)
   // in 3D (a 1 mm contour spacing under 3 mm slices would otherwise give slivers only).
   const double dz = z1 - z0;
   SpacingGrid placed(edgeLength);
-  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
-    if (isDifference(f))
-      for (int i = 0; i < 3; ++i)
-        placed.add(approximateLift(f, i, mesh));
+  addLiftedCorners(placed, mesh);
   // Columns start from the contour vertices of one slice only, the one with more of them, so the
   // rows line up: the planar Delaunay triangulation of aligned rows is well shaped in 3D even where
   // the slope compresses the rows in projection; staggered rows from both sides are not.
@@ -965,13 +966,27 @@ std::size_t SlabOverlay::Impl::addRows(MeshBuilder& mesh, double edgeLength)
       candidates.emplace_back(p, z);
     }
   }
+  return insertCandidates(candidates, mesh, [&](FaceHandle f) { return inMixed(f); });
+}
+
+void SlabOverlay::Impl::addLiftedCorners(SpacingGrid& placed, const MeshBuilder& mesh) const
+{
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if (isDifference(f))
+      for (int i = 0; i < 3; ++i)
+        placed.add(approximateLift(f, i, mesh));
+}
+
+std::size_t SlabOverlay::Impl::insertCandidates(const std::vector<std::pair<Point2, double>>& candidates,
+                                                MeshBuilder& mesh, const std::function<bool(FaceHandle)>& accepts)
+{
   std::size_t inserted = 0;
   for (const auto& [p, z] : candidates)
   {
     CDT::Locate_type type;
     int index = 0;
     FaceHandle f = cdt.locate(Kernel::Point_2(p.x, p.y), type, index);
-    if (type != CDT::VERTEX && !cdt.is_infinite(f) && inMixed(f))
+    if (type != CDT::VERTEX && !cdt.is_infinite(f) && accepts(f))
       inserted += insertSteiner(p, z, mesh, optionalClearance());
   }
   if (inserted > 0)
