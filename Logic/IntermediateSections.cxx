@@ -311,18 +311,28 @@ Layer sectionOf(const ShearedFit& fit, double z, double s, double h)
   return layer;
 }
 
-/** The smallest share of the smaller region by which consecutive layers of one fit overlap, from its
- *  lower contours through its sections (perFit[i] is section i's layer) to its upper contours. */
-double smallestOverlap(const ShearedFit& fit, const std::vector<Layer>& perFit)
+/** The smallest share of the smaller region by which corresponding regions (the unions of the
+ *  contours of each group of the overlap rule) of consecutive layers overlap, from lower through the
+ *  sections to upper. */
+double smallestLayerOverlap(const Layer& lower, const std::vector<Layer>& sections, const Layer& upper)
 {
+  std::vector<const Layer*> layers{ &lower };
+  for (const Layer& section : sections)
+    layers.push_back(&section);
+  layers.push_back(&upper);
   double smallest = 1.0;
-  const Layer* previous = &fit.lower;
-  for (std::size_t i = 0; i <= perFit.size(); ++i)
-  {
-    const Layer* next = i < perFit.size() ? &perFit[i] : &fit.upper;
-    smallest = std::min(smallest, overlapAreas(*previous, *next).fraction());
-    previous = next;
-  }
+  for (std::size_t l = 0; l + 1 < layers.size(); ++l)
+    for (const CorrespondenceGroup& group : matchContours(*layers[l], *layers[l + 1], 0.0).groups)
+    {
+      if (group.lower.empty() || group.upper.empty())
+        continue;
+      Layer a, b;
+      for (std::size_t i : group.lower)
+        a.push_back((*layers[l])[i]);
+      for (std::size_t j : group.upper)
+        b.push_back((*layers[l + 1])[j]);
+      smallest = std::min(smallest, overlapAreas(a, b).fraction());
+    }
   return smallest;
 }
 
@@ -392,34 +402,40 @@ ContourStack insertIntermediateSections(const ContourStack& stack, const Undersa
     if (options.maxSliceSpacingFactor > 0.0 && dz > options.maxSliceSpacingFactor * h)
       spacingSections = std::min(cap, static_cast<std::size_t>(std::ceil(dz / (options.maxSliceSpacingFactor * h))) - 1);
     SlabCorrespondence correspondence;
-    bool needBridge = false;
-    if (options.bridgeNonOverlapping && threshold > 0.0)
+    bool needBridge = false, weakOverlap = false;
+    if ((options.bridgeNonOverlapping && threshold > 0.0) || options.refineWeakOverlap)
     {
       correspondence = matchContours(lower, upper, threshold);
       for (const CorrespondenceGroup& group : correspondence.groups)
+      {
         needBridge = needBridge || group.hasDistanceOnlyLink();
+        if (options.refineWeakOverlap && !group.lower.empty() && !group.upper.empty())
+        {
+          Layer lowerGroup, upperGroup;
+          for (std::size_t i : group.lower)
+            lowerGroup.push_back(lower[i]);
+          for (std::size_t j : group.upper)
+            upperGroup.push_back(upper[j]);
+          weakOverlap = weakOverlap || overlapAreas(lowerGroup, upperGroup).fraction() < options.sectionOverlap;
+        }
+      }
     }
-    if (spacingSections == 0 && !needBridge)
+    if (spacingSections == 0 && !needBridge && !weakOverlap)
       continue;
 
     const Layer noContours;
     const Layer& below = k > 0 ? stack.slices[k - 1].contours : noContours;
     const Layer& above = k + 2 < n ? stack.slices[k + 2].contours : noContours;
-    // m evenly spaced sections: each the union of the fits' zero sets (perFit[g][i]: fit g's part of section i).
-    auto sectionsFor = [&](const std::vector<ShearedFit>& fits, std::size_t m,
-                           std::vector<std::vector<Layer>>* perFit = nullptr) {
+    // m evenly spaced sections, each the union of the fits' zero sets at its height.
+    auto sectionsFor = [&](const std::vector<ShearedFit>& fits, std::size_t m) {
       std::vector<Layer> sections(m);
-      if (perFit)
-        perFit->assign(fits.size(), std::vector<Layer>(m));
       for (std::size_t i = 0; i < m; ++i)
       {
         const double s = static_cast<double>(i + 1) / static_cast<double>(m + 1);
-        for (std::size_t g = 0; g < fits.size(); ++g)
+        for (const ShearedFit& fit : fits)
         {
-          Layer part = sectionOf(fits[g], lowerSlice.z + s * dz, s, h);
+          Layer part = sectionOf(fit, lowerSlice.z + s * dz, s, h);
           sections[i].insert(sections[i].end(), part.begin(), part.end());
-          if (perFit)
-            (*perFit)[g][i] = std::move(part);
         }
       }
       return sections;
@@ -446,6 +462,34 @@ ContourStack insertIntermediateSections(const ContourStack& stack, const Undersa
     std::vector<Layer> accepted;
     double acceptedOverlap = 1.0;
     bool found = false;
+    // Tries the counts in turn: keeps the last sections that keep the topology (and whose contours
+    // stay apart), and stops at the first whose consecutive layers overlap by sectionOverlap (or at
+    // once when the overlap does not matter).
+    auto chooseSections = [&](const std::vector<ShearedFit>& fits, const std::vector<std::size_t>& counts,
+                              double topologyThreshold, bool overlapMatters) {
+      for (std::size_t m : counts)
+      {
+        std::vector<Layer> sections = sectionsFor(fits, m);
+        const bool apart = std::all_of(sections.begin(), sections.end(), contoursApart);
+        if (!apart || !sectionsKeepTopology(lower, sections, upper, topologyThreshold))
+          continue;
+        acceptedOverlap = smallestLayerOverlap(lower, sections, upper);
+        accepted = std::move(sections);
+        found = true;
+        if (!overlapMatters || acceptedOverlap >= options.sectionOverlap)
+          break; // otherwise keep these and try more sections
+      }
+    };
+    // first, then the usual steps above it, then the cap.
+    auto countsFrom = [&](std::size_t first) {
+      std::vector<std::size_t> counts{ first };
+      for (std::size_t m : { 2, 3, 4, 6, 8, 12, 16, 24, 32 })
+        if (m > first && m < cap)
+          counts.push_back(m);
+      if (cap > first)
+        counts.push_back(cap);
+      return counts;
+    };
     if (needBridge)
     {
       // One fit per group, each in the frame that follows the group's drift from slice to slice, so
@@ -486,10 +530,10 @@ ContourStack insertIntermediateSections(const ContourStack& stack, const Undersa
         },
         fits);
       const Clock::time_point start = Clock::now();
-      // More sections until consecutive layers of every group overlap by options.sectionOverlap of
-      // the smaller region (the paper asks only for some overlap, but the tiling of partly overlapping
-      // contours loses volume: see UndersamplingOptions). The first count tried is the one at which
-      // the group's own contours, moved along its drift by one step, would overlap that much.
+      // More sections until consecutive layers overlap by options.sectionOverlap of the smaller region
+      // (the paper asks only for some overlap, but the tiling of partly overlapping contours loses
+      // volume: see UndersamplingOptions). The first count tried is the one at which the groups' own
+      // contours, moved along their drift by one step, would overlap that much.
       auto predictedOverlap = [&](std::size_t m) {
         double smallest = 1.0;
         for (const ShearedFit& fit : fits)
@@ -508,35 +552,13 @@ ContourStack insertIntermediateSections(const ContourStack& stack, const Undersa
       std::size_t first = std::max<std::size_t>(spacingSections, 1);
       while (fitted && first < cap && predictedOverlap(first) < options.sectionOverlap)
         ++first;
-      std::vector<std::size_t> counts{ first };
-      for (std::size_t m : { 2, 3, 4, 6, 8, 12, 16, 24, 32 })
-        if (m > first && m < cap)
-          counts.push_back(m);
-      if (cap > first)
-        counts.push_back(cap);
-      for (std::size_t m : counts)
-      {
-        if (!fitted)
-          break;
-        std::vector<std::vector<Layer>> perFit;
-        std::vector<Layer> sections = sectionsFor(fits, m, &perFit);
-        const bool apart = std::all_of(sections.begin(), sections.end(), contoursApart);
-        if (!apart || !sectionsKeepTopology(lower, sections, upper, threshold))
-          continue;
-        double overlap = 1.0;
-        for (std::size_t g = 0; g < fits.size(); ++g)
-          overlap = std::min(overlap, smallestOverlap(fits[g], perFit[g]));
-        accepted = std::move(sections);
-        acceptedOverlap = overlap;
-        found = true;
-        if (overlap >= options.sectionOverlap)
-          break; // otherwise keep these and try more sections
-      }
+      if (fitted)
+        chooseSections(fits, countsFrom(first), threshold, true);
       statistics.extractSeconds += secondsSince(start);
       if (found)
       {
         ++statistics.slabsBridged;
-        statistics.smallestBridgeOverlap = std::min(statistics.smallestBridgeOverlap, acceptedOverlap);
+        statistics.smallestSectionOverlap = std::min(statistics.smallestSectionOverlap, acceptedOverlap);
       }
       else
       {
@@ -545,9 +567,11 @@ ContourStack insertIntermediateSections(const ContourStack& stack, const Undersa
                                    " sections");
       }
     }
-    if (!found && spacingSections > 0)
+    if (!found && (spacingSections > 0 || (weakOverlap && !needBridge)))
     {
-      // One plain fit to all contours of the slab's slices and of the slices just beyond.
+      // One plain fit to all contours of the slab's slices and of the slices just beyond: the pairs
+      // overlap already, so no shear is needed (and a drift that is a turn, as along a helix, has no
+      // one shear that fits it).
       std::vector<ShearedFit> fits;
       const bool fitted = fitOrNote(
         [&](std::vector<ShearedFit>& out) {
@@ -559,21 +583,22 @@ ContourStack insertIntermediateSections(const ContourStack& stack, const Undersa
         },
         fits);
       const Clock::time_point start = Clock::now();
+      const bool overlapMatters = weakOverlap && !needBridge;
       if (fitted)
-      {
-        std::vector<Layer> sections = sectionsFor(fits, spacingSections);
-        if (sectionsKeepTopology(lower, sections, upper, 0.0))
-        {
-          accepted = std::move(sections);
-          found = true;
-        }
-        else
-        {
-          ++statistics.slabsRejected;
-          statistics.notes.push_back(slabName(k) + ": sections would change the topology; none inserted");
-        }
-      }
+        chooseSections(fits, overlapMatters ? countsFrom(std::max<std::size_t>(spacingSections, 1))
+                                            : std::vector<std::size_t>{ spacingSections },
+                       0.0, overlapMatters);
       statistics.extractSeconds += secondsSince(start);
+      if (found && overlapMatters)
+      {
+        ++statistics.slabsOverlapRefined;
+        statistics.smallestSectionOverlap = std::min(statistics.smallestSectionOverlap, acceptedOverlap);
+      }
+      if (fitted && !found)
+      {
+        ++statistics.slabsRejected;
+        statistics.notes.push_back(slabName(k) + ": sections would change the topology; none inserted");
+      }
     }
     if (!found)
       continue;
