@@ -473,10 +473,12 @@ ContourStack insertIntermediateSections(const ContourStack& stack, const Undersa
         const bool apart = std::all_of(sections.begin(), sections.end(), contoursApart);
         if (!apart || !sectionsKeepTopology(lower, sections, upper, topologyThreshold))
           continue;
-        acceptedOverlap = smallestLayerOverlap(lower, sections, upper);
         accepted = std::move(sections);
         found = true;
-        if (!overlapMatters || acceptedOverlap >= options.sectionOverlap)
+        if (!overlapMatters)
+          break;
+        acceptedOverlap = smallestLayerOverlap(lower, accepted, upper);
+        if (acceptedOverlap >= options.sectionOverlap)
           break; // otherwise keep these and try more sections
       }
     };
