@@ -1,6 +1,7 @@
 #include "ContourResampling.h"
 
 #include "ContourCrossings.h"
+#include "ContourSmoothing.h"
 #include "PlanarGeometry.h"
 
 #include <algorithm>
@@ -53,15 +54,25 @@ Polygon2 resampleContour(const Polygon2& contour, double spacing)
   return resampled;
 }
 
-std::vector<Polygon2> resampleContours(const std::vector<Polygon2>& contours, double spacing)
+Polygon2 resampleContourKeepingArea(const Polygon2& contour, double spacing)
 {
+  Polygon2 resampled = resampleContour(contour, spacing);
+  offsetToArea(resampled, 0.5 * twiceSignedArea(contour));
+  return resampled;
+}
+
+std::vector<Polygon2> resampleContours(const std::vector<Polygon2>& contours, double spacing, bool keepArea)
+{
+  auto resample = [keepArea](const Polygon2& contour, double step) {
+    return keepArea ? resampleContourKeepingArea(contour, step) : resampleContour(contour, step);
+  };
   if (!(spacing > 0.0))
     return contours;
   std::vector<Polygon2> result(contours.size());
   std::vector<double> spacings(contours.size(), spacing);
   std::vector<char> original(contours.size(), 0);
   for (std::size_t c = 0; c < contours.size(); ++c)
-    result[c] = resampleContour(contours[c], spacing);
+    result[c] = resample(contours[c], spacing);
 
   constexpr int attempts = 4;
   for (int attempt = 0; attempt <= attempts; ++attempt)
@@ -85,7 +96,7 @@ std::vector<Polygon2> resampleContours(const std::vector<Polygon2>& contours, do
         original[c] = 1;
       }
       else
-        result[c] = resampleContour(contours[c], spacings[c]);
+        result[c] = resample(contours[c], spacings[c]);
     }
     if (!changed)
       break;
@@ -93,11 +104,11 @@ std::vector<Polygon2> resampleContours(const std::vector<Polygon2>& contours, do
   return result;
 }
 
-ContourStack resampleContours(const ContourStack& stack, double spacing)
+ContourStack resampleContours(const ContourStack& stack, double spacing, bool keepArea)
 {
   ContourStack result = stack;
   for (Slice& slice : result.slices)
-    slice.contours = resampleContours(slice.contours, spacing);
+    slice.contours = resampleContours(slice.contours, spacing, keepArea);
   return result;
 }
 

@@ -73,6 +73,24 @@ double perimeter(const Polygon2& polygon)
 
 } // namespace
 
+void offsetToArea(Polygon2& contour, double area, const Polygon2* anchor, double maxDisplacement)
+{
+  if (contour.size() < 3)
+    return;
+  // Newton steps on the common offset: the first-order estimate offset = dA / perimeter is off by
+  // the curvature term on small contours, and the clamp may cut it.
+  for (int step = 0; step < 6; ++step)
+  {
+    const double deficit = area - 0.5 * twiceSignedArea(contour);
+    const double length = perimeter(contour);
+    if (!(length > 0.0) || std::abs(deficit) <= 1e-9 * std::abs(area))
+      break;
+    offsetAlongNormals(contour, deficit / length);
+    if (anchor)
+      clampTo(contour, *anchor, maxDisplacement);
+  }
+}
+
 Polygon2 smoothContour(const Polygon2& contour, const ContourSmoothingOptions& options)
 {
   if (options.iterations <= 0 || contour.size() < 4)
@@ -85,18 +103,7 @@ Polygon2 smoothContour(const Polygon2& contour, const ContourSmoothingOptions& o
     clampTo(points, contour, options.maxDisplacement);
   }
 
-  // Restore the enclosed area by a few Newton steps: the first-order estimate offset = dA / perimeter
-  // is off by the curvature term on small contours, and the clamp may cut it.
-  const double area = 0.5 * twiceSignedArea(contour);
-  for (int step = 0; step < 6; ++step)
-  {
-    const double deficit = area - 0.5 * twiceSignedArea(points);
-    const double length = perimeter(points);
-    if (!(length > 0.0) || std::abs(deficit) <= 1e-9 * std::abs(area))
-      break;
-    offsetAlongNormals(points, deficit / length);
-    clampTo(points, contour, options.maxDisplacement);
-  }
+  offsetToArea(points, 0.5 * twiceSignedArea(contour), &contour, options.maxDisplacement);
   return points;
 }
 

@@ -21,6 +21,13 @@ struct ContourSmoothingOptions
   double maxDisplacement = 0.0;
 };
 
+/** Moves every point of the closed contour along its normal (the normal of the chord between its
+ *  neighbours, to the right of the direction of travel) by one common distance, found by a few
+ *  Newton steps, so that its signed area becomes `area` (to 1e-9 relative, unless the clamp stops
+ *  it): the same shape, grown or shrunk. With `anchor` (a polygon of the same size), no point ends
+ *  farther than maxDisplacement from its anchor point. Contours of fewer than 3 points are left. */
+void offsetToArea(Polygon2& contour, double area, const Polygon2* anchor = nullptr, double maxDisplacement = 0.0);
+
 /** Smooths one closed contour: `iterations` pairs of a lambda step and a mu step of the umbrella
  *  operator p_i += f * ((p_{i-1} + p_{i+1}) / 2 - p_i), after each pair every point clamped back to
  *  within maxDisplacement of its original position. Taubin's filter does not shrink long contours,
