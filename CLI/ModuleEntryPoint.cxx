@@ -87,6 +87,12 @@ PipelineSettings settingsFrom(const ParsedArguments& arguments)
   settings.contours.smoothingSigma = arguments.number("contourSmoothingSigma");
   settings.contours.simplificationTolerance = arguments.number("contourSimplification");
   settings.contours.pointSpacing = arguments.number("contourPointSpacing");
+  const std::string& preparation = arguments.text("contourPreparation");
+  settings.preparation.mode = preparation == "Smoothed" ? ContourPreparation::Smoothed
+                              : preparation == "Traced" ? ContourPreparation::Traced
+                                                        : ContourPreparation::Automatic;
+  settings.preparation.smoothingIterations = static_cast<int>(arguments.integer("contourSmoothingIterations"));
+  settings.preparation.smoothingMaxShift = arguments.number("contourSmoothingMaxShift");
   settings.reportFile = arguments.text("report");
   settings.snapshotFile = arguments.text("snapshot");
   return settings;

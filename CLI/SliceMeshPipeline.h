@@ -13,11 +13,43 @@
 #include "SurfaceReconstruction.h"
 #include "VolumeSegmentation.h"
 
+#include <array>
 #include <stdexcept>
 #include <string>
 
 namespace slicemesh::cli
 {
+
+/** How the traced contours are shaped before tiling (--contourPreparation and its options). */
+enum class ContourPreparation
+{
+  Automatic, ///< Smoothed when the slices are at least twice as thick as the pixels, else Traced
+  Smoothed,  ///< Taubin smoothing, then resampling (to --contourPointSpacing, or automatic)
+  Traced     ///< the traced marching-squares contours (resampled only to an explicit spacing)
+};
+
+struct ContourPreparationOptions
+{
+  ContourPreparation mode = ContourPreparation::Automatic;
+  int smoothingIterations = 30;  ///< Taubin lambda/mu pairs (Smoothed); 0: no smoothing
+  double smoothingMaxShift = 0.0; ///< bound on each point's move (mm); 0: 0.3 of the smaller pixel side
+};
+
+/** The mode Automatic stands for, for pixels of size pixelX x pixelY and slices sliceSpacing apart. */
+ContourPreparation resolvedPreparation(ContourPreparation mode, double pixelX, double pixelY, double sliceSpacing);
+
+/** The point spacing resampling uses (mm): the explicit one when given, otherwise, for smoothed
+ *  contours, the geometric mean of the smaller pixel side and the slice spacing (so thick slices
+ *  get fewer, longer contour edges and the slabs fewer rows); 0 (keep the points) for traced ones. */
+double resolvedPointSpacing(const ContourOptions& contours, ContourPreparation resolved, double pixelX, double pixelY,
+                            double sliceSpacing);
+
+/** The traced contours as the pipeline tiles them: smoothed (ContourSmoothing.h) when the
+ *  preparation resolves to Smoothed, then simplified (ContourSimplification.h) and resampled to
+ *  resolvedPointSpacing keeping each contour's area (ContourResampling.h), all crossing-free.
+ *  spacing is the image's (x, y, slice) spacing in mm. */
+ContourStack prepareContours(const ContourStack& traced, const ContourOptions& contours,
+                             const ContourPreparationOptions& preparation, const std::array<double, 3>& spacing);
 
 struct PipelineSettings
 {
@@ -32,6 +64,8 @@ struct PipelineSettings
   CoordinateSystem coordinateSystem = CoordinateSystem::LPS;
   /** Contour preprocessing between extraction and tiling (all off by default). */
   ContourOptions contours;
+  /** Smoothing and automatic resampling of the traced contours (before `contours` applies). */
+  ContourPreparationOptions preparation;
   std::string reportFile;   ///< JSON quality report to write; empty: none
   std::string snapshotFile; ///< PNG picture coloured by triangle quality; empty: none
   /** One mesh per label of a label map (runMultiLabelPipeline, MultiLabelPipeline.h). */

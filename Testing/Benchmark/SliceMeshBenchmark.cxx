@@ -1,6 +1,8 @@
 // SliceMesh against 3D Slicer's default label map -> closed surface conversion, on analytic
 // phantoms: the same rasterized label map goes through both, and both meshes are measured against
-// the exact surface. Not part of the test run; see the README for the command.
+// the exact surface. Not part of the test run; see the README for the command. SliceMesh runs as
+// the CLI does by default: contours prepared by cli::prepareContours with the default options
+// (Automatic: smoothed and resampled for thick slices, traced otherwise), then the reconstruction.
 //
 // Slicer's pipeline as in vtkBinaryLabelmapToClosedSurfaceConversionRule (Slicer 5.x, smoothing
 // factor 0.5, decimation off): pad the label map by one voxel, vtkDiscreteFlyingEdges3D in index
@@ -20,6 +22,7 @@
 #include "SurfaceReconstruction.h"
 #include "ContourResampling.h"
 #include "IntermediateSections.h"
+#include "SliceMeshPipeline.h"
 #include "Torus.h"
 
 #include <vtkDiscreteFlyingEdges3D.h>
@@ -78,12 +81,19 @@ void measure(Row& row, const TriangleMesh& physical, const Phantom& phantom)
   row.meanDistance = physical.points.empty() ? 0.0 : sum / physical.points.size();
 }
 
-Row sliceMesh(const Phantom& phantom, const MaskVolume* mask, double minAngle)
+/** SliceMesh as the CLI runs it by default (contour preparation included), with the preparation
+ *  mode and the refinement as given. */
+Row sliceMesh(const Phantom& phantom, const MaskVolume* mask, cli::ContourPreparation preparation, double minAngle,
+              const std::string& method)
 {
   Row row;
-  row.method = minAngle > 0.0 ? "SliceMesh" : "SliceMesh, no Steiner";
+  row.method = method;
   const auto began = Clock::now();
-  const ContourStack stack = extractContours(mask);
+  const auto spacing = mask->GetSpacing();
+  cli::ContourPreparationOptions preparationOptions;
+  preparationOptions.mode = preparation;
+  const ContourStack stack =
+    cli::prepareContours(extractContours(mask), cli::ContourOptions{}, preparationOptions, { spacing[0], spacing[1], spacing[2] });
   ReconstructionOptions options;
   options.minAngleDegrees = minAngle;
   const TriangleMesh stackMesh = reconstructSurface(stack, options);
@@ -198,7 +208,16 @@ int main(int argc, char* argv[])
     {
       const GridSpec spec = gridAround(*named.phantom, grid.spacing, 2);
       const MaskVolume::Pointer mask = rasterizePhantom(*named.phantom, spec);
-      for (Row row : { sliceMesh(*named.phantom, mask, 30.0), sliceMesh(*named.phantom, mask, 0.0),
+      // The default, the preparation the automatic choice did not take, and no refinement.
+      const cli::ContourPreparation chosen =
+        cli::resolvedPreparation(cli::ContourPreparation::Automatic, grid.spacing[0], grid.spacing[1], grid.spacing[2]);
+      const bool smoothed = chosen == cli::ContourPreparation::Smoothed;
+      const cli::ContourPreparation other = smoothed ? cli::ContourPreparation::Traced : cli::ContourPreparation::Smoothed;
+      for (Row row : { sliceMesh(*named.phantom, mask, cli::ContourPreparation::Automatic, 30.0,
+                                 smoothed ? "SliceMesh (smoothed contours)" : "SliceMesh (traced contours)"),
+                       sliceMesh(*named.phantom, mask, other, 30.0,
+                                 smoothed ? "SliceMesh, traced contours" : "SliceMesh, smoothed contours"),
+                       sliceMesh(*named.phantom, mask, cli::ContourPreparation::Automatic, 0.0, "SliceMesh, no Steiner"),
                        slicerPipeline(*named.phantom, mask) })
       {
         row.phantom = named.name;
@@ -222,9 +241,9 @@ int main(int argc, char* argv[])
   }
   std::printf("%s", table.c_str());
   // The in-plane point spacing / slice spacing ratio that dominates the angle figures.
-  std::printf("\nratio of in-plane point spacing to slice spacing (SliceMesh contours):");
+  std::printf("\nratio of in-plane point spacing to slice spacing (SliceMesh default contours):");
   for (const Row& r : rows)
-    if (r.method == "SliceMesh")
+    if (r.method.rfind("SliceMesh (", 0) == 0)
       std::printf(" %s %s %.2f;", r.phantom.c_str(), r.grid.c_str(), r.spacingRatio);
   std::printf("\n");
 

@@ -9,14 +9,18 @@
 #include "CappedCylinder.h"
 #include "Ellipsoid.h"
 #include "MeshQuality.h"
+#include "ContourExtraction.h"
 #include "PhantomMeshing.h"
+#include "SliceMeshPipeline.h"
 #include "Sphere.h"
 #include "Torus.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cmath>
 #include <memory>
+#include <random>
 
 using namespace slicemesh;
 using namespace slicemesh::testing;
@@ -111,4 +115,122 @@ TEST(RefinementQuality, GuardOnTodaysFigures)
       EXPECT_LE(q.fractionBelow30, 0.02);
       EXPECT_LE(on.surfaceDistance, off.surfaceDistance * 1.10);
     }
+}
+
+// The contour preparation of the CLI (SliceMeshPipeline.h): the Smoothed path, which the default
+// (Automatic) takes at thick slices, on the phantoms and on random masks.
+namespace
+{
+
+struct PreparedMesh
+{
+  TriangleMesh mesh; ///< physical (LPS)
+  MeshValidation validation;
+  double meanDistance = 0.0; ///< over vertices, to the exact surface (phantoms only)
+};
+
+PreparedMesh meshPrepared(const MaskVolume* mask, cli::ContourPreparation mode, const Phantom* phantom = nullptr)
+{
+  const auto spacing = mask->GetSpacing();
+  cli::ContourPreparationOptions preparation;
+  preparation.mode = mode;
+  const ContourStack stack =
+    cli::prepareContours(extractContours(mask), cli::ContourOptions{}, preparation, { spacing[0], spacing[1], spacing[2] });
+  PreparedMesh result;
+  result.mesh = mapToPhysicalSpace(reconstructSurface(stack), sliceFrameOf(mask), CoordinateSystem::LPS);
+  result.validation = validateMesh(result.mesh);
+  if (phantom && !result.mesh.points.empty())
+  {
+    for (const Point3& p : result.mesh.points)
+      result.meanDistance += distanceToSurface(*phantom, p);
+    result.meanDistance /= static_cast<double>(result.mesh.points.size());
+  }
+  return result;
+}
+
+} // namespace
+
+TEST(ContourPreparation, AutomaticSmoothsThickSlicesOnly)
+{
+  EXPECT_EQ(cli::resolvedPreparation(cli::ContourPreparation::Automatic, 0.8, 0.8, 3.0), cli::ContourPreparation::Smoothed);
+  EXPECT_EQ(cli::resolvedPreparation(cli::ContourPreparation::Automatic, 1.0, 1.0, 1.0), cli::ContourPreparation::Traced);
+  EXPECT_EQ(cli::resolvedPreparation(cli::ContourPreparation::Traced, 0.8, 0.8, 3.0), cli::ContourPreparation::Traced);
+  // Automatic spacing: the geometric mean of pixel and slice for smoothed contours; an explicit one wins.
+  cli::ContourOptions contours;
+  EXPECT_NEAR(cli::resolvedPointSpacing(contours, cli::ContourPreparation::Smoothed, 0.8, 0.8, 3.0), std::sqrt(2.4), 1e-12);
+  EXPECT_EQ(cli::resolvedPointSpacing(contours, cli::ContourPreparation::Traced, 0.8, 0.8, 3.0), 0.0);
+  contours.pointSpacing = 0.7;
+  EXPECT_EQ(cli::resolvedPointSpacing(contours, cli::ContourPreparation::Smoothed, 0.8, 0.8, 3.0), 0.7);
+}
+
+// Smoothed contours on the phantoms, at both grids: the mesh stays valid, its vertices come closer
+// to the exact surface than with the traced contours (measured 0.136 -> 0.101, 0.126 -> 0.076,
+// 0.155 -> 0.110 mm at 1 mm), the volume stays within 4% of the exact one (measured -0.6% to -3.5%;
+// the traced contours give -0.5% to -2.8%), and at thick slices the triangle count drops to less
+// than half (resampled contours: measured 4-5 times fewer).
+TEST(ContourPreparation, SmoothedContoursAreValidAndCloserOnThePhantoms)
+{
+  const std::vector<std::pair<const char*, std::shared_ptr<const Phantom>>> phantoms = {
+    { "sphere", std::make_shared<Sphere>(Vector3{ 1.0, -2.0, 3.0 }, 20.0) },
+    { "box", std::make_shared<Box>(Vector3{ 0, 0, 0 }, Vector3{ 15, 10, 8 }, rotation({ 0, 1, 1 }, 0.5)) },
+    { "torus", std::make_shared<Torus>(Vector3{ 0, 0, 0 }, Vector3{ 1, 0, 0.5 }, 18.0, 6.0) }
+  };
+  for (const auto& [name, phantom] : phantoms)
+    for (const Grid& grid : { Grid{ "iso1mm", { 1.0, 1.0, 1.0 } }, Grid{ "aniso08x08x3", { 0.8, 0.8, 3.0 } } })
+    {
+      SCOPED_TRACE(std::string(name) + " " + grid.name);
+      const MaskVolume::Pointer mask = rasterizePhantom(*phantom, gridAround(*phantom, grid.spacing, 2));
+      const PreparedMesh smoothed = meshPrepared(mask, cli::ContourPreparation::Smoothed, phantom.get());
+      const PreparedMesh traced = meshPrepared(mask, cli::ContourPreparation::Traced, phantom.get());
+      std::printf("%-6s %-13s mean distance traced %.3f smoothed %.3f mm; triangles %zu -> %zu; volume %+.2f%% -> %+.2f%%\n",
+                  name, grid.name, traced.meanDistance, smoothed.meanDistance, traced.mesh.triangles.size(),
+                  smoothed.mesh.triangles.size(), 100.0 * (std::abs(traced.validation.volume) / phantom->volume() - 1.0),
+                  100.0 * (std::abs(smoothed.validation.volume) / phantom->volume() - 1.0));
+      EXPECT_TRUE(smoothed.validation.valid()) << smoothed.validation.summary();
+      EXPECT_LT(smoothed.meanDistance, traced.meanDistance);
+      EXPECT_NEAR(std::abs(smoothed.validation.volume), phantom->volume(), 0.04 * phantom->volume());
+      if (grid.spacing[2] > 2.0 * grid.spacing[0])
+        EXPECT_LT(smoothed.mesh.triangles.size(), traced.mesh.triangles.size() / 2);
+    }
+}
+
+// Random masks (blobs, salt, voxels touching at corners) through the Smoothed path: every mesh is
+// valid (closed, manifold, no self-intersections), at isotropic and at thick slices.
+TEST(ContourPreparation, SmoothedContoursOfRandomMasksGiveValidMeshes)
+{
+  std::mt19937 random(11);
+  int meshed = 0;
+  for (int trial = 0; trial < 24; ++trial)
+  {
+    const std::array<double, 3> spacing = trial % 2 ? std::array<double, 3>{ 0.8, 0.8, 3.0 } : std::array<double, 3>{ 1.0, 1.0, 1.0 };
+    MaskVolume::Pointer mask = MaskVolume::New();
+    MaskVolume::SizeType size = { { 22, 22, 9 } };
+    mask->SetRegions(MaskVolume::RegionType(size));
+    mask->SetSpacing(spacing.data());
+    mask->Allocate(true);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    // A few ellipsoids in index space, salt, and a diagonal run of corner-touching voxels.
+    std::vector<std::array<double, 6>> blobs(1 + trial % 3);
+    for (auto& b : blobs)
+      b = { 3 + 16 * uniform(random), 3 + 16 * uniform(random), 1 + 7 * uniform(random), 2 + 5 * uniform(random),
+            2 + 5 * uniform(random), 1 + 3 * uniform(random) };
+    const double salt = trial % 4 < 2 ? 0.0 : 0.08;
+    for (long k = 0; k < 9; ++k)
+      for (long j = 0; j < 22; ++j)
+        for (long i = 0; i < 22; ++i)
+        {
+          bool inside = uniform(random) < salt;
+          for (const auto& b : blobs)
+            inside = inside || std::pow((i - b[0]) / b[3], 2) + std::pow((j - b[1]) / b[4], 2) + std::pow((k - b[2]) / b[5], 2) < 1.0;
+          if (trial % 3 == 0 && i == j && i < 8)
+            inside = true;
+          mask->SetPixel({ { i, j, k } }, inside ? 1 : 0);
+        }
+    const PreparedMesh result = meshPrepared(mask, cli::ContourPreparation::Smoothed);
+    if (result.mesh.triangles.empty())
+      continue;
+    ++meshed;
+    EXPECT_TRUE(result.validation.valid()) << "trial " << trial << ": " << result.validation.summary();
+  }
+  EXPECT_GE(meshed, 20);
 }
