@@ -479,7 +479,14 @@ ContourStack insertIntermediateSections(const ContourStack& stack, const Undersa
           break;
         acceptedOverlap = smallestLayerOverlap(lower, accepted, upper);
         if (acceptedOverlap >= options.sectionOverlap)
-          break; // otherwise keep these and try more sections
+          return; // otherwise keep these and try more sections
+      }
+      if (found && overlapMatters)
+      {
+        std::ostringstream note;
+        note << slabName(k) << ": consecutive sections overlap by " << acceptedOverlap << " only (" << accepted.size()
+             << " sections, the most that keep the topology within the cap)";
+        statistics.notes.push_back(note.str());
       }
     };
     // first, then the usual steps above it, then the cap.

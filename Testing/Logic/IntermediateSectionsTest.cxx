@@ -386,3 +386,27 @@ TEST(IntermediateSections, PartlyOverlappingPairsGetSectionsWhenAsked)
   EXPECT_GT(fineSum / samples / area, 0.95);
   EXPECT_GT(fineSum, coarseSum);
 }
+
+TEST(IntermediateSections, CapOnSectionsIsReportedWhenTheOverlapFallsShort)
+{
+  // The sheared ellipses again, with at most two sections per slab: the pair is still joined (the
+  // sections overlap), but by less than sectionOverlap, and a note says so.
+  ContourStack stack;
+  stack.sliceSpacing = 5.0;
+  for (int k = 0; k < 2; ++k)
+    stack.slices.push_back({ k * 5.0, { ellipse(k * 13.7, 5.85, 2.0, 64) } });
+  UndersamplingOptions options;
+  options.correspondenceDistance = 3.0;
+  options.bridgeNonOverlapping = true;
+  options.maxSectionsPerSlab = 2;
+  SectionStatistics statistics;
+  const ContourStack bridged = insertIntermediateSections(stack, options, &statistics);
+  EXPECT_EQ(statistics.slabsBridged, 1u);
+  EXPECT_EQ(bridged.slices.size(), 4u);
+  EXPECT_GT(statistics.smallestSectionOverlap, 0.0);
+  EXPECT_LT(statistics.smallestSectionOverlap, options.sectionOverlap);
+  ASSERT_EQ(statistics.notes.size(), 1u);
+  EXPECT_NE(statistics.notes[0].find("overlap by"), std::string::npos) << statistics.notes[0];
+  options.sectionOverlap = 1.0;
+  EXPECT_THROW(insertIntermediateSections(stack, options), Error);
+}
