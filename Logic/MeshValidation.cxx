@@ -7,6 +7,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <map>
@@ -69,6 +70,8 @@ std::string MeshValidation::summary() const
     out << "no self-intersections";
   else
     out << selfIntersections << " self-intersecting pairs";
+  if (foldedEdges > 0)
+    out << ", " << foldedEdges << " folded edges";
   out << ", " << components << (components == 1 ? " component" : " components") << ", volume " << std::fixed
       << std::setprecision(1) << volume << " mm^3";
   return out.str();
@@ -76,6 +79,7 @@ std::string MeshValidation::summary() const
 
 MeshValidation validateMesh(const TriangleMesh& mesh)
 {
+  const double foldCosine = std::cos(M_PI / 180.0); // a dihedral angle under 1 degree
   MeshValidation v;
   v.triangles = mesh.triangles.size();
   const std::size_t nPoints = mesh.points.size();
@@ -91,6 +95,9 @@ MeshValidation validateMesh(const TriangleMesh& mesh)
   DisjointSets pieces(nPoints);
   double minAngle = M_PI;
   std::size_t below30 = 0;
+  std::vector<std::array<double, 3>> normals;
+  normals.reserve(mesh.triangles.size());
+  std::unordered_map<std::uint64_t, std::size_t> firstTriangleOfEdge;
   for (const Triangle& t : mesh.triangles)
   {
     const Point3& a = mesh.points[t[0]];
@@ -102,6 +109,8 @@ MeshValidation validateMesh(const TriangleMesh& mesh)
     const double twiceArea = std::sqrt(cx * cx + cy * cy + cz * cz);
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || twiceArea == 0.0)
       ++v.degenerateTriangles;
+    normals.push_back(twiceArea > 0.0 ? std::array<double, 3>{ cx / twiceArea, cy / twiceArea, cz / twiceArea }
+                                      : std::array<double, 3>{ 0.0, 0.0, 0.0 });
     v.area += 0.5 * twiceArea;
     v.volume += (a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x)) / 6.0;
     const double smallest = std::min({ angleAt(a, b, c), angleAt(b, c, a), angleAt(c, a, b) });
@@ -112,7 +121,16 @@ MeshValidation validateMesh(const TriangleMesh& mesh)
     {
       const std::int32_t p = t[i], q = t[(i + 1) % 3];
       ++directed[directedKey(p, q)];
-      ++undirected[directedKey(std::min(p, q), std::max(p, q))];
+      const std::uint64_t edge = directedKey(std::min(p, q), std::max(p, q));
+      if (++undirected[edge] == 1)
+        firstTriangleOfEdge[edge] = normals.size() - 1;
+      else
+      { // unit normals nearly opposite: the triangles lie on top of each other
+        const std::array<double, 3>& m = normals[firstTriangleOfEdge[edge]];
+        const std::array<double, 3>& n = normals.back();
+        if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -foldCosine)
+          ++v.foldedEdges;
+      }
       used[p] = 1;
       pieces.unite(p, q);
     }

@@ -18,6 +18,7 @@ struct MeshValidation
   std::size_t nonManifoldEdges = 0;           ///< edges with more than two triangles
   std::size_t nonManifoldVertices = 0;        ///< vertices whose triangles form more than one fan
   std::size_t inconsistentEdges = 0;          ///< edges used twice in the same direction
+  std::size_t foldedEdges = 0;                ///< edges whose two triangles fold onto each other (dihedral angle under 1 degree)
   std::size_t selfIntersections = 0;          ///< pairs of triangles that intersect other than along shared simplices
   bool selfIntersectionChecked = false;       ///< false when the mesh was not manifold enough to check
   std::size_t components = 0;
@@ -40,7 +41,9 @@ struct MeshValidation
 };
 
 /** Measures the mesh and checks it: boundary and non-manifold edges, non-manifold vertices,
- *  consistent orientation, degenerate triangles and self-intersections (CGAL). */
+ *  consistent orientation, degenerate triangles and self-intersections (CGAL). Folds (two triangles
+ *  on one edge lying almost on top of each other) are counted but do not make a mesh invalid: no
+ *  triangles cross there, but a rotation or rounding of the coordinates may make them cross. */
 MeshValidation validateMesh(const TriangleMesh& mesh);
 
 } // namespace slicemesh

@@ -772,6 +772,19 @@ bool SlabOverlay::Impl::insertSteiner(const Point2& p, double z, MeshBuilder& me
     return false;
   if (!isDifference(f))
     return false;
+  // A point a hair's breadth off an edge of its face (rows along a line that continues a contour
+  // edge put points there up to rounding) makes a triangle of no width in projection: lifted, it
+  // stands vertical and its neighbour folds onto it, a fold that rounding then turns into crossing
+  // triangles (seen after an oblique direction was applied). Optional points only: a chord's
+  // midpoint is needed, and sits on its chord up to the same rounding.
+  if (clearance > 0.0 && type == CDT::FACE)
+    for (int i = 0; i < 3; ++i)
+    {
+      const auto& a = f->vertex(CDT::cw(i))->point();
+      const auto& b = f->vertex(CDT::ccw(i))->point();
+      if (distanceToSegment(p, { a.x(), a.y() }, { b.x(), b.y() }) < 1e-3 * typicalEdge)
+        return false;
+    }
   // The new faces lie in the same difference polygon (insertion never crosses a constraint): they
   // inherit its classification, so further insertions can be placed before the next classify().
   FaceData region = f->info();

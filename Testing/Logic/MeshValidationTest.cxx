@@ -71,3 +71,18 @@ TEST(MeshValidation, DetectsSelfIntersectionAndNonManifoldVertex)
   EXPECT_GT(v.selfIntersections, 0u);
   EXPECT_FALSE(v.valid());
 }
+
+TEST(MeshValidation, CountsFoldsThatNoTrianglesCrossYet)
+{
+  // A tetrahedron squashed until its apex is a hair above the base: closed, oriented and, exactly,
+  // free of crossings, but its three side faces fold onto the base (dihedral angles near 0).
+  TriangleMesh squashed = tetrahedron();
+  squashed.points[3] = { 0.3, 0.3, 1e-9 };
+  const MeshValidation v = validateMesh(squashed);
+  EXPECT_TRUE(v.closed() && v.manifold() && v.oriented()) << v.summary();
+  EXPECT_EQ(v.foldedEdges, 3u);
+  EXPECT_NE(v.summary().find("3 folded edges"), std::string::npos) << v.summary();
+  // Steep but open: an apex at 0.02 gives dihedral angles of a few degrees, not a fold.
+  squashed.points[3] = { 0.3, 0.3, 0.02 };
+  EXPECT_EQ(validateMesh(squashed).foldedEdges, 0u);
+}

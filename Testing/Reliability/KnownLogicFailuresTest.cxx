@@ -71,5 +71,21 @@ TEST(KnownLogicFailures, Seed2060FiveVoxels)
   expectValidMesh({ 2, 7, 5 }, { 0.7, 0.7, 3 }, { { 1, 6, 0 }, { 0, 0, 1 }, { 1, 2, 1 }, { 0, 3, 1 }, { 1, 3, 1 } });
 }
 
+// Seeds 2511 and 2651 (noise, 0.7 x 0.7 x 3 mm, oblique), from a 5000-mask run at c889945: 3
+// self-intersecting pairs each, only after the oblique direction was applied. Row points along a
+// line that continues a marching-squares chamfer (the lattice's diagonals line up across slices)
+// landed a rounding error off a triangle's edge; the sliver stood vertical and its neighbour folded
+// onto it. Whole masks: removing any voxel moves the rows and hides the fold.
+TEST(KnownLogicFailures, Seeds2511And2651RowPointsOnAContinuedContourEdge)
+{
+  for (const std::uint64_t seed : { 2511u, 2651u })
+  {
+    const RandomMask random = randomMask(seed, RandomMaskKind::Noise);
+    const MaskMeshResult result = meshMask(random.mask);
+    EXPECT_EQ(result.problem(), "") << random.description;
+    EXPECT_EQ(result.validation.foldedEdges, 0u) << random.description;
+  }
+}
+
 } // namespace
 } // namespace slicemesh::testing

@@ -26,13 +26,12 @@ std::uint64_t environmentNumber(const char* name, std::uint64_t fallback)
   return value && *value ? std::strtoull(value, nullptr, 10) : fallback;
 }
 
-/** Seeds on which the Logic of commit 24484fa fails (self-intersections where pieces touch across
- *  thick slices), reported to the Logic owner with minimal masks: see KnownLogicFailuresTest.cxx.
- *  (Seed 3048 used to pass or fail from run to run: the tiling followed CGAL's address-ordered edge
- *  iteration. Fixed; Testing/Logic/DeterminismTest.cxx guards it.)
- *  They are meshed and reported, but do not fail the default run; SLICEMESH_PROPERTY_STRICT=1
- *  counts them. Remove a seed once it passes (the run says so). */
-const std::uint64_t knownLogicFailures[] = { 2060 };
+/** Seeds on which the Logic is known to fail: meshed and reported, but they do not fail the default
+ *  run (SLICEMESH_PROPERTY_STRICT=1 counts them); a seed that passes again is named by the run.
+ *  None today: the seeds listed before (2060, 3048) and those a 5000-mask run found (2511, 2651)
+ *  pass, with regression tests in KnownLogicFailuresTest.cxx and Testing/Logic/DeterminismTest.cxx
+ *  (3048 passed or failed from run to run while the tiling followed CGAL's address-ordered edges). */
+const std::uint64_t knownLogicFailures[] = { 0 }; // 0 is a placeholder, never a seed here
 /** Seeds on which reconstructSurface did not return (over 20 s on a 16^3 mask) at 25f8b8a; they pass
  *  at 24484fa. Skipped unless SLICEMESH_PROPERTY_STRICT=1; 0 is a placeholder, never a seed here. */
 const std::uint64_t knownLogicHangs[] = { 0 };
