@@ -9,6 +9,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <functional>
@@ -113,6 +114,20 @@ double minAngle3(const Point3& a, const Point3& b, const Point3& c)
     return std::atan2(cross, ux * vx + uy * vy + uz * vz);
   };
   return std::min({ angle(a, b, c), angle(b, c, a), angle(c, a, b) });
+}
+
+/** Cosine of the angle between the normals of triangles (a, b, c) and (b, a, d), which share edge
+ *  ab: 1 where they are coplanar, -1 where one folds onto the other. */
+double normalsCosine(const Point3& a, const Point3& b, const Point3& c, const Point3& d)
+{
+  auto normal = [](const Point3& p, const Point3& q, const Point3& r) {
+    const double ux = q.x - p.x, uy = q.y - p.y, uz = q.z - p.z;
+    const double vx = r.x - p.x, vy = r.y - p.y, vz = r.z - p.z;
+    return std::array<double, 3>{ uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx };
+  };
+  const auto m = normal(a, b, c), n = normal(b, a, d);
+  const double lengths = std::sqrt((m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
+  return lengths > 0.0 ? (m[0] * n[0] + m[1] * n[1] + m[2] * n[2]) / lengths : 1.0;
 }
 
 /** The finite edges, each once, in an order that depends only on the triangulation. CGAL's edge
@@ -772,14 +787,16 @@ bool SlabOverlay::Impl::insertSteiner(const Point2& p, double z, MeshBuilder& me
     return false;
   if (!isDifference(f))
     return false;
-  // A point a hair's breadth off an edge of its face (rows along a line that continues a contour
-  // edge put points there up to rounding) makes a triangle of no width in projection: lifted, it
-  // stands vertical and its neighbour folds onto it, a fold that rounding then turns into crossing
-  // triangles (seen after an oblique direction was applied). Optional points only: a chord's
-  // midpoint is needed, and sits on its chord up to the same rounding.
+  // A point a hair's breadth off a contour edge of its face (rows along a line that continues a
+  // contour edge put points there up to rounding) makes a triangle of no width in projection that
+  // no flip can remove: lifted, it stands vertical and its neighbour folds onto it, a fold that
+  // rounding then turns into crossing triangles (seen after an oblique direction was applied).
+  // Optional points only: a chord's midpoint is needed, and chords are not contour edges.
   if (clearance > 0.0 && type == CDT::FACE)
     for (int i = 0; i < 3; ++i)
     {
+      if (!f->is_constrained(i))
+        continue; // a sliver against an ordinary edge is flipped away by the Delaunay insertion
       const auto& a = f->vertex(CDT::cw(i))->point();
       const auto& b = f->vertex(CDT::ccw(i))->point();
       if (distanceToSegment(p, { a.x(), a.y() }, { b.x(), b.y() }) < 1e-3 * typicalEdge)
@@ -1094,9 +1111,18 @@ std::size_t SlabOverlay::Impl::flipTowardsSurfaceQuality(const MeshBuilder& mesh
     const Point2 pp{ p->point().x(), p->point().y() }, pq{ q->point().x(), q->point().y() };
     if (orientation(pa, pb, pp) * orientation(pa, pb, pq) >= 0)
       return false;
+    // Nor into a triangle of almost no width in projection: lifted, it stands vertical, which the 3D
+    // angles like, but a neighbour can fold onto it (and rounding later make them cross).
+    if (distanceToSegment(pp, pa, pb) < 1e-3 * typicalEdge || distanceToSegment(pq, pa, pb) < 1e-3 * typicalEdge)
+      return false;
     const Point3 A = lifted(a), B = lifted(b), P = lifted(p), Q = lifted(q);
     const double before = std::min(minAngle3(A, P, Q), minAngle3(B, Q, P));
     const double after = std::min(minAngle3(A, B, Q), minAngle3(B, A, P));
+    // Nor into a crease sharper than a right angle across the new edge: steep triangles have good
+    // angles, but two of them meeting in a knife-edge ridge nearly fold onto each other.
+    const double crease = normalsCosine(A, B, Q, P);
+    if (crease < 0.0 && crease < normalsCosine(P, Q, A, B))
+      return false;
     return after > before + 1e-9;
   };
   // The worst triangles' edges are taken first (the queue pops from the back): the flips then settle
