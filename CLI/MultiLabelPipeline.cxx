@@ -212,7 +212,11 @@ PipelineResult runMultiLabelPipeline(const PipelineSettings& settings, ProgressR
         record();
         continue;
       }
-      const ContourStack stack = extractContours(mask);
+      // The same contour preparation as the single-mesh path (SliceMeshPipeline).
+      const auto spacing = mask->GetSpacing();
+      const ContourStack stack = prepareContours(extractContours(mask, settings.contours.smoothingSigma),
+                                                 settings.contours, settings.preparation,
+                                                 { spacing[0], spacing[1], spacing[2] });
       const SliceFrame frame = sliceFrameOf(mask);
       ReconstructionOptions options = settings.reconstruction;
       options.progress = nullptr;

@@ -76,7 +76,9 @@ ContourPreparation resolvedPreparation(ContourPreparation mode, double pixelX, d
   // Near-isotropic voxels: the traced contours of adjacent slices coincide along the voxel walls,
   // which the tiling turns into well-shaped rows; smoothing breaks that coincidence and, measured
   // on the benchmark's phantoms at 1 mm, costs more in angle quality and triangles than it gains
-  // in distance. Thick slices: smoothing and longer contour edges win on all three.
+  // in distance. Thick slices: smoothing and longer contour edges win on distance and triangle
+  // count, but lose on angles (6-13% of triangles under 30 degrees instead of 0.4-1.7%), which is
+  // why this is an option and Traced the default.
   return sliceSpacing >= 2.0 * std::min(pixelX, pixelY) ? ContourPreparation::Smoothed : ContourPreparation::Traced;
 }
 

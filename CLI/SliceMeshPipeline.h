@@ -30,7 +30,7 @@ enum class ContourPreparation
 
 struct ContourPreparationOptions
 {
-  ContourPreparation mode = ContourPreparation::Automatic;
+  ContourPreparation mode = ContourPreparation::Traced; ///< the best-shaped triangles (see the README's benchmark)
   int smoothingIterations = 30;  ///< Taubin lambda/mu pairs (Smoothed); 0: no smoothing
   double smoothingMaxShift = 0.0; ///< bound on each point's move (mm); 0: 0.3 of the smaller pixel side
 };

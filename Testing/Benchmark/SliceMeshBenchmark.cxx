@@ -2,7 +2,7 @@
 // phantoms: the same rasterized label map goes through both, and both meshes are measured against
 // the exact surface. Not part of the test run; see the README for the command. SliceMesh runs as
 // the CLI does by default: contours prepared by cli::prepareContours with the default options
-// (Automatic: smoothed and resampled for thick slices, traced otherwise), then the reconstruction.
+// (Traced), then the reconstruction; and the same with smoothed contours (--contourPreparation Smoothed).
 //
 // Slicer's pipeline as in vtkBinaryLabelmapToClosedSurfaceConversionRule (Slicer 5.x, smoothing
 // factor 0.5, decimation off): pad the label map by one voxel, vtkDiscreteFlyingEdges3D in index
@@ -208,16 +208,12 @@ int main(int argc, char* argv[])
     {
       const GridSpec spec = gridAround(*named.phantom, grid.spacing, 2);
       const MaskVolume::Pointer mask = rasterizePhantom(*named.phantom, spec);
-      // The default, the preparation the automatic choice did not take, and no refinement.
-      const cli::ContourPreparation chosen =
-        cli::resolvedPreparation(cli::ContourPreparation::Automatic, grid.spacing[0], grid.spacing[1], grid.spacing[2]);
-      const bool smoothed = chosen == cli::ContourPreparation::Smoothed;
-      const cli::ContourPreparation other = smoothed ? cli::ContourPreparation::Traced : cli::ContourPreparation::Smoothed;
-      for (Row row : { sliceMesh(*named.phantom, mask, cli::ContourPreparation::Automatic, 30.0,
-                                 smoothed ? "SliceMesh (smoothed contours)" : "SliceMesh (traced contours)"),
-                       sliceMesh(*named.phantom, mask, other, 30.0,
-                                 smoothed ? "SliceMesh, traced contours" : "SliceMesh, smoothed contours"),
-                       sliceMesh(*named.phantom, mask, cli::ContourPreparation::Automatic, 0.0, "SliceMesh, no Steiner"),
+      // The default (traced contours), smoothed contours, and no refinement.
+      const cli::ContourPreparation byDefault = cli::ContourPreparationOptions{}.mode;
+      for (Row row : { sliceMesh(*named.phantom, mask, byDefault, 30.0, "SliceMesh (traced contours)"),
+                       sliceMesh(*named.phantom, mask, cli::ContourPreparation::Smoothed, 30.0,
+                                 "SliceMesh, smoothed contours"),
+                       sliceMesh(*named.phantom, mask, byDefault, 0.0, "SliceMesh, no Steiner"),
                        slicerPipeline(*named.phantom, mask) })
       {
         row.phantom = named.name;
