@@ -1,7 +1,6 @@
 #include "QualityReport.h"
 
-#include "ContourResampling.h"
-#include "ContourSimplification.h"
+#include "ContourResampling.h" // meanPointSpacing
 
 #include <algorithm>
 #include <cmath>
@@ -59,16 +58,6 @@ std::string percent(double fraction)
 }
 
 } // namespace
-
-ContourStack preprocessContours(const ContourStack& stack, const ContourOptions& options)
-{
-  ContourStack result = stack;
-  if (options.simplificationTolerance > 0.0)
-    result = simplifyContours(result, options.simplificationTolerance);
-  if (options.pointSpacing > 0.0)
-    result = resampleContours(result, options.pointSpacing);
-  return result;
-}
 
 void StageTimes::start(const std::string& stage)
 {

@@ -25,9 +25,6 @@ struct ContourOptions
   double pointSpacing = 0.0;            ///< resample to this spacing along the contours (mm)
 };
 
-/** Simplifies, then resamples (so a simplified staircase is resampled evenly); a copy when off. */
-ContourStack preprocessContours(const ContourStack& stack, const ContourOptions& options);
-
 /** Wall-clock time per stage, in the order the stages started. */
 class StageTimes
 {
