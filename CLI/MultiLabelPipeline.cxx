@@ -94,9 +94,7 @@ PipelineResult runMultiLabelPipeline(const PipelineSettings& settings, ProgressR
                                            "': " + error.message());
   }
   // A picture that cannot be rendered here (no X display) fails the run before any work or file.
-  std::string noSnapshot;
-  if (!settings.snapshotFile.empty() && !snapshotAvailable(&noSnapshot))
-    throw PipelineFailure(WriteFailed, "cannot render snapshot '" + settings.snapshotFile + "': " + noSnapshot);
+  requireSnapshotRenderer(settings.snapshotFile);
   ColorTable colors;
   bool haveColors = false;
   if (!multi.colorTable.empty())

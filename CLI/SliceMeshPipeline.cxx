@@ -114,6 +114,13 @@ ContourStack prepareContours(const ContourStack& traced, const ContourOptions& c
   return result;
 }
 
+void requireSnapshotRenderer(const std::string& snapshotFile)
+{
+  std::string reason;
+  if (!snapshotFile.empty() && !snapshotAvailable(&reason))
+    throw PipelineFailure(WriteFailed, "cannot render snapshot '" + snapshotFile + "': " + reason);
+}
+
 std::vector<ProgressStage> pipelineStages()
 {
   // Weights: rough shares of a typical run's time, so the bar moves evenly.
@@ -159,6 +166,8 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
     ::close(descriptor);
     ::unlink(probe.c_str());
   }
+  // ... and a picture that cannot be rendered here fails the run now, not after the mesh is written.
+  requireSnapshotRenderer(settings.snapshotFile);
 
   startStage(Reading);
   const ScalarVolume::Pointer volume = guarded(UnreadableInput, [&] { return readVolume(settings.inputVolume); });

@@ -95,6 +95,11 @@ private:
   ExitCode Code;
 };
 
+/** Throws PipelineFailure(WriteFailed) when a snapshot is asked for (snapshotFile not empty) but
+ *  cannot be rendered here (no X display, MeshSnapshot.h's snapshotAvailable): both the single- and
+ *  the multi-label path call it before any work, so such a run writes no file. */
+void requireSnapshotRenderer(const std::string& snapshotFile);
+
 /** The stages, in order, as ProgressReporter shows them. */
 std::vector<ProgressStage> pipelineStages();
 

@@ -391,5 +391,34 @@ TEST(EndToEnd, MultiLabelSnapshotShowsEveryLabel)
   EXPECT_FALSE(fs::exists(folder / "no.png"));
 }
 
+TEST(EndToEnd, SnapshotWithoutDisplayFailsBeforeAnyWorkOnBothPaths)
+{
+  // No xvfb-run and DISPLAY unset: the single-label path must fail as the multi-label one does,
+  // before reading the volume (no progress stage starts) and before writing anything.
+  const fs::path folder = freshFolder("e2e-snapshot-no-display");
+  const fs::path input = twoBoxesLabelMap(folder);
+  const fs::path png = folder / "picture.png";
+  auto runWithoutDisplay = [&](const std::string& options, const fs::path& output)
+  {
+    return runCommand("env -u DISPLAY " + quoted(SLICEMESH_EXECUTABLE) + " " + options + " --snapshot " +
+                      quoted(png.string()) + " " + quoted(input.string()) + " " + quoted(output.string()));
+  };
+  const RunResult single = runWithoutDisplay("--label 1", folder / "single.vtp");
+  const RunResult multi = runWithoutDisplay("--splitLabels", folder / "multi.vtp");
+  const std::string expected =
+    "SliceMesh: error: cannot render snapshot '" + png.string() + "': no X display (DISPLAY is not set); run under xvfb-run";
+  for (const RunResult* r : { &single, &multi })
+  {
+    EXPECT_EQ(r->exitCode, 6) << r->err;
+    EXPECT_EQ(linesOf(r->err), std::vector<std::string>{ expected });
+    EXPECT_TRUE(stageNames(r->out, "filter-start").empty()) << r->out;
+  }
+  // Only the input is left in the folder: no mesh, no picture, no temporary file.
+  std::vector<std::string> files;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder))
+    files.push_back(entry.path().filename().string());
+  EXPECT_EQ(files, std::vector<std::string>{ input.filename().string() });
+}
+
 } // namespace
 } // namespace slicemesh::testing
