@@ -70,9 +70,21 @@ PipelineSettings settingsFrom(const ParsedArguments& arguments)
   settings.undersampling.correspondenceDistance = arguments.number("correspondenceDistance");
   settings.undersampling.bridgeNonOverlapping = arguments.flag("bridgeNonOverlapping");
   settings.undersampling.maxSliceSpacingFactor = arguments.number("maxSliceSpacingFactor");
-  if (settings.undersampling.bridgeNonOverlapping && settings.undersampling.correspondenceDistance == 0.0)
+  settings.undersampling.sectionOverlap = arguments.number("sectionOverlap");
+  settings.undersampling.refineWeakOverlap = arguments.flag("refineWeakOverlap");
+  const bool bridging =
+    settings.undersampling.bridgeNonOverlapping && settings.undersampling.correspondenceDistance > 0.0;
+  if (settings.undersampling.bridgeNonOverlapping && !bridging)
   {
     std::cerr << "SliceMesh: warning: --bridgeNonOverlapping needs --correspondenceDistance > 0; nothing is bridged"
+              << std::endl;
+  }
+  // Slicer passes the default too: only a changed value that nothing reads is worth a word.
+  if (!bridging && !settings.undersampling.refineWeakOverlap &&
+      settings.undersampling.sectionOverlap != UndersamplingOptions().sectionOverlap)
+  {
+    std::cerr << "SliceMesh: warning: --sectionOverlap is used only with --bridgeNonOverlapping or "
+                 "--refineWeakOverlap; it has no effect"
               << std::endl;
   }
   settings.minimumComponentVolume = arguments.number("minimumComponentVolume");

@@ -1,5 +1,6 @@
 // The table-driven parser, in process, against the real embedded XML and small hand-written ones.
 #include "CommandLine.h"
+#include "IntermediateSections.h"
 #include "ModuleXml.h"
 #include "SliceMeshTypes.h"
 
@@ -84,6 +85,32 @@ TEST(CommandLine, RejectsBadInputWithOneLineMessages)
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
   }
   EXPECT_NE(errorOf({ "--coordinateSystem", "XYZ", "in", "out.vtp" }).find("LPS, RAS"), std::string::npos);
+}
+
+TEST(CommandLine, SectionOverlapOptionsReachTheirDefaultsAndRange)
+{
+  // The XML's defaults are the library's (UndersamplingOptions), so a run without the flags, or
+  // Slicer passing the defaults, meshes as the library does.
+  const ParsedArguments defaults = parse({ "in", "out.vtp" });
+  EXPECT_EQ(defaults.number("sectionOverlap"), UndersamplingOptions().sectionOverlap);
+  EXPECT_EQ(defaults.flag("refineWeakOverlap"), UndersamplingOptions().refineWeakOverlap);
+
+  const ParsedArguments given = parse({ "--sectionOverlap", "0.5", "--refineWeakOverlap", "in", "out.vtp" });
+  EXPECT_EQ(given.number("sectionOverlap"), 0.5);
+  EXPECT_TRUE(given.flag("refineWeakOverlap"));
+  EXPECT_EQ(parse({ "--sectionOverlap", "0.05", "in", "out.vtp" }).number("sectionOverlap"), 0.05);
+  EXPECT_EQ(parse({ "--sectionOverlap", "0.95", "in", "out.vtp" }).number("sectionOverlap"), 0.95);
+
+  // A share strictly between 0 and 1: 0 would be the paper's "any overlap", 1 asks for identical layers.
+  for (const std::string value : { "0", "0.01", "0.99", "1", "-0.5", "abc" })
+  {
+    const std::string message = errorOf({ "--sectionOverlap", value, "in", "out.vtp" });
+    EXPECT_NE(message.find("--sectionOverlap"), std::string::npos) << value << ": " << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+  EXPECT_NE(errorOf({ "--sectionOverlap", "1", "in", "out.vtp" }).find("outside the range 0.05 .. 0.95"),
+            std::string::npos);
+  EXPECT_NE(errorOf({ "--refineWeakOverlap=true", "in", "out.vtp" }), "(no error)") << "a switch takes no value";
 }
 
 TEST(CommandLine, HelpNeedsNoPositionalArguments)
