@@ -210,11 +210,16 @@ PipelineResult runMultiLabelPipeline(const PipelineSettings& settings, ProgressR
         record();
         continue;
       }
-      // The same contour preparation as the single-mesh path (SliceMeshPipeline).
+      // The same contour preparation and correspondence stage as the single-mesh path
+      // (SliceMeshPipeline): bridging and intermediate sections apply to every label.
       const auto spacing = mask->GetSpacing();
-      const ContourStack stack = prepareContours(extractContours(mask, settings.contours.smoothingSigma),
-                                                 settings.contours, settings.preparation,
-                                                 { spacing[0], spacing[1], spacing[2] });
+      const ContourStack prepared = prepareContours(extractContours(mask, settings.contours.smoothingSigma),
+                                                    settings.contours, settings.preparation,
+                                                    { spacing[0], spacing[1], spacing[2] });
+      SectionStatistics sections;
+      const ContourStack stack = insertIntermediateSections(prepared, settings.undersampling, &sections);
+      for (const std::string& note : sections.notes)
+        result.sections.notes.push_back("label " + std::to_string(extent.label) + " (" + entry.name + "): " + note);
       const SliceFrame frame = sliceFrameOf(mask);
       ReconstructionOptions options = settings.reconstruction;
       options.progress = nullptr;

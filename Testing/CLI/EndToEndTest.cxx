@@ -407,6 +407,24 @@ TEST(EndToEnd, RefineWeakOverlapAndSectionOverlapReachTheSections)
   EXPECT_GE(finer.volume, refined.volume);
 }
 
+TEST(EndToEnd, MultiLabelAppliesTheCorrespondenceOptions)
+{
+  // The per-label meshes go through the same correspondence stage as the single mesh.
+  const fs::path folder = freshFolder("e2e-multilabel-sections");
+  const fs::path input = slidingEllipse(folder);
+  auto triangles = [&](const std::string& name, const std::string& options)
+  {
+    const fs::path params = folder / (name + ".params");
+    const RunResult r = runSliceMesh("--splitLabels " + options + " --returnparameterfile " + quoted(params.string()) +
+                                     " " + quoted(input.string()) + " " + quoted((folder / (name + ".vtp")).string()));
+    EXPECT_EQ(r.exitCode, 0) << name << ": " << r.err;
+    std::map<std::string, std::string> values = returnParameterMap(params);
+    EXPECT_EQ(values["closed"], "true") << name;
+    return std::stod(values["triangles"]);
+  };
+  EXPECT_GT(triangles("refined", "--refineWeakOverlap"), triangles("plain", ""));
+}
+
 TEST(EndToEnd, SectionOverlapWithoutAnyUseWarns)
 {
   const fs::path folder = freshFolder("e2e-section-overlap-unused");
