@@ -24,22 +24,19 @@ constexpr int emptySegmentation = 4;
 /** Two boxes in a 16 x 16 x 10 label map with 1 x 1 x 2 mm voxels:
  *  label 1: i, j in [3, 9), k in [2, 6)  -> 6 x 6 x 8 mm = 288 mm^3 of voxels;
  *  label 2: i in [11, 14), j in [3, 7), k in [3, 7) -> 3 x 4 x 8 mm = 96 mm^3 of voxels. */
+unsigned char twoBoxesLabel(int i, int j, int k)
+{
+  if (i >= 3 && i < 9 && j >= 3 && j < 9 && k >= 2 && k < 6)
+    return 1;
+  if (i >= 11 && i < 14 && j >= 3 && j < 7 && k >= 3 && k < 7)
+    return 2;
+  return 0;
+}
+
 fs::path twoBoxesLabelMap(const fs::path& folder)
 {
   const fs::path path = folder / "two-boxes.mha";
-  writeMetaImage(path, { 16, 16, 10 }, { 1.0, 1.0, 2.0 },
-                 [](int i, int j, int k) -> unsigned char
-                 {
-                   if (i >= 3 && i < 9 && j >= 3 && j < 9 && k >= 2 && k < 6)
-                   {
-                     return 1;
-                   }
-                   if (i >= 11 && i < 14 && j >= 3 && j < 7 && k >= 3 && k < 7)
-                   {
-                     return 2;
-                   }
-                   return 0;
-                 });
+  writeMetaImage(path, { 16, 16, 10 }, { 1.0, 1.0, 2.0 }, twoBoxesLabel);
   return path;
 }
 
@@ -229,10 +226,8 @@ fs::path boxesWithSpecksLabelMap(const fs::path& folder)
   writeMetaImage(path, { 16, 16, 10 }, { 1.0, 1.0, 2.0 },
                  [](int i, int j, int k) -> unsigned char
                  {
-                   if (i >= 3 && i < 9 && j >= 3 && j < 9 && k >= 2 && k < 6)
-                     return 1;
-                   if (i >= 11 && i < 14 && j >= 3 && j < 7 && k >= 3 && k < 7)
-                     return 2;
+                   if (const unsigned char box = twoBoxesLabel(i, j, k))
+                     return box;
                    if (i == 14 && j == 14 && k == 8)
                      return 1;
                    if ((i == 1 && j == 14 && k == 1) || (i == 14 && j == 1 && k == 8))
