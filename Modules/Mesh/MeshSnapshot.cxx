@@ -40,14 +40,18 @@ bool snapshotAvailable(std::string* reason)
       *reason = "no X display (DISPLAY is not set); run under xvfb-run";
     return false;
   }
-  Display* connection = XOpenDisplay(nullptr);
+  // The probe's connection stays open until the program ends: closing the server's last client
+  // makes an Xvfb started without -noreset (as xvfb-run starts it) reset, and a renderer that
+  // connects during the reset, a fraction of a second later, fails ("bad X server connection").
+  static Display* connection = nullptr;
+  if (!connection)
+    connection = XOpenDisplay(nullptr);
   if (!connection)
   {
     if (reason)
       *reason = std::string("cannot open the X display '") + display + "'; run under xvfb-run";
     return false;
   }
-  XCloseDisplay(connection);
   return true;
 }
 
