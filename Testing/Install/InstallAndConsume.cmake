@@ -1,7 +1,7 @@
 # ctest -> cmake -P: install SliceMesh from BUILD_DIR into a fresh prefix under WORK_DIR, check the
 # layout (CLI module folder, headers, package files), then configure, build and run the consumer
 # project against that prefix. Arguments: BUILD_DIR, SOURCE_DIR (the consumer), WORK_DIR, CLI_DIR,
-# CXX_COMPILER, BUILD_TYPE.
+# CXX_COMPILER, BUILD_TYPE, CONSUMER_FLAGS (compile and link flags for the consumer, e.g. sanitizers).
 file(REMOVE_RECURSE ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
 
@@ -23,7 +23,8 @@ foreach(file ${CLI_DIR}/SliceMesh ${CLI_DIR}/SliceMesh.xml include/SliceMesh/Sur
 endforeach()
 
 run(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/consumer-build -DCMAKE_PREFIX_PATH=${prefix}
-    -DCMAKE_CXX_COMPILER=${CXX_COMPILER} -DCMAKE_BUILD_TYPE=${BUILD_TYPE})
+    -DCMAKE_CXX_COMPILER=${CXX_COMPILER} -DCMAKE_BUILD_TYPE=${BUILD_TYPE} "-DCMAKE_CXX_FLAGS=${CONSUMER_FLAGS}"
+    "-DCMAKE_EXE_LINKER_FLAGS=${CONSUMER_FLAGS}")
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/consumer-build)
 run(${WORK_DIR}/consumer-build/consumer)
 message(STATUS "installed SliceMesh found, linked and run by the consumer project")

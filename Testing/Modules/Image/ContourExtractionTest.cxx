@@ -241,9 +241,10 @@ TEST(ContourExtraction, CheckerboardNeverSharesPoints)
   expectSimpleAndSeparate(stack.slices[0]);
 }
 
-TEST(ContourExtraction, LargeMaskIsFast)
+TEST(ContourExtraction, LargeMask)
 {
-  // 512 x 512 x 300 voxels, a disc of varying radius in most slices.
+  // 512 x 512 x 300 voxels, a disc of varying radius in most slices. The time is printed, not
+  // asserted (speed is the benchmark's: README, "Limits").
   auto mask = makeMask({ 512, 512, 300 }, { 0.7, 0.7, 1.0 });
   unsigned char* voxel = mask->GetBufferPointer();
   for (long k = 0; k < 300; ++k)
@@ -261,7 +262,6 @@ TEST(ContourExtraction, LargeMaskIsFast)
   ASSERT_EQ(stack.slices.size(), 300u);
   EXPECT_TRUE(stack.slices[0].contours.empty());
   EXPECT_EQ(stack.slices[150].contours.size(), 1u);
-  EXPECT_LT(seconds, 3.0);
 }
 
 TEST(ContourExtraction, SliceFrameCopiesTheImageGeometry)
