@@ -212,10 +212,7 @@ PipelineResult runMultiLabelPipeline(const PipelineSettings& settings, ProgressR
       }
       // The same contour preparation and correspondence stage as the single-mesh path
       // (SliceMeshPipeline): bridging and intermediate sections apply to every label.
-      const auto spacing = mask->GetSpacing();
-      const ContourStack prepared = prepareContours(extractContours(mask, settings.contours.smoothingSigma),
-                                                    settings.contours, settings.preparation,
-                                                    { spacing[0], spacing[1], spacing[2] });
+      const ContourStack prepared = maskContours(mask, settings.contours, settings.preparation);
       SectionStatistics sections;
       const ContourStack stack = insertIntermediateSections(prepared, settings.undersampling, &sections);
       for (const std::string& note : sections.notes)

@@ -114,6 +114,14 @@ ContourStack prepareContours(const ContourStack& traced, const ContourOptions& c
   return result;
 }
 
+ContourStack maskContours(const MaskVolume* mask, const ContourOptions& contours,
+                          const ContourPreparationOptions& preparation)
+{
+  const auto spacing = mask->GetSpacing();
+  return prepareContours(extractContours(mask, contours.smoothingSigma), contours, preparation,
+                         { spacing[0], spacing[1], spacing[2] });
+}
+
 void requireSnapshotRenderer(const std::string& snapshotFile)
 {
   std::string reason;
@@ -193,14 +201,8 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   }
 
   startStage(Contours);
-  const ContourStack contours = guarded(MeshingFailed,
-                                        [&]
-                                        {
-                                          const auto spacing = mask->GetSpacing();
-                                          return prepareContours(extractContours(mask, settings.contours.smoothingSigma),
-                                                                 settings.contours, settings.preparation,
-                                                                 { spacing[0], spacing[1], spacing[2] });
-                                        });
+  const ContourStack contours =
+    guarded(MeshingFailed, [&] { return maskContours(mask, settings.contours, settings.preparation); });
   if (contourCount(contours) == 0)
   {
     throw PipelineFailure(EmptySegmentation, "the segmentation of '" + settings.inputVolume + "' has no contours");

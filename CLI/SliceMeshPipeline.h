@@ -51,6 +51,11 @@ double resolvedPointSpacing(const ContourOptions& contours, ContourPreparation r
 ContourStack prepareContours(const ContourStack& traced, const ContourOptions& contours,
                              const ContourPreparationOptions& preparation, const std::array<double, 3>& spacing);
 
+/** A mask's contours as the pipeline tiles them: traced (after the in-plane Gaussian of
+ *  contours.smoothingSigma, if any), then prepareContours with the mask's spacing. */
+ContourStack maskContours(const MaskVolume* mask, const ContourOptions& contours,
+                          const ContourPreparationOptions& preparation);
+
 struct PipelineSettings
 {
   std::string inputVolume;

@@ -89,11 +89,9 @@ Row sliceMesh(const Phantom& phantom, const MaskVolume* mask, cli::ContourPrepar
   Row row;
   row.method = method;
   const auto began = Clock::now();
-  const auto spacing = mask->GetSpacing();
   cli::ContourPreparationOptions preparationOptions;
   preparationOptions.mode = preparation;
-  const ContourStack stack =
-    cli::prepareContours(extractContours(mask), cli::ContourOptions{}, preparationOptions, { spacing[0], spacing[1], spacing[2] });
+  const ContourStack stack = cli::maskContours(mask, cli::ContourOptions{}, preparationOptions);
   ReconstructionOptions options;
   options.minAngleDegrees = minAngle;
   const TriangleMesh stackMesh = reconstructSurface(stack, options);

@@ -131,11 +131,9 @@ struct PreparedMesh
 
 PreparedMesh meshPrepared(const MaskVolume* mask, cli::ContourPreparation mode, const Phantom* phantom = nullptr)
 {
-  const auto spacing = mask->GetSpacing();
   cli::ContourPreparationOptions preparation;
   preparation.mode = mode;
-  const ContourStack stack =
-    cli::prepareContours(extractContours(mask), cli::ContourOptions{}, preparation, { spacing[0], spacing[1], spacing[2] });
+  const ContourStack stack = cli::maskContours(mask, cli::ContourOptions{}, preparation);
   PreparedMesh result;
   result.mesh = mapToPhysicalSpace(reconstructSurface(stack), sliceFrameOf(mask), CoordinateSystem::LPS);
   result.validation = validateMesh(result.mesh);
