@@ -146,11 +146,8 @@ std::vector<CDT::Edge> finiteEdgesInStableOrder(const CDT& cdt)
   return edges;
 }
 
-} // namespace
+class SpacingGrid; // below, after the Impl whose refinement uses it
 
-namespace
-{
-class SpacingGrid;
 } // namespace
 
 struct SlabOverlay::Impl
