@@ -88,16 +88,21 @@ MeshValidation validateMesh(const TriangleMesh& mesh)
       if (i < 0 || static_cast<std::size_t>(i) >= nPoints)
         throw Error("mesh: a triangle refers to a vertex that does not exist");
 
-  // Edges: directed uses tell orientation, undirected counts tell boundary and non-manifold edges.
+  // Edges: directed uses tell orientation, undirected counts tell boundary and non-manifold edges
+  // (and each undirected edge's first triangle, whose normal a second one is compared with: folds).
   std::unordered_map<std::uint64_t, int> directed;
-  std::unordered_map<std::uint64_t, int> undirected;
+  struct EdgeUse
+  {
+    int count = 0;
+    std::size_t firstTriangle = 0;
+  };
+  std::unordered_map<std::uint64_t, EdgeUse> undirected;
   std::vector<char> used(nPoints, 0);
   DisjointSets pieces(nPoints);
   double minAngle = M_PI;
   std::size_t below30 = 0;
   std::vector<std::array<double, 3>> normals;
   normals.reserve(mesh.triangles.size());
-  std::unordered_map<std::uint64_t, std::size_t> firstTriangleOfEdge;
   for (const Triangle& t : mesh.triangles)
   {
     const Point3& a = mesh.points[t[0]];
@@ -121,12 +126,12 @@ MeshValidation validateMesh(const TriangleMesh& mesh)
     {
       const std::int32_t p = t[i], q = t[(i + 1) % 3];
       ++directed[directedKey(p, q)];
-      const std::uint64_t edge = directedKey(std::min(p, q), std::max(p, q));
-      if (++undirected[edge] == 1)
-        firstTriangleOfEdge[edge] = normals.size() - 1;
+      EdgeUse& use = undirected[directedKey(std::min(p, q), std::max(p, q))];
+      if (++use.count == 1)
+        use.firstTriangle = normals.size() - 1;
       else
       { // unit normals nearly opposite: the triangles lie on top of each other
-        const std::array<double, 3>& m = normals[firstTriangleOfEdge[edge]];
+        const std::array<double, 3>& m = normals[use.firstTriangle];
         const std::array<double, 3>& n = normals.back();
         if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -foldCosine)
           ++v.foldedEdges;
@@ -138,11 +143,11 @@ MeshValidation validateMesh(const TriangleMesh& mesh)
   for (const auto& [key, count] : directed)
     if (count > 1)
       v.inconsistentEdges += count - 1;
-  for (const auto& [key, count] : undirected)
+  for (const auto& [key, use] : undirected)
   {
-    if (count == 1)
+    if (use.count == 1)
       ++v.boundaryEdges;
-    else if (count > 2)
+    else if (use.count > 2)
       ++v.nonManifoldEdges;
   }
 
