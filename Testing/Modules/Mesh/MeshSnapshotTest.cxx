@@ -116,6 +116,24 @@ TriangleMesh uvSphere(int rings, int sectors)
   return mesh;
 }
 
+/** Where a test's picture goes (output/snapshot/<name>), with no file of an earlier run there. */
+fs::path freshPicturePath(const std::string& name)
+{
+  const fs::path folder = fs::path(SLICEMESH_TEST_OUTPUT_DIR) / "snapshot";
+  fs::create_directories(folder);
+  const fs::path png = folder / name;
+  fs::remove(png);
+  return png;
+}
+
+SnapshotOptions smallPicture()
+{
+  SnapshotOptions options;
+  options.width = 320;
+  options.height = 240;
+  return options;
+}
+
 } // namespace
 
 TEST(MeshSnapshot, RendersANonBlankPictureColouredByQuality)
@@ -123,13 +141,8 @@ TEST(MeshSnapshot, RendersANonBlankPictureColouredByQuality)
   std::string reason;
   if (!snapshotAvailable(&reason))
     GTEST_SKIP() << "no X display and no Xvfb could be started: " << reason;
-  const fs::path folder = fs::path(SLICEMESH_TEST_OUTPUT_DIR) / "snapshot";
-  fs::create_directories(folder);
-  const fs::path png = folder / "sphere.png";
-  fs::remove(png);
-  SnapshotOptions options;
-  options.width = 320;
-  options.height = 240;
+  const fs::path png = freshPicturePath("sphere.png");
+  const SnapshotOptions options = smallPicture();
   // One sphere of good triangles, one of slivers (6 rings, 120 sectors: angles of a few degrees).
   TriangleMesh mesh = uvSphere(16, 24);
   appendUvSphere(mesh, 6, 120, 25.0);
@@ -186,13 +199,8 @@ TEST(MeshSnapshot, SeveralMeshesEachInItsColour)
   std::string reason;
   if (!snapshotAvailable(&reason))
     GTEST_SKIP() << "no X display and no Xvfb could be started: " << reason;
-  const fs::path folder = fs::path(SLICEMESH_TEST_OUTPUT_DIR) / "snapshot";
-  fs::create_directories(folder);
-  const fs::path png = folder / "two-labels.png";
-  fs::remove(png);
-  SnapshotOptions options;
-  options.width = 320;
-  options.height = 240;
+  const fs::path png = freshPicturePath("two-labels.png");
+  const SnapshotOptions options = smallPicture();
   // Two spheres side by side, as two labels merged: the left one blue, the right one red.
   TriangleMesh meshes = uvSphere(16, 24);
   const std::size_t first = meshes.triangles.size();
