@@ -1,6 +1,7 @@
 #include "ContourConstraints.h"
 
 #include "ContourNesting.h"
+#include "PlanarGeometry.h"
 #include "PolygonProximity.h"
 
 #include <algorithm>
@@ -11,14 +12,6 @@ namespace slicemesh
 
 namespace
 {
-
-double perimeter(const Polygon2& polygon)
-{
-  double length = 0.0;
-  for (std::size_t i = 0; i < polygon.size(); ++i)
-    length += distance(polygon[i], polygon[(i + 1) % polygon.size()]);
-  return length;
-}
 
 /** count points at equal arc-length steps along the closed polygon, starting at its first vertex. */
 std::vector<Point2> resampleEvenly(const Polygon2& polygon, std::size_t count)

@@ -10,18 +10,6 @@
 
 namespace slicemesh
 {
-namespace
-{
-
-double perimeter(const Polygon2& contour)
-{
-  double length = 0.0;
-  for (std::size_t i = 0; i < contour.size(); ++i)
-    length += distance(contour[i], contour[(i + 1) % contour.size()]);
-  return length;
-}
-
-} // namespace
 
 Polygon2 resampleContour(const Polygon2& contour, double spacing)
 {

@@ -63,14 +63,6 @@ void offsetAlongNormals(Polygon2& points, double offset)
   points.swap(moved);
 }
 
-double perimeter(const Polygon2& polygon)
-{
-  double length = 0.0;
-  for (std::size_t i = 0; i < polygon.size(); ++i)
-    length += distance(polygon[i], polygon[(i + 1) % polygon.size()]);
-  return length;
-}
-
 } // namespace
 
 void offsetToArea(Polygon2& contour, double area, const Polygon2* anchor, double maxDisplacement)

@@ -211,14 +211,6 @@ Polygon2 translated(const Polygon2& polygon, double dx, double dy)
   return moved;
 }
 
-double perimeter(const Polygon2& polygon)
-{
-  double length = 0.0;
-  for (std::size_t i = 0; i < polygon.size(); ++i)
-    length += distance(polygon[i], polygon[(i + 1) % polygon.size()]);
-  return length;
-}
-
 /** How far z is compressed in the frame of a fit over a slab dz thick whose contours are `thickness`
  *  wide (see ShearedFit). */
 double zCompression(double thickness, double dz)

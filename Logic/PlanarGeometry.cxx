@@ -29,6 +29,14 @@ double twiceSignedArea(const Polygon2& polygon)
   return sum;
 }
 
+double perimeter(const Polygon2& polygon)
+{
+  double length = 0.0;
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    length += distance(polygon[i], polygon[(i + 1) % polygon.size()]);
+  return length;
+}
+
 int orientation(const Point2& a, const Point2& b, const Point2& c)
 {
   switch (CGAL::orientation(toCgal(a), toCgal(b), toCgal(c)))

@@ -12,6 +12,9 @@ namespace slicemesh
 /** Twice the signed area of a closed polygon: positive when counter-clockwise. */
 double twiceSignedArea(const Polygon2& polygon);
 
+/** Length of a closed polygon's boundary, the closing edge included. */
+double perimeter(const Polygon2& polygon);
+
 /** Robust orientation of (a, b, c): +1 left turn, -1 right turn, 0 collinear (exact predicate). */
 int orientation(const Point2& a, const Point2& b, const Point2& c);
 

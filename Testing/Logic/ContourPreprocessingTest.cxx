@@ -41,14 +41,6 @@ double distanceToPolygon(const Point2& p, const Polygon2& polygon)
   return d;
 }
 
-double perimeter(const Polygon2& polygon)
-{
-  double length = 0.0;
-  for (std::size_t i = 0; i < polygon.size(); ++i)
-    length += distance(polygon[i], polygon[(i + 1) % polygon.size()]);
-  return length;
-}
-
 /** The marching-squares contours of a binary image on a 1 mm grid: value -1 (inside) at the nodes
  *  where inside(x, y) holds, +1 elsewhere, traced at 0 (the midpoints of inside-outside edges, as
  *  the binary mask's 0.5 level): the voxel staircase. */
