@@ -1,0 +1,87 @@
+#include "SurfaceFinishing.h"
+
+namespace slicemesh
+{
+namespace
+{
+
+/** Why `candidate` may not replace the tiling; empty when it may. */
+std::string rejection(const MeshValidation& candidate, const MeshValidation& tiling)
+{
+  if (!candidate.valid())
+    return candidate.summary();
+  if (candidate.components != tiling.components || candidate.eulerCharacteristic != tiling.eulerCharacteristic)
+  {
+    return "its topology changed (" + std::to_string(candidate.components) + " components and Euler characteristic " +
+           std::to_string(candidate.eulerCharacteristic) + " instead of " + std::to_string(tiling.components) +
+           " and " + std::to_string(tiling.eulerCharacteristic) + ")";
+  }
+  return {};
+}
+
+} // namespace
+
+const char* finishName(SurfaceFinish finish)
+{
+  switch (finish)
+  {
+    case SurfaceFinish::Remeshed:
+      return "Remeshed";
+    case SurfaceFinish::Smoothed:
+      return "Smoothed";
+    case SurfaceFinish::Tiled:
+      break;
+  }
+  return "Tiled";
+}
+
+FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& tilingValidation,
+                              const SurfaceFinishingOptions& options)
+{
+  FinishedSurface result{ tiling, tilingValidation, SurfaceFinish::Tiled, {} };
+  if (options.finish == SurfaceFinish::Tiled)
+    return result;
+  if (!tilingValidation.valid())
+  {
+    result.fallback = "the tiling is not a valid surface, so it is not finished";
+    return result;
+  }
+
+  TriangleMesh smoothed = tiling;
+  smoothSurface(smoothed, options.smoothing);
+  if (options.finish == SurfaceFinish::Remeshed)
+  {
+    TriangleMesh remeshed;
+    std::string why;
+    try
+    {
+      remeshed = remeshSurface(smoothed, options.remeshing);
+    }
+    catch (const Error& e)
+    {
+      why = e.what();
+    }
+    if (why.empty())
+    {
+      MeshValidation validation = validateMesh(remeshed);
+      why = rejection(validation, tilingValidation);
+      if (why.empty())
+        return { std::move(remeshed), validation, SurfaceFinish::Remeshed, {} };
+    }
+    result.fallback = "the remeshed surface was not kept: " + why;
+  }
+
+  MeshValidation validation = validateMesh(smoothed);
+  const std::string why = rejection(validation, tilingValidation);
+  if (why.empty())
+  {
+    result.mesh = std::move(smoothed);
+    result.validation = validation;
+    result.finish = SurfaceFinish::Smoothed;
+    return result;
+  }
+  result.fallback += (result.fallback.empty() ? "" : "; ") + std::string("the smoothed surface was not kept: ") + why;
+  return result;
+}
+
+} // namespace slicemesh

@@ -1,0 +1,49 @@
+// The finishing stage after the tiling: 3D smoothing and isotropic remeshing, kept only when the
+// result is still a valid surface of the same topology.
+#ifndef SurfaceFinishing_h
+#define SurfaceFinishing_h
+
+#include "MeshValidation.h"
+#include "SurfaceRemeshing.h"
+#include "SurfaceSmoothing.h"
+
+#include <string>
+
+namespace slicemesh
+{
+
+/** How far the tiling is finished. */
+enum class SurfaceFinish
+{
+  Remeshed, ///< smoothed in 3D, then remeshed to the target edge length (the default)
+  Smoothed, ///< smoothed in 3D; the tiling's triangles kept
+  Tiled     ///< the tiling as it is (the paper's surface: every vertex on its slice)
+};
+
+struct SurfaceFinishingOptions
+{
+  SurfaceFinish finish = SurfaceFinish::Remeshed;
+  SurfaceSmoothingOptions smoothing;
+  SurfaceRemeshingOptions remeshing;
+};
+
+struct FinishedSurface
+{
+  TriangleMesh mesh;
+  MeshValidation validation; ///< of `mesh`
+  SurfaceFinish finish = SurfaceFinish::Tiled; ///< what was applied (less than asked after a fallback)
+  std::string fallback; ///< why less was applied than asked; empty when all of it was
+};
+
+/** Finishes a tiling whose validation is given. A finished mesh is kept only if it is valid and has
+ *  the tiling's components and Euler characteristic; otherwise the smoothed mesh is tried, then the
+ *  tiling itself is returned, and `fallback` says why. An invalid tiling is returned as it is. */
+FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& tilingValidation,
+                              const SurfaceFinishingOptions& options);
+
+/** "Remeshed", "Smoothed", "Tiled". */
+const char* finishName(SurfaceFinish finish);
+
+} // namespace slicemesh
+
+#endif

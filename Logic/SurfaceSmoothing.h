@@ -1,0 +1,27 @@
+// Non-shrinking smoothing of a closed triangle mesh (Taubin's lambda/mu filter on the umbrella
+// operator): takes the voxel staircase out of a surface traced from a mask, in 3D.
+#ifndef SurfaceSmoothing_h
+#define SurfaceSmoothing_h
+
+#include "SliceMeshTypes.h"
+
+namespace slicemesh
+{
+
+struct SurfaceSmoothingOptions
+{
+  /** Number of lambda/mu step pairs; 0 leaves the mesh as it is. */
+  int iterations = 100;
+  /** Taubin's pass band k_PB = 1/lambda + 1/mu: mesh frequencies below it (the shape) pass, the
+   *  staircase of a mask (periods of a few edges) is damped. lambda is 0.5; mu follows from k_PB. */
+  double passBand = 0.02;
+};
+
+/** Smooths every vertex of the mesh: `iterations` pairs of p += lambda * L(p) and p += mu * L(p),
+ *  where L(p) is the mean of p's neighbours minus p. The connectivity is not changed.
+ *  G. Taubin, "A signal processing approach to fair surface design", SIGGRAPH 1995. */
+void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options);
+
+} // namespace slicemesh
+
+#endif
