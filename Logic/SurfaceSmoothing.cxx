@@ -1,6 +1,9 @@
 #include "SurfaceSmoothing.h"
 
+#include "DisjointSets.h"
+
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -67,6 +70,105 @@ void umbrellaStep(std::vector<Point3>& points, const VertexNeighbours& neighbour
   points.swap(scratch);
 }
 
+/** The connected component of every vertex, numbered 0..count-1 (a vertex in no triangle gets its own). */
+std::vector<std::size_t> componentOfVertices(const TriangleMesh& mesh, std::size_t& count)
+{
+  DisjointSets sets(mesh.points.size());
+  for (const Triangle& t : mesh.triangles)
+  {
+    sets.unite(static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[1]));
+    sets.unite(static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[2]));
+  }
+  std::vector<std::size_t> component(mesh.points.size());
+  std::vector<std::size_t> number(mesh.points.size(), mesh.points.size());
+  count = 0;
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+  {
+    const std::size_t root = sets.find(v);
+    if (number[root] == mesh.points.size())
+      number[root] = count++;
+    component[v] = number[root];
+  }
+  return component;
+}
+
+/** Signed volume and area of every component (by the component of each triangle's first vertex). */
+void measureComponents(const TriangleMesh& mesh, const std::vector<std::size_t>& component, std::vector<double>& volume,
+                       std::vector<double>& area)
+{
+  std::fill(volume.begin(), volume.end(), 0.0);
+  std::fill(area.begin(), area.end(), 0.0);
+  for (const Triangle& t : mesh.triangles)
+  {
+    const Point3& a = mesh.points[t[0]];
+    const Point3& b = mesh.points[t[1]];
+    const Point3& c = mesh.points[t[2]];
+    const double nx = (b.y - a.y) * (c.z - a.z) - (b.z - a.z) * (c.y - a.y);
+    const double ny = (b.z - a.z) * (c.x - a.x) - (b.x - a.x) * (c.z - a.z);
+    const double nz = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    const std::size_t k = component[static_cast<std::size_t>(t[0])];
+    volume[k] += (a.x * nx + a.y * ny + a.z * nz) / 6.0;
+    area[k] += 0.5 * std::sqrt(nx * nx + ny * ny + nz * nz);
+  }
+}
+
+/** Unit vertex normals: the sum of the area-weighted normals of the vertex's triangles. */
+std::vector<Point3> vertexNormals(const TriangleMesh& mesh)
+{
+  std::vector<Point3> normals(mesh.points.size());
+  for (const Triangle& t : mesh.triangles)
+  {
+    const Point3& a = mesh.points[t[0]];
+    const Point3& b = mesh.points[t[1]];
+    const Point3& c = mesh.points[t[2]];
+    const double nx = (b.y - a.y) * (c.z - a.z) - (b.z - a.z) * (c.y - a.y);
+    const double ny = (b.z - a.z) * (c.x - a.x) - (b.x - a.x) * (c.z - a.z);
+    const double nz = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    for (std::int32_t v : t)
+    {
+      normals[v].x += nx;
+      normals[v].y += ny;
+      normals[v].z += nz;
+    }
+  }
+  for (Point3& n : normals)
+  {
+    const double length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+    if (length > 0.0)
+      n = { n.x / length, n.y / length, n.z / length };
+  }
+  return normals;
+}
+
+/** Gives every component back the signed volume it had (`target`) by moving its vertices along their
+ *  normals by one common distance (a few Newton steps: the volume grows by the area per unit of
+ *  offset). Taubin's filter keeps large shapes, but shrinks a structure a few edges across, whose
+ *  whole shape lies above the pass band: a vessel two voxels wide would lose half its volume. */
+void restoreVolumes(TriangleMesh& mesh, const std::vector<std::size_t>& component, const std::vector<double>& target)
+{
+  std::vector<double> volume(target.size()), area(target.size()), offset(target.size());
+  for (int step = 0; step < 4; ++step)
+  {
+    measureComponents(mesh, component, volume, area);
+    bool done = true;
+    for (std::size_t k = 0; k < target.size(); ++k)
+    {
+      offset[k] = area[k] > 0.0 ? (target[k] - volume[k]) / area[k] : 0.0;
+      done = done && std::abs(target[k] - volume[k]) <= 1e-9 * std::abs(target[k]);
+    }
+    if (done)
+      return;
+    const std::vector<Point3> normals = vertexNormals(mesh);
+    for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    {
+      const double d = offset[component[v]];
+      mesh.points[v].x += d * normals[v].x;
+      mesh.points[v].y += d * normals[v].y;
+      mesh.points[v].z += d * normals[v].z;
+    }
+  }
+}
+
 } // namespace
 
 void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options)
@@ -77,6 +179,11 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options)
     throw Error("surface smoothing: the pass band must lie between 0 and 1");
   const double lambda = 0.5;
   const double mu = 1.0 / (options.passBand - 1.0 / lambda);
+  std::size_t components = 0;
+  const std::vector<std::size_t> component = componentOfVertices(mesh, components);
+  std::vector<double> volume(components), area(components);
+  measureComponents(mesh, component, volume, area);
+
   const VertexNeighbours neighbours = neighboursOf(mesh);
   std::vector<Point3> scratch(mesh.points.size());
   for (int i = 0; i < options.iterations; ++i)
@@ -84,6 +191,7 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options)
     umbrellaStep(mesh.points, neighbours, lambda, scratch);
     umbrellaStep(mesh.points, neighbours, mu, scratch);
   }
+  restoreVolumes(mesh, component, volume);
 }
 
 } // namespace slicemesh

@@ -18,7 +18,9 @@ struct SurfaceSmoothingOptions
 };
 
 /** Smooths every vertex of the mesh: `iterations` pairs of p += lambda * L(p) and p += mu * L(p),
- *  where L(p) is the mean of p's neighbours minus p. The connectivity is not changed.
+ *  where L(p) is the mean of p's neighbours minus p; then gives every connected component its signed
+ *  volume back by one offset along the vertex normals (small structures, a few edges across, shrink
+ *  under the filter). The connectivity is not changed.
  *  G. Taubin, "A signal processing approach to fair surface design", SIGGRAPH 1995. */
 void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options);
 

@@ -1,0 +1,143 @@
+// The finishing stage (3D smoothing and isotropic remeshing after the tiling) on analytic phantoms,
+// on the grids of PhantomMeshTest: the surface gets closer to the exact one than the tiling, with
+// fewer triangles than flying edges makes on the same grid and under 1% of them with an angle under
+// 30 degrees; and it stays a valid surface of the tiling's topology, thin tubes included.
+#include "Box.h"
+#include "CappedCylinder.h"
+#include "PhantomMeshing.h"
+#include "Sphere.h"
+#include "SurfaceFinishing.h"
+#include "Torus.h"
+#include "TubeTree.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+using namespace slicemesh;
+using namespace slicemesh::testing;
+
+namespace
+{
+
+struct Grid
+{
+  const char* name;
+  std::array<double, 3> spacing;
+  Matrix3 direction;
+};
+
+std::vector<Grid> grids()
+{
+  Matrix3 mirrored = Matrix3::Identity();
+  mirrored(0, 0) = -1.0;
+  return { { "iso1mm", { 1.0, 1.0, 1.0 }, Matrix3::Identity() },
+           { "aniso08x08x3", { 0.8, 0.8, 3.0 }, Matrix3::Identity() },
+           { "oblique", { 0.9, 1.1, 2.0 }, rotation({ 1.0, 2.0, 0.5 }, 0.6) },
+           { "mirrored", { 1.0, 0.7, 1.5 }, mirrored * rotation({ 0.0, 0.0, 1.0 }, 0.3) } };
+}
+
+double meanDistance(const Phantom& phantom, const TriangleMesh& mesh)
+{
+  double sum = 0.0;
+  for (const Point3& p : mesh.points)
+    sum += distanceToSurface(phantom, p);
+  return sum / mesh.points.size();
+}
+
+/** Flying edges' triangle count on this grid for a surface of this area (SurfaceRemeshing.h). */
+double flyingEdgesTriangles(double area, const std::array<double, 3>& s)
+{
+  return area * (1.0 / (s[0] * s[1]) + 1.0 / (s[0] * s[2]) + 1.0 / (s[1] * s[2]));
+}
+
+struct Finished
+{
+  PhantomMeshResult tiling;
+  FinishedSurface surface;
+  double tilingDistance = 0.0, finishedDistance = 0.0;
+};
+
+Finished finish(const Phantom& phantom, const Grid& grid)
+{
+  Finished f;
+  f.tiling = meshPhantom(phantom, grid.spacing, grid.direction);
+  SurfaceFinishingOptions options;
+  options.remeshing.targetEdgeLength = automaticEdgeLength(grid.spacing);
+  // Physical space is the slice frame moved rigidly (mirrored or not): smoothing and remeshing do
+  // not see the difference.
+  f.surface = finishSurface(f.tiling.mesh, f.tiling.validation, options);
+  f.tilingDistance = meanDistance(phantom, f.tiling.mesh);
+  f.finishedDistance = meanDistance(phantom, f.surface.mesh);
+  const MeshValidation& v = f.surface.validation;
+  std::printf("%-13s %s%s; %zu -> %zu triangles (flying edges ~%.0f), under 30 deg %.2f%%, smallest %.1f deg, "
+              "mean distance %.3f -> %.3f mm, volume %.1f -> %.1f mm^3\n",
+              grid.name, finishName(f.surface.finish), f.surface.fallback.c_str(), f.tiling.mesh.triangles.size(),
+              f.surface.mesh.triangles.size(), flyingEdgesTriangles(v.area, grid.spacing),
+              100.0 * v.fractionAnglesBelow30, v.minAngleDegrees, f.tilingDistance, f.finishedDistance,
+              f.tiling.validation.volume, v.volume);
+  return f;
+}
+
+/** What every finished phantom must do. `closer`: the finished mean distance over the tiling's. */
+void expectFinished(const Phantom& phantom, const Grid& grid, double closer)
+{
+  const Finished f = finish(phantom, grid);
+  const MeshValidation& v = f.surface.validation;
+  EXPECT_EQ(f.surface.finish, SurfaceFinish::Remeshed) << f.surface.fallback;
+  EXPECT_TRUE(v.valid()) << v.summary();
+  EXPECT_EQ(v.components, f.tiling.validation.components);
+  EXPECT_EQ(v.eulerCharacteristic, f.tiling.validation.eulerCharacteristic);
+  EXPECT_LT(v.fractionAnglesBelow30, 0.01);
+  EXPECT_LT(static_cast<double>(f.surface.mesh.triangles.size()), flyingEdgesTriangles(v.area, grid.spacing));
+  EXPECT_LT(f.finishedDistance, closer * f.tilingDistance);
+  // Taubin's filter keeps the volume; the remesh projects onto the smoothed surface.
+  EXPECT_NEAR(v.volume, f.tiling.validation.volume, 0.02 * std::abs(f.tiling.validation.volume));
+}
+
+} // namespace
+
+// Near-isotropic grids: the staircase is most of the tiling's error, and smoothing takes it out.
+// Measured: the finished mean distance is 0.35-0.45 of the tiling's at 1 mm.
+TEST(SurfaceFinishingPhantom, Sphere)
+{
+  const Sphere sphere(Vector3(0.3, -0.2, 0.1), 15.0);
+  for (const Grid& grid : grids())
+    expectFinished(sphere, grid, grid.spacing[2] > 2.5 ? 1.0 : 0.7);
+}
+
+TEST(SurfaceFinishingPhantom, TiltedTorus)
+{
+  const Torus torus(Vector3(0, 0, 0), Vector3(1, 0, 0.5), 14.0, 5.0);
+  for (const Grid& grid : grids())
+    expectFinished(torus, grid, grid.spacing[2] > 2.5 ? 1.0 : 0.7);
+}
+
+TEST(SurfaceFinishingPhantom, RotatedBox)
+{
+  const Box box(Vector3(0, 0, 0), Vector3(12, 8, 7), rotation({ 0, 1, 1 }, 0.5));
+  for (const Grid& grid : grids())
+    expectFinished(box, grid, 1.0);
+}
+
+TEST(SurfaceFinishingPhantom, ThinBranchingTubeKeepsItsVolume)
+{
+  // Tubes of radius 1.5 mm (three voxels across at 1 mm): Taubin's filter shrinks shapes whose whole
+  // cross section is above its pass band (without the volume restoration these tubes lost 16-42%),
+  // and edges of about a voxel cut chords across a 3 mm tube. Measured: the finished volume is
+  // 88-94% of the tiling's. (The tiling itself is 16-23% under the analytic volume here: contours
+  // of a few pixels lose their corners to marching squares; not this stage's doing.)
+  const TubeTree tubes({ { Vector3(0, 0, -12), Vector3(0, 0, 0) }, { Vector3(0, 0, 0), Vector3(8, 2, 10) },
+                         { Vector3(0, 0, 0), Vector3(-7, -3, 11) } },
+                       1.5);
+  for (const Grid& grid : grids())
+  {
+    if (grid.spacing[2] > 2.5)
+      continue; // 3 mm slices do not resolve a 3 mm tube
+    const Finished f = finish(tubes, grid);
+    EXPECT_TRUE(f.surface.validation.valid()) << f.surface.validation.summary();
+    EXPECT_EQ(f.surface.validation.eulerCharacteristic, f.tiling.validation.eulerCharacteristic);
+    EXPECT_EQ(f.surface.validation.components, 1u);
+    EXPECT_NEAR(f.surface.validation.volume, f.tiling.validation.volume, 0.15 * f.tiling.validation.volume);
+  }
+}
