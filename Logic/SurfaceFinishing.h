@@ -15,7 +15,7 @@ namespace slicemesh
 /** How far the tiling is finished. */
 enum class SurfaceFinish
 {
-  Remeshed, ///< smoothed in 3D, then remeshed to the target edge length (the default)
+  Remeshed, ///< remeshed to the target edge length, then smoothed in 3D (the default)
   Smoothed, ///< smoothed in 3D; the tiling's triangles kept
   Tiled     ///< the tiling as it is (the paper's surface: every vertex on its slice)
 };
@@ -36,8 +36,8 @@ struct FinishedSurface
 };
 
 /** Finishes a tiling whose validation is given. A finished mesh is kept only if it is valid and has
- *  the tiling's components and Euler characteristic; otherwise the smoothed mesh is tried, then the
- *  tiling itself is returned, and `fallback` says why. An invalid tiling is returned as it is. */
+ *  the tiling's components and Euler characteristic; otherwise the smoothed tiling is tried, then
+ *  the tiling itself is returned, and `fallback` says why. An invalid tiling is returned as it is. */
 FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& tilingValidation,
                               const SurfaceFinishingOptions& options);
 

@@ -11,10 +11,10 @@ namespace slicemesh
 struct SurfaceSmoothingOptions
 {
   /** Number of lambda/mu step pairs; 0 leaves the mesh as it is. */
-  int iterations = 100;
+  int iterations = 150;
   /** Taubin's pass band k_PB = 1/lambda + 1/mu: mesh frequencies below it (the shape) pass, the
    *  staircase of a mask (periods of a few edges) is damped. lambda is 0.5; mu follows from k_PB. */
-  double passBand = 0.02;
+  double passBand = 0.01;
 };
 
 /** Smooths every vertex of the mesh: `iterations` pairs of p += lambda * L(p) and p += mu * L(p),
