@@ -2,7 +2,9 @@
 // phantoms: the same rasterized label map goes through both, and both meshes are measured against
 // the exact surface. Not part of the test run; see the README for the command. SliceMesh runs as
 // the CLI does by default: contours prepared by cli::prepareContours with the default options
-// (Traced), then the reconstruction; and the same with smoothed contours (--contourPreparation Smoothed).
+// (Traced), the reconstruction, then the finishing stage (remeshed and smoothed in 3D); and the same
+// with the smoothed tiling only, with the tiling as it is (the paper's surface), and with the tiling
+// without Steiner points.
 //
 // Slicer's pipeline as in vtkBinaryLabelmapToClosedSurfaceConversionRule (Slicer 5.x, smoothing
 // factor 0.5, decimation off): pad the label map by one voxel, vtkDiscreteFlyingEdges3D in index
@@ -19,6 +21,7 @@
 #include "PhantomCombinators.h"
 #include "PhantomGrid.h"
 #include "Sphere.h"
+#include "SurfaceFinishing.h"
 #include "SurfaceReconstruction.h"
 #include "ContourResampling.h"
 #include "IntermediateSections.h"
@@ -84,7 +87,7 @@ void measure(Row& row, const TriangleMesh& physical, const Phantom& phantom)
 /** SliceMesh as the CLI runs it by default (contour preparation included), with the preparation
  *  mode and the refinement as given. */
 Row sliceMesh(const Phantom& phantom, const MaskVolume* mask, cli::ContourPreparation preparation, double minAngle,
-              const std::string& method)
+              SurfaceFinish finish, const std::string& method)
 {
   Row row;
   row.method = method;
@@ -94,8 +97,15 @@ Row sliceMesh(const Phantom& phantom, const MaskVolume* mask, cli::ContourPrepar
   const ContourStack stack = cli::maskContours(mask, cli::ContourOptions{}, preparationOptions);
   ReconstructionOptions options;
   options.minAngleDegrees = minAngle;
-  const TriangleMesh stackMesh = reconstructSurface(stack, options);
-  const TriangleMesh physical = mapToPhysicalSpace(stackMesh, sliceFrameOf(mask), CoordinateSystem::LPS);
+  const TriangleMesh tiling = reconstructSurface(stack, options);
+  SurfaceFinishingOptions finishing;
+  finishing.finish = finish;
+  const auto spacing = mask->GetSpacing();
+  finishing.remeshing.targetEdgeLength = automaticEdgeLength({ spacing[0], spacing[1], spacing[2] });
+  const FinishedSurface finished = finishSurface(tiling, validateMesh(tiling), finishing);
+  if (!finished.fallback.empty())
+    std::fprintf(stderr, "\n%s: %s\n", method.c_str(), finished.fallback.c_str());
+  const TriangleMesh physical = mapToPhysicalSpace(finished.mesh, sliceFrameOf(mask), CoordinateSystem::LPS);
   row.seconds = std::chrono::duration<double>(Clock::now() - began).count();
   row.spacingRatio = meanPointSpacing(stack) / mask->GetSpacing()[2];
   measure(row, physical, phantom);
@@ -206,12 +216,12 @@ int main(int argc, char* argv[])
     {
       const GridSpec spec = gridAround(*named.phantom, grid.spacing, 2);
       const MaskVolume::Pointer mask = rasterizePhantom(*named.phantom, spec);
-      // The default (traced contours), smoothed contours, and no refinement.
+      // The default (finished), the smoothed tiling, the tiling, the tiling without refinement.
       const cli::ContourPreparation byDefault = cli::ContourPreparationOptions{}.mode;
-      for (Row row : { sliceMesh(*named.phantom, mask, byDefault, 30.0, "SliceMesh (traced contours)"),
-                       sliceMesh(*named.phantom, mask, cli::ContourPreparation::Smoothed, 30.0,
-                                 "SliceMesh, smoothed contours"),
-                       sliceMesh(*named.phantom, mask, byDefault, 0.0, "SliceMesh, no Steiner"),
+      for (Row row : { sliceMesh(*named.phantom, mask, byDefault, 30.0, SurfaceFinish::Remeshed, "SliceMesh (default: remeshed)"),
+                       sliceMesh(*named.phantom, mask, byDefault, 30.0, SurfaceFinish::Smoothed, "SliceMesh, smoothed tiling"),
+                       sliceMesh(*named.phantom, mask, byDefault, 30.0, SurfaceFinish::Tiled, "SliceMesh, tiling (paper)"),
+                       sliceMesh(*named.phantom, mask, byDefault, 0.0, SurfaceFinish::Tiled, "SliceMesh, tiling, no Steiner"),
                        slicerPipeline(*named.phantom, mask) })
       {
         row.phantom = named.name;
