@@ -10,7 +10,8 @@ namespace slicemesh::testing
 {
 
 PhantomMeshResult meshPhantom(const Phantom& phantom, const std::array<double, 3>& spacing, const Matrix3& direction,
-                              const ReconstructionOptions& options, const UndersamplingOptions& undersampling)
+                              const ReconstructionOptions& options, const UndersamplingOptions& undersampling,
+                              SurfaceFinish finish)
 {
   const GridSpec grid = gridAround(phantom, spacing, 2, direction);
   MaskVolume::Pointer mask = rasterizePhantom(phantom, grid);
@@ -25,6 +26,18 @@ PhantomMeshResult meshPhantom(const Phantom& phantom, const std::array<double, 3
   const TriangleMesh stackMesh = reconstructSurface(stack, options, &result.statistics);
   result.mesh = mapToPhysicalSpace(stackMesh, sliceFrameOf(mask), CoordinateSystem::LPS);
   result.validation = validateMesh(result.mesh);
+  if (finish != SurfaceFinish::Tiled)
+  {
+    // Physical space is the stack frame moved rigidly: the finishing does not see the difference.
+    SurfaceFinishingOptions finishing;
+    finishing.finish = finish;
+    finishing.remeshing.targetEdgeLength = automaticEdgeLength(spacing);
+    FinishedSurface finished = finishSurface(result.mesh, result.validation, finishing);
+    result.mesh = std::move(finished.mesh);
+    result.validation = finished.validation;
+    result.finish = finished.finish;
+    result.fallback = finished.fallback;
+  }
 
   result.lower = result.upper = result.mesh.points.front();
   for (const Point3& p : result.mesh.points)

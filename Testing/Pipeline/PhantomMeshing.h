@@ -8,6 +8,7 @@
 #include "MeshWriter.h"
 #include "Phantom.h"
 #include "PhantomGrid.h"
+#include "SurfaceFinishing.h"
 #include "SurfaceReconstruction.h"
 
 namespace slicemesh::testing
@@ -17,6 +18,8 @@ struct PhantomMeshResult
 {
   TriangleMesh mesh;               ///< physical (LPS) millimetres
   MeshValidation validation;
+  SurfaceFinish finish = SurfaceFinish::Tiled; ///< what the finishing stage applied
+  std::string fallback;            ///< why the finishing applied less than asked
   ReconstructionStatistics statistics;
   SectionStatistics sections;      ///< of the undersampling pre-stage (nothing inserted when it is off)
   double meanDistance = 0.0;       ///< mean over vertices of the distance to the exact surface (mm)
@@ -28,10 +31,13 @@ struct PhantomMeshResult
   Point3 lower, upper;             ///< the mesh's bounding box
 };
 
+/** `finish`: the finishing stage after the tiling (SurfaceFinishing.h) at the automatic edge length
+ *  of the grid, as the CLI runs it by default with Remeshed; Tiled measures the tiling itself. */
 PhantomMeshResult meshPhantom(const Phantom& phantom, const std::array<double, 3>& spacing,
                               const Matrix3& direction = Matrix3::Identity(),
                               const ReconstructionOptions& options = {},
-                              const UndersamplingOptions& undersampling = {});
+                              const UndersamplingOptions& undersampling = {},
+                              SurfaceFinish finish = SurfaceFinish::Tiled);
 
 /** A rotation by angle (radians) about a unit axis. */
 Matrix3 rotation(const Vector3& axis, double angle);
