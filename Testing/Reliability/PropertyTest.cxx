@@ -7,6 +7,7 @@
 // The default run meshes SLICEMESH_PROPERTY_CASES (default 80) masks per kind, 400 in all.
 // Longer: SLICEMESH_PROPERTY_CASES=2000 ctest -R Property ; one seed: SLICEMESH_PROPERTY_SEED=123
 // (with the kind's test filter). A failing seed is printed with a reproducer to paste.
+#include "PropertySeeds.h"
 #include "ReliabilitySupport.h"
 
 #include <gtest/gtest.h>
@@ -19,12 +20,6 @@ namespace slicemesh::testing
 {
 namespace
 {
-
-std::uint64_t environmentNumber(const char* name, std::uint64_t fallback)
-{
-  const char* value = std::getenv(name);
-  return value && *value ? std::strtoull(value, nullptr, 10) : fallback;
-}
 
 /** Seeds on which the Logic is known to fail: meshed and reported, but they do not fail the default
  *  run (SLICEMESH_PROPERTY_STRICT=1 counts them); a seed that passes again is named by the run.
@@ -61,13 +56,7 @@ struct Figures
 
 void runProperty(RandomMaskKind kind, std::uint64_t firstSeed)
 {
-  const std::uint64_t cases = environmentNumber("SLICEMESH_PROPERTY_CASES", 80);
-  std::uint64_t begin = firstSeed, end = firstSeed + cases;
-  if (const char* only = std::getenv("SLICEMESH_PROPERTY_SEED"); only && *only)
-  {
-    begin = std::strtoull(only, nullptr, 10);
-    end = begin + 1;
-  }
+  const auto [begin, end] = propertySeeds(firstSeed, 80);
   Figures figures;
   std::ostringstream failures;
   for (std::uint64_t seed = begin; seed < end; ++seed)

@@ -1,0 +1,37 @@
+// The seeds a property test runs, from the environment: SLICEMESH_PROPERTY_CASES masks per kind (a
+// test's own default otherwise) or the one seed SLICEMESH_PROPERTY_SEED. Shared by the tests that
+// draw randomMask, so one pair of variables lengthens or narrows all of them.
+#ifndef PropertySeeds_h
+#define PropertySeeds_h
+
+#include <cstdint>
+#include <cstdlib>
+
+namespace slicemesh::testing
+{
+
+struct SeedRange
+{
+  std::uint64_t begin = 0, end = 0; ///< seeds begin .. end - 1
+};
+
+inline std::uint64_t environmentNumber(const char* name, std::uint64_t fallback)
+{
+  const char* value = std::getenv(name);
+  return value && *value ? std::strtoull(value, nullptr, 10) : fallback;
+}
+
+/** firstSeed .. firstSeed + cases - 1, or only SLICEMESH_PROPERTY_SEED when it is set. */
+inline SeedRange propertySeeds(std::uint64_t firstSeed, std::uint64_t defaultCases)
+{
+  if (const char* only = std::getenv("SLICEMESH_PROPERTY_SEED"); only && *only)
+  {
+    const std::uint64_t seed = std::strtoull(only, nullptr, 10);
+    return { seed, seed + 1 };
+  }
+  return { firstSeed, firstSeed + environmentNumber("SLICEMESH_PROPERTY_CASES", defaultCases) };
+}
+
+} // namespace slicemesh::testing
+
+#endif
