@@ -105,6 +105,23 @@ PipelineSettings settingsFrom(const ParsedArguments& arguments)
                                                         : ContourPreparation::Automatic;
   settings.preparation.smoothingIterations = static_cast<int>(arguments.integer("contourSmoothingIterations"));
   settings.preparation.smoothingMaxShift = arguments.number("contourSmoothingMaxShift");
+  const std::string& finish = arguments.text("surfaceFinish");
+  settings.finishing.finish = finish == "Tiled"      ? SurfaceFinish::Tiled
+                              : finish == "Smoothed" ? SurfaceFinish::Smoothed
+                                                     : SurfaceFinish::Remeshed;
+  settings.finishing.remeshing.targetEdgeLength = arguments.number("targetEdgeLength"); // 0: automatic
+  settings.finishing.smoothing.iterations = static_cast<int>(arguments.integer("surfaceSmoothingIterations"));
+  settings.finishing.smoothing.passBand = arguments.number("surfaceSmoothingPassBand");
+  // The XML's range is inclusive (it sets a GUI slider); the pass band must lie strictly inside it
+  // (smoothSurface's precondition), so the ends are a usage error here, before any work.
+  if (!(settings.finishing.smoothing.passBand > 0.0 && settings.finishing.smoothing.passBand < 1.0))
+  {
+    std::ostringstream message;
+    message << "--surfaceSmoothingPassBand (Surface smoothing pass band): "
+            << arguments.text("surfaceSmoothingPassBand")
+            << " is outside the range 0 .. 1 (both excluded)";
+    throw PipelineFailure(BadArguments, message.str());
+  }
   settings.reportFile = arguments.text("report");
   settings.snapshotFile = arguments.text("snapshot");
   return settings;

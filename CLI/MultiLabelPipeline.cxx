@@ -223,11 +223,15 @@ PipelineResult runMultiLabelPipeline(const PipelineSettings& settings, ProgressR
       const TriangleMesh stackMesh = reconstructSurface(stack, options);
       if (stackMesh.triangles.empty())
         throw Error("the reconstruction produced no triangles");
-      outcome.validation = validateMesh(stackMesh);
-      outcome.quality = measureRun(stackMesh, stack);
-      outcome.quality.genus = genusOf(outcome.validation);
+      // Finished as in the single-mesh path, at the label mask's spacing.
+      const auto spacing = mask->GetSpacing();
+      const std::string who = "label " + std::to_string(extent.label) + " (" + entry.name + "): ";
+      const FinishedSurface finished =
+        finishAndMeasure(stackMesh, validateMesh(stackMesh), stack, settings.finishing,
+                         { spacing[0], spacing[1], spacing[2] }, who, outcome.quality);
+      outcome.validation = finished.validation;
       outcome.contourPoints = contourPoints(stack);
-      const TriangleMesh physical = mapToPhysicalSpace(stackMesh, frame, settings.coordinateSystem);
+      const TriangleMesh physical = mapToPhysicalSpace(finished.mesh, frame, settings.coordinateSystem);
 
       MeshAttributes attributes;
       const std::array<unsigned char, 3> rgb{ entry.rgba[0], entry.rgba[1], entry.rgba[2] };

@@ -1,5 +1,5 @@
 // One mesh per label of a label map: one pass to index the labels, then per label a cropped mask
-// -> contours -> reconstruction -> validation -> its own file, and all of them merged into the
+// -> contours -> reconstruction -> validation -> finishing -> its own file, all of them merged into the
 // output model with a per-triangle "Label" and "Color" (what 3D Slicer gets back).
 #ifndef MultiLabelPipeline_h
 #define MultiLabelPipeline_h

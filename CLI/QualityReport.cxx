@@ -76,11 +76,11 @@ std::vector<std::pair<std::string, double>> StageTimes::seconds() const
   return result;
 }
 
-RunQuality measureRun(const TriangleMesh& stackMesh, const ContourStack& stack)
+RunQuality measureRun(const TriangleMesh& finished, const TriangleMesh& tiling, const ContourStack& stack)
 {
   RunQuality quality;
-  quality.shape = measureMeshQuality(stackMesh);
-  quality.dirichlet = measureDirichletEnergy(stackMesh, stack);
+  quality.shape = measureMeshQuality(finished);
+  quality.dirichlet = measureDirichletEnergy(tiling, stack);
   quality.pointSpacing = meanPointSpacing(stack);
   quality.sliceSpacing = stack.sliceSpacing > 0.0 ? stack.sliceSpacing
                          : stack.slices.size() > 1 ? (stack.slices.back().z - stack.slices.front().z) / (stack.slices.size() - 1)
@@ -95,10 +95,26 @@ RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshVal
   combined.shape = measureMeshQuality(allTriangles);
   combined.genus = genusOf(summed);
   double points = 0.0;
+  bool first = true;
   for (const LabelReport& label : labels)
   {
     if (!label.meshed())
       continue;
+    const RunQuality& q = label.quality;
+    if (first)
+    {
+      combined.requestedFinish = q.requestedFinish;
+      combined.finish = q.finish;
+      combined.targetEdgeLength = q.targetEdgeLength; // every label's mask has the volume's spacing
+      combined.smoothingIterations = q.smoothingIterations;
+      combined.smoothingPassBand = q.smoothingPassBand;
+      first = false;
+    }
+    else if (combined.finish != q.finish)
+      combined.finish = "Mixed";
+    if (!q.fallback.empty())
+      combined.fallback += (combined.fallback.empty() ? "label " : "; label ") + std::to_string(label.label) + " (" +
+                           label.name + "): " + q.fallback;
     const DirichletEnergy& d = label.quality.dirichlet;
     combined.dirichlet.energy += d.energy;
     combined.dirichlet.tilingTriangles += d.tilingTriangles;
@@ -123,7 +139,13 @@ RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshVal
 std::string qualitySummary(const MeshValidation& v, const RunQuality& q)
 {
   std::ostringstream line;
-  line << v.vertices << " vertices, " << v.components << (v.components == 1 ? " component, " : " components, ")
+  line << "finish " << (q.finish.empty() ? "Tiled" : q.finish);
+  if (q.finish == "Remeshed")
+    line << " (target edge " << std::fixed << std::setprecision(2) << q.targetEdgeLength << " mm)";
+  else if (!q.fallback.empty())
+    line << " (" << q.requestedFinish << " asked; see the warning)";
+  line.unsetf(std::ios::floatfield);
+  line << ", " << v.vertices << " vertices, " << v.components << (v.components == 1 ? " component, " : " components, ")
        << (v.manifold() ? "manifold, " : "NOT manifold, ")
        << (!v.selfIntersectionChecked ? "self-intersections not checked, "
            : v.selfIntersections == 0   ? "no self-intersections, "
@@ -137,7 +159,8 @@ std::string qualitySummary(const MeshValidation& v, const RunQuality& q)
        << percent(q.shape.fractionBelow30) << ", <10 deg " << percent(q.shape.fractionBelow10) << std::setprecision(2)
        << ", aspect ratio mean " << q.shape.meanAspectRatio << " max " << q.shape.maxAspectRatio << std::setprecision(1)
        << ", area " << v.area << " mm^2, point/slice spacing " << std::setprecision(2)
-       << (q.sliceSpacing > 0.0 ? q.pointSpacing / q.sliceSpacing : 0.0) << std::setprecision(1) << ", Dirichlet energy "
+       << (q.sliceSpacing > 0.0 ? q.pointSpacing / q.sliceSpacing : 0.0) << std::setprecision(1)
+       << ", Dirichlet energy of the tiling "
        << q.dirichlet.energy << " mm^2";
   if (!q.stageSeconds.empty())
   {
@@ -158,6 +181,16 @@ void writeMeshBlocks(std::ostream& json, const std::string& indent, const MeshVa
   { json << indent << "  " << jsonString(key) << ": " << jsonNumber(value) << (last ? "\n" : ",\n"); };
   auto flag = [&](const char* key, bool value)
   { json << indent << "  " << jsonString(key) << ": " << (value ? "true" : "false") << ",\n"; };
+  // What was done to the tiling; the mesh and quality blocks below describe its result.
+  json << indent << "\"finishing\": {\n";
+  json << indent << "  \"finish\": " << jsonString(q.finish.empty() ? "Tiled" : q.finish) << ",\n";
+  json << indent << "  \"requested\": " << jsonString(q.requestedFinish.empty() ? "Tiled" : q.requestedFinish)
+       << ",\n";
+  number("targetEdgeLengthMm", q.targetEdgeLength);
+  number("smoothingIterations", q.smoothingIterations);
+  number("smoothingPassBand", q.smoothingPassBand);
+  json << indent << "  \"fallback\": " << (q.fallback.empty() ? "null" : jsonString(q.fallback)) << "\n";
+  json << indent << "},\n";
   json << indent << "\"mesh\": {\n";
   number("vertices", static_cast<double>(v.vertices));
   number("triangles", static_cast<double>(v.triangles));
@@ -191,6 +224,7 @@ void writeMeshBlocks(std::ostream& json, const std::string& indent, const MeshVa
   number("sliceSpacingMm", q.sliceSpacing);
   number("pointToSliceSpacingRatio", q.sliceSpacing > 0.0 ? q.pointSpacing / q.sliceSpacing : 0.0, true);
   json << indent << "},\n" << indent << "\"dirichletEnergy\": {\n";
+  json << indent << "  \"measuredOn\": \"the tiling, before finishing\",\n";
   number("energyMm2", q.dirichlet.energy);
   number("slopedTilingTriangles", static_cast<double>(q.dirichlet.tilingTriangles));
   number("flipCandidates", static_cast<double>(q.dirichlet.flipCandidates));

@@ -39,20 +39,29 @@ private:
 
 struct RunQuality
 {
-  MeshQuality shape;
-  DirichletEnergy dirichlet;
+  MeshQuality shape;         ///< of the mesh as written: the finished surface
+  DirichletEnergy dirichlet; ///< of the tiling, before finishing (the paper's optimality is the tiling's)
   long genus = -1;
+  std::string requestedFinish;   ///< "Remeshed", "Smoothed" or "Tiled" (finishName), as asked
+  std::string finish;            ///< as applied: less than asked after a fallback; "Mixed" over labels that differ
+  double targetEdgeLength = 0.0; ///< of the remeshing (mm), when Remeshed was asked; else 0
+  int smoothingIterations = 0;   ///< Taubin pairs, when Remeshed or Smoothed was asked; else 0
+  double smoothingPassBand = 0.0;
+  std::string fallback;          ///< why less was applied than asked (SurfaceFinishing.h); empty when all of it was
   double pointSpacing = 0.0;       ///< mean in-plane distance between contour points (mm)
   double sliceSpacing = 0.0;       ///< mm
   std::vector<std::pair<std::string, double>> stageSeconds;
 };
 
-/** Measures the stack-frame mesh and the contours it was built from. */
-RunQuality measureRun(const TriangleMesh& stackMesh, const ContourStack& stack);
+/** Measures a run in the stack frame: the shape of the mesh as written (`finished`), the Dirichlet
+ *  energy of the tiling it was finished from (measureDirichletEnergy needs the tiling's vertices on
+ *  the contours), and the contours' spacings. The finishing fields are left to the caller. */
+RunQuality measureRun(const TriangleMesh& finished, const TriangleMesh& tiling, const ContourStack& stack);
 
-/** "41649 vertices, 1 component, manifold, no self-intersections, genus 0, min angle 21.3 deg,
- *  <30 deg 0.4%, <10 deg 0.0%, aspect ratio mean 1.18 max 2.71, area 9126.4 mm^2, point/slice
- *  spacing 0.83, Dirichlet 812.3 mm^2; stages Reading 0.01 s, ..." */
+/** "finish Remeshed (target edge 1.10 mm), 41649 vertices, 1 component, manifold, no
+ *  self-intersections, genus 0, min angle 21.3 deg, <30 deg 0.4%, <10 deg 0.0%, aspect ratio mean
+ *  1.18 max 2.71, area 9126.4 mm^2, point/slice spacing 0.83, Dirichlet energy of the tiling 812.3
+ *  mm^2; stages Reading 0.01 s, ..." */
 std::string qualitySummary(const MeshValidation& validation, const RunQuality& quality);
 
 /** The figures of one label of a multi-label run (runMultiLabelPipeline), as the report lists it. */
@@ -75,7 +84,9 @@ struct LabelReport
 /** Combines the labels' figures into one for the whole run (their meshes taken together): shape
  *  measured on `allTriangles` (the merged mesh; angles do not change from stack frame to physical
  *  space), Dirichlet energies and counts summed (largest decreases: the largest), genus from the
- *  summed validation, spacings averaged over the labels weighted by their contour points. */
+ *  summed validation, spacings averaged over the labels weighted by their contour points. The
+ *  finish is the labels' when they agree, else "Mixed"; the fallbacks are joined, each after its
+ *  label. */
 RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshValidation& summed,
                            const TriangleMesh& allTriangles);
 

@@ -36,6 +36,7 @@ enum Stage : std::size_t
   Correspondence,
   Tiling,
   Validation,
+  Finishing,
   Writing
 };
 
@@ -122,6 +123,42 @@ ContourStack maskContours(const MaskVolume* mask, const ContourOptions& contours
                          { spacing[0], spacing[1], spacing[2] });
 }
 
+SurfaceFinishingOptions resolvedFinishing(const SurfaceFinishingOptions& finishing,
+                                          const std::array<double, 3>& spacing)
+{
+  SurfaceFinishingOptions resolved = finishing;
+  if (resolved.remeshing.targetEdgeLength <= 0.0)
+    resolved.remeshing.targetEdgeLength = automaticEdgeLength(spacing);
+  return resolved;
+}
+
+FinishedSurface finishAndMeasure(const TriangleMesh& tiling, const MeshValidation& tilingValidation,
+                                 const ContourStack& stack, const SurfaceFinishingOptions& finishing,
+                                 const std::array<double, 3>& spacing, const std::string& who, RunQuality& quality)
+{
+  const SurfaceFinishingOptions options = resolvedFinishing(finishing, spacing);
+  FinishedSurface finished = finishSurface(tiling, tilingValidation, options);
+  quality = measureRun(finished.mesh, tiling, stack);
+  quality.genus = genusOf(finished.validation);
+  quality.requestedFinish = finishName(options.finish);
+  quality.finish = finishName(finished.finish);
+  quality.fallback = finished.fallback;
+  if (options.finish == SurfaceFinish::Remeshed)
+    quality.targetEdgeLength = options.remeshing.targetEdgeLength;
+  if (options.finish != SurfaceFinish::Tiled)
+  {
+    quality.smoothingIterations = options.smoothing.iterations;
+    quality.smoothingPassBand = options.smoothing.passBand;
+  }
+  if (!finished.fallback.empty())
+  {
+    std::string line = who + "surface finishing: " + finished.fallback;
+    std::replace(line.begin(), line.end(), '\n', ' '); // one line: Slicer logs each line on its own
+    std::cerr << "SliceMesh: warning: " << line << std::endl;
+  }
+  return finished;
+}
+
 void requireSnapshotRenderer(const std::string& snapshotFile)
 {
   std::string reason;
@@ -138,6 +175,7 @@ std::vector<ProgressStage> pipelineStages()
            { "Correspondence", "Matching contours between slices; intermediate sections where asked", 0.5 },
            { "Tiling", "Tiling and refining the slabs between slices", 5.0 },
            { "Validation", "Checking that the mesh is a closed, oriented surface", 1.0 },
+           { "Finishing", "Remeshing and smoothing the surface in 3D", 2.0 },
            { "Writing", "Writing the mesh", 0.5 } };
 }
 
@@ -226,22 +264,27 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   }
 
   startStage(Validation);
-  result.validation = guarded(MeshingFailed, [&] { return validateMesh(stackMesh); });
+  const MeshValidation tilingValidation = guarded(MeshingFailed, [&] { return validateMesh(stackMesh); });
+
+  // From here on the mesh is the finished one: what is written, pictured and reported (only the
+  // Dirichlet energy stays the tiling's).
+  startStage(Finishing);
+  const auto spacing = mask->GetSpacing();
+  const FinishedSurface finished = guarded(
+    MeshingFailed,
+    [&]
+    {
+      return finishAndMeasure(stackMesh, tilingValidation, stack, settings.finishing,
+                              { spacing[0], spacing[1], spacing[2] }, "", result.quality);
+    });
+  result.validation = finished.validation;
 
   startStage(Writing);
-  guarded(WriteFailed,
-          [&]
-          {
-            writeMesh(mapToPhysicalSpace(stackMesh, frame, settings.coordinateSystem), settings.coordinateSystem,
-                      settings.outputModel);
-          });
-  result.quality = guarded(MeshingFailed, [&] { return measureRun(stackMesh, stack); });
-  result.quality.genus = genusOf(result.validation);
+  const TriangleMesh physical =
+    guarded(WriteFailed, [&] { return mapToPhysicalSpace(finished.mesh, frame, settings.coordinateSystem); });
+  guarded(WriteFailed, [&] { writeMesh(physical, settings.coordinateSystem, settings.outputModel); });
   if (!settings.snapshotFile.empty())
-  {
-    guarded(WriteFailed,
-            [&] { writeSnapshot(mapToPhysicalSpace(stackMesh, frame, settings.coordinateSystem), settings.snapshotFile); });
-  }
+    guarded(WriteFailed, [&] { writeSnapshot(physical, settings.snapshotFile); });
   progress.end();
 
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();

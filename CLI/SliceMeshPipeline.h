@@ -10,6 +10,7 @@
 #include "MeshWriter.h"
 #include "ProgressReporter.h"
 #include "QualityReport.h"
+#include "SurfaceFinishing.h"
 #include "SurfaceReconstruction.h"
 #include "VolumeSegmentation.h"
 
@@ -71,6 +72,9 @@ struct PipelineSettings
   ContourOptions contours;
   /** Smoothing and automatic resampling of the traced contours (before `contours` applies). */
   ContourPreparationOptions preparation;
+  /** What happens to the tiling (SurfaceFinishing.h): smoothed and remeshed by default. A target
+   *  edge length of 0 stands for automaticEdgeLength of the mask's spacing (resolvedFinishing). */
+  SurfaceFinishingOptions finishing{ SurfaceFinish::Remeshed, {}, { 0.0 } };
   std::string reportFile;   ///< JSON quality report to write; empty: none
   std::string snapshotFile; ///< PNG picture coloured by triangle quality; empty: none
   /** One mesh per label of a label map (runMultiLabelPipeline, MultiLabelPipeline.h). */
@@ -79,7 +83,7 @@ struct PipelineSettings
 
 struct PipelineResult
 {
-  MeshValidation validation; ///< of the mesh as written (measured in the stack frame: same volume)
+  MeshValidation validation; ///< of the finished mesh as written (measured in the stack frame: same volume)
   double seconds = 0.0;      ///< wall-clock time from reading to writing
   RunQuality quality;        ///< shape, Dirichlet energy, spacing ratio, seconds per stage
   SectionStatistics sections; ///< of the correspondence stage (intermediate sections inserted, notes)
@@ -100,6 +104,19 @@ private:
   ExitCode Code;
 };
 
+/** The finishing options for a mask of this spacing (mm): a target edge length of 0 becomes
+ *  automaticEdgeLength(spacing), so the remeshed surface's resolution follows the voxels. */
+SurfaceFinishingOptions resolvedFinishing(const SurfaceFinishingOptions& finishing,
+                                          const std::array<double, 3>& spacing);
+
+/** finishSurface with the options resolved for the mask's spacing, measured: the finished mesh's
+ *  shape and the tiling's Dirichlet energy (measureRun), the finish applied and its fallback. A
+ *  non-empty fallback is also printed as one "SliceMesh: warning: " line on stderr, after `who`
+ *  (empty, or "label 3 (Name): "). */
+FinishedSurface finishAndMeasure(const TriangleMesh& tiling, const MeshValidation& tilingValidation,
+                                 const ContourStack& stack, const SurfaceFinishingOptions& finishing,
+                                 const std::array<double, 3>& spacing, const std::string& who, RunQuality& quality);
+
 /** Throws PipelineFailure(WriteFailed) when a snapshot is asked for (snapshotFile not empty) but
  *  cannot be rendered here (no X display, MeshSnapshot.h's snapshotAvailable): both the single- and
  *  the multi-label path call it before any work, so such a run writes no file. */
@@ -109,7 +126,8 @@ void requireSnapshotRenderer(const std::string& snapshotFile);
 std::vector<ProgressStage> pipelineStages();
 
 /** readVolume -> segmentVolume -> extractContours -> insertIntermediateSections -> reconstructSurface -> validateMesh ->
- *  mapToPhysicalSpace -> writeMesh. An invalid mesh is still written (the caller decides what
+ *  finishSurface -> mapToPhysicalSpace -> writeMesh. The mesh written, its validation, shape,
+ *  snapshot and report are the finished surface's; the Dirichlet energy is the tiling's. An invalid mesh is still written (the caller decides what
  *  that means); any failure before the write throws PipelineFailure and writes nothing. */
 PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& progress);
 

@@ -3,6 +3,7 @@
 #include "IntermediateSections.h"
 #include "ModuleXml.h"
 #include "SliceMeshTypes.h"
+#include "SurfaceFinishing.h"
 
 #include <gtest/gtest.h>
 
@@ -111,6 +112,36 @@ TEST(CommandLine, SectionOverlapOptionsReachTheirDefaultsAndRange)
   EXPECT_NE(errorOf({ "--sectionOverlap", "1", "in", "out.vtp" }).find("outside the range 0.05 .. 0.95"),
             std::string::npos);
   EXPECT_NE(errorOf({ "--refineWeakOverlap=true", "in", "out.vtp" }), "(no error)") << "a switch takes no value";
+}
+
+TEST(CommandLine, SurfaceFinishingOptionsReachTheLibrarysDefaults)
+{
+  // The XML's defaults are SurfaceFinishingOptions' (the target edge length's 0 is "automatic":
+  // automaticEdgeLength of the mask's spacing, resolved by the pipeline).
+  const ParsedArguments defaults = parse({ "in", "out.vtp" });
+  const SurfaceFinishingOptions library;
+  EXPECT_EQ(defaults.text("surfaceFinish"), finishName(library.finish));
+  EXPECT_EQ(defaults.integer("surfaceSmoothingIterations"), library.smoothing.iterations);
+  EXPECT_EQ(defaults.number("surfaceSmoothingPassBand"), library.smoothing.passBand);
+  EXPECT_EQ(defaults.number("targetEdgeLength"), 0.0);
+
+  const ParsedArguments given = parse({ "--surfaceFinish", "Tiled", "--targetEdgeLength", "1.5",
+                                        "--surfaceSmoothingIterations", "0", "--surfaceSmoothingPassBand", "0.1",
+                                        "in", "out.vtp" });
+  EXPECT_EQ(given.text("surfaceFinish"), "Tiled");
+  EXPECT_EQ(given.number("targetEdgeLength"), 1.5);
+  EXPECT_EQ(given.integer("surfaceSmoothingIterations"), 0);
+  EXPECT_EQ(given.number("surfaceSmoothingPassBand"), 0.1);
+  for (const char* finish : { "Remeshed", "Smoothed", "Tiled" })
+    EXPECT_EQ(errorOf({ "--surfaceFinish", finish, "in", "out.vtp" }), "(no error)") << finish;
+  // The parser checks the XML's inclusive range; the ends 0 and 1 are refused by the executable
+  // (SurfaceFinishingTest.BadValuesAreUsageErrorsThatWriteNothing).
+  for (const std::string value : { "-0.01", "1.01", "abc" })
+    EXPECT_NE(errorOf({ "--surfaceSmoothingPassBand", value, "in", "out.vtp" }).find("--surfaceSmoothingPassBand"),
+              std::string::npos)
+      << value;
+  EXPECT_NE(errorOf({ "--surfaceSmoothingIterations", "-1", "in", "out.vtp" }), "(no error)");
+  EXPECT_NE(errorOf({ "--targetEdgeLength", "-0.5", "in", "out.vtp" }), "(no error)");
 }
 
 TEST(CommandLine, HelpNeedsNoPositionalArguments)

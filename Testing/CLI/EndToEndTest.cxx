@@ -110,8 +110,8 @@ TEST(EndToEnd, ProgressCoversEveryStageMonotonicallyFromZeroToOne)
   const RunResult r = runSliceMesh(quoted(twoBoxesLabelMap(folder).string()) + " " +
                                    quoted((folder / "boxes.vtp").string()));
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  const std::vector<std::string> stages = { "Reading", "Segmentation", "Contours", "Correspondence",
-                                              "Tiling", "Validation", "Writing" };
+  const std::vector<std::string> stages = { "Reading",    "Segmentation", "Contours", "Correspondence",
+                                              "Tiling",     "Validation",   "Finishing", "Writing" };
   EXPECT_EQ(stageNames(r.out, "filter-start"), stages);
   EXPECT_EQ(stageNames(r.out, "filter-end"), stages);
   const std::vector<double> progress = tagNumbers(r.out, "filter-progress");
@@ -137,7 +137,11 @@ TEST(EndToEnd, LabelSelectsOneStructure)
   const RunResult r = runSliceMesh("-l 2 --returnparameterfile " + quoted(params.string()) + " " +
                                    quoted(twoBoxesLabelMap(folder).string()) + " " + quoted((folder / "b.stl").string()));
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_NEAR(std::stod(returnParameterMap(params).at("volume")), expectedBoxVolume(3, 4, 4, 2.0), 0.05 * 96.0);
+  // expectedBoxVolume models the tiling; the default finish remeshes it, and on a box 3 voxels across
+  // the remeshed triangles (1.35 mm edges) are chords across its edges and corners (the smoothing
+  // after them keeps the volume): measured 76.8 mm^3 against the tiling's 84.5 (-9%) and the
+  // model's 86.5 (-11%). 15% still tells label 2 (96 mm^3 of voxels) from label 1 (288).
+  EXPECT_NEAR(std::stod(returnParameterMap(params).at("volume")), expectedBoxVolume(3, 4, 4, 2.0), 0.15 * 96.0);
 }
 
 TEST(EndToEnd, AbsentLabelIsAnEmptySegmentationAndLeavesTheOutputAlone)
@@ -345,7 +349,8 @@ TEST(EndToEnd, MultiLabelSummaryAndReportCarryRealQuality)
   EXPECT_LE(ratio, std::max(jsonNumberAfter(first, "pointToSliceSpacingRatio"),
                             jsonNumberAfter(second, "pointToSliceSpacingRatio")) + 1e-9);
   EXPECT_EQ(jsonNumberAfter(json, "genus"), 0.0);
-  EXPECT_NEAR(jsonNumberAfter(second, "volumeMm3"), expectedBoxVolume(3, 4, 4, 2.0), 0.05 * 96.0);
+  // The remeshed 3 x 4 voxel box: -11% against the tiling's model (see LabelSelectsOneStructure).
+  EXPECT_NEAR(jsonNumberAfter(second, "volumeMm3"), expectedBoxVolume(3, 4, 4, 2.0), 0.15 * 96.0);
   EXPECT_NEAR(jsonNumberAfter(json, "volumeMm3"),
               jsonNumberAfter(first, "volumeMm3") + jsonNumberAfter(second, "volumeMm3"), 1e-6);
 }
@@ -375,10 +380,12 @@ TEST(EndToEnd, RefineWeakOverlapAndSectionOverlapReachTheSections)
   {
     double triangles = 0.0, volume = 0.0;
   };
+  // The sections show in the tiling (its rows of triangles): pinned to it, since a remeshed
+  // surface's triangle count follows its area, not the sections.
   auto mesh = [&](const std::string& name, const std::string& options)
   {
     const fs::path params = folder / (name + ".params");
-    const RunResult r = runSliceMesh(options + " --returnparameterfile " + quoted(params.string()) + " " +
+    const RunResult r = runSliceMesh(options + " --surfaceFinish Tiled --returnparameterfile " + quoted(params.string()) + " " +
                                      quoted(input.string()) + " " + quoted((folder / (name + ".vtp")).string()));
     EXPECT_EQ(r.exitCode, 0) << name << ": " << r.err;
     EXPECT_EQ(r.err, "") << name;
@@ -404,13 +411,14 @@ TEST(EndToEnd, RefineWeakOverlapAndSectionOverlapReachTheSections)
 
 TEST(EndToEnd, MultiLabelAppliesTheCorrespondenceOptions)
 {
-  // The per-label meshes go through the same correspondence stage as the single mesh.
+  // The per-label meshes go through the same correspondence stage as the single mesh (seen in the
+  // tiling's triangles, so pinned to it as in RefineWeakOverlapAndSectionOverlapReachTheSections).
   const fs::path folder = freshFolder("e2e-multilabel-sections");
   const fs::path input = slidingEllipse(folder);
   auto triangles = [&](const std::string& name, const std::string& options)
   {
     const fs::path params = folder / (name + ".params");
-    const RunResult r = runSliceMesh("--splitLabels " + options + " --returnparameterfile " + quoted(params.string()) +
+    const RunResult r = runSliceMesh("--splitLabels --surfaceFinish Tiled " + options + " --returnparameterfile " + quoted(params.string()) +
                                      " " + quoted(input.string()) + " " + quoted((folder / (name + ".vtp")).string()));
     EXPECT_EQ(r.exitCode, 0) << name << ": " << r.err;
     std::map<std::string, std::string> values = returnParameterMap(params);
