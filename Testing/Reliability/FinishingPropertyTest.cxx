@@ -2,11 +2,12 @@
 // touching voxels, thin sheets and rods; isotropic, anisotropic and thick-slice spacings; oblique,
 // mirrored and permuted directions) the tiling is finished at the automatic edge length of the
 // mask's spacing. Whatever finish was applied, the returned mesh is valid (closed, manifold,
-// oriented, no self-intersections) with the tiling's components and Euler characteristic, and
-// `fallback` says why exactly when less than a remesh was applied.
+// oriented, no self-intersections) with the tiling's components and Euler characteristic, its
+// volume is within PropertyTest's tolerance of the mask's voxel volume, and `fallback` says why
+// exactly when less than a remesh was applied.
 //
-// Printed per kind: how often each finish was applied, the fallback reasons, the share of triangles
-// with an angle under 30 degrees and the triangle count finished / tiling.
+// Printed per kind and finish applied: how often, the share of triangles with an angle under 30
+// degrees, the triangle count and volume finished / tiling; and the fallback reasons.
 // The default run finishes 12 masks per kind (the same seeds as PropertyTest.cxx); longer:
 // SLICEMESH_PROPERTY_CASES=2000 ctest -R FinishingProperty ; one seed: SLICEMESH_PROPERTY_SEED=123.
 #include "PropertySeeds.h"
@@ -16,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <sstream>
@@ -24,6 +26,19 @@ namespace slicemesh::testing
 {
 namespace
 {
+
+/** Seeds whose finished mesh is valid but blown up (at 920d25d): a component of a few voxels
+ *  collapses to a point under Taubin's filter and smoothSurface's volume restoration, one offset
+ *  along normals that no longer mean anything, throws it 1e12 mm and more out; the result is kept
+ *  because it is still closed, manifold and free of intersections (it encloses the rest). Counted,
+ *  not failed, unless SLICEMESH_PROPERTY_STRICT is set; a listed seed that passes is named. */
+const std::uint64_t knownVolumeFailures[] = { 3002, 4000, 4005, 4006, 5002, 5009 };
+
+bool isKnownVolumeFailure(std::uint64_t seed)
+{
+  return !strictPropertyRun() &&
+         std::find(std::begin(knownVolumeFailures), std::end(knownVolumeFailures), seed) != std::end(knownVolumeFailures);
+}
 
 /** A short name for why one stage's surface was not kept: "threw", "topology", "open",
  *  "non-manifold", "self-intersecting", else "other". */
@@ -55,31 +70,62 @@ std::string fallbackClass(const std::string& fallback)
   return result.empty() ? fallback : result;
 }
 
+/** What the masks given one finish look like, before and after. */
+struct FinishFigures
+{
+  std::size_t masks = 0;
+  double tilingTriangles = 0.0, finishedTriangles = 0.0;
+  double tilingBelow30 = 0.0, finishedBelow30 = 0.0;   ///< triangles with an angle under 30 degrees
+  double minRatio = 1e300, maxRatio = 0.0;             ///< finished / tiling triangles, one mask
+  double minVolumeRatio = 1e300, maxVolumeRatio = 0.0; ///< finished / tiling volume, one mask
+  std::size_t outsideVolumeTolerance = 0; ///< finished volume off the voxels' by more than PropertyTest allows
+
+  void add(const MaskMeshResult& tiling, const MeshValidation& finished)
+  {
+    ++masks;
+    const double before = static_cast<double>(tiling.validation.triangles);
+    const double after = static_cast<double>(finished.triangles);
+    tilingTriangles += before;
+    finishedTriangles += after;
+    tilingBelow30 += tiling.validation.fractionAnglesBelow30 * before;
+    finishedBelow30 += finished.fractionAnglesBelow30 * after;
+    minRatio = std::min(minRatio, after / before);
+    maxRatio = std::max(maxRatio, after / before);
+    const double volumeRatio = finished.volume / tiling.validation.volume;
+    minVolumeRatio = std::min(minVolumeRatio, volumeRatio);
+    maxVolumeRatio = std::max(maxVolumeRatio, volumeRatio);
+    if (std::abs(finished.volume - tiling.voxelVolume) > tiling.volumeTolerance())
+      ++outsideVolumeTolerance;
+  }
+};
+
 struct Figures
 {
-  std::size_t finished = 0, skipped = 0, failures = 0;
-  std::map<SurfaceFinish, std::size_t> applied;
+  std::size_t finished = 0, skipped = 0, failures = 0, knownFailures = 0;
+  std::map<SurfaceFinish, FinishFigures> applied;
   std::map<std::string, std::size_t> reasons;
   std::map<std::string, std::string> firstSeedOfReason;
-  double tilingTriangles = 0.0, finishedTriangles = 0.0;
-  double tilingBelow30 = 0.0, finishedBelow30 = 0.0; ///< triangles with an angle under 30 degrees
-  double minRatio = 1e300, maxRatio = 0.0;           ///< finished / tiling triangles, one mask
 };
 
 void print(const char* kind, const Figures& f)
 {
   std::ostringstream out;
   out << "[ finishing ] " << kind << ": " << f.finished << " masks finished (" << f.skipped
-      << " empty or without a valid tiling), " << f.failures << " failures; applied";
-  for (const auto& [finish, count] : f.applied)
-    out << " " << finishName(finish) << " " << count;
-  char figures[256];
-  std::snprintf(figures, sizeof figures,
-                "; under 30 deg %.2f%% -> %.2f%% of triangles; triangles finished / tiling %.3f (per mask %.3f .. %.3f)",
-                100.0 * f.tilingBelow30 / std::max(1.0, f.tilingTriangles),
-                100.0 * f.finishedBelow30 / std::max(1.0, f.finishedTriangles),
-                f.finishedTriangles / std::max(1.0, f.tilingTriangles), f.finished ? f.minRatio : 0.0, f.maxRatio);
-  out << figures << "\n";
+      << " empty or without a valid tiling), " << f.failures << " failures, " << f.knownFailures
+      << " known volume failures\n";
+  for (const auto& [finish, a] : f.applied)
+  {
+    char line[400];
+    std::snprintf(line, sizeof line,
+                  "[ finishing ]   %-8s %4zu: under 30 deg %5.2f%% -> %5.2f%% of triangles; triangles finished / tiling "
+                  "%.3f (per mask %.3f .. %.3f); volume finished / tiling %.3f .. %.3f, %zu off the voxels' by more "
+                  "than PropertyTest's tolerance\n",
+                  finishName(finish), a.masks, 100.0 * a.tilingBelow30 / std::max(1.0, a.tilingTriangles),
+                  100.0 * a.finishedBelow30 / std::max(1.0, a.finishedTriangles),
+                  a.finishedTriangles / std::max(1.0, a.tilingTriangles), a.minRatio, a.maxRatio, a.minVolumeRatio,
+                  a.maxVolumeRatio, a.outsideVolumeTolerance);
+    out << line;
+  }
   for (const auto& [reason, count] : f.reasons)
     out << "[ finishing ]   fallback " << count << "x: " << reason << " (first: " << f.firstSeedOfReason.at(reason) << ")\n";
   std::cout << out.str() << std::flush;
@@ -115,7 +161,6 @@ void runFinishingProperty(RandomMaskKind kind, const char* kindName, std::uint64
       continue;
     }
     ++figures.finished;
-    ++figures.applied[finished.finish];
 
     // The validation handed back is checked again on the mesh itself.
     const MeshValidation v = validateMesh(finished.mesh);
@@ -130,6 +175,16 @@ void runFinishingProperty(RandomMaskKind kind, const char* kindName, std::uint64
       problem = "the returned validation is not the mesh's";
     else if (finished.fallback.empty() != (finished.finish == SurfaceFinish::Remeshed))
       problem = std::string(finishName(finished.finish)) + " applied, fallback \"" + finished.fallback + "\"";
+    else if (std::abs(v.volume - tiling.voxelVolume) > tiling.volumeTolerance())
+    {
+      if (isKnownVolumeFailure(seed))
+        ++figures.knownFailures;
+      else
+        problem = std::string(finishName(finished.finish)) + " volume " + std::to_string(v.volume) + " mm^3, voxels " +
+                  std::to_string(tiling.voxelVolume) + " mm^3, tolerance " + std::to_string(tiling.volumeTolerance());
+    }
+    else if (isKnownVolumeFailure(seed))
+      std::cout << "[ finishing ] known-failing seed " << seed << " passes now: remove it from knownVolumeFailures\n";
     if (!problem.empty())
     {
       ++figures.failures;
@@ -142,13 +197,7 @@ void runFinishingProperty(RandomMaskKind kind, const char* kindName, std::uint64
       if (figures.reasons[reason]++ == 0)
         figures.firstSeedOfReason[reason] = "seed " + std::to_string(seed) + ": " + finished.fallback;
     }
-    const double before = static_cast<double>(tiling.validation.triangles), after = static_cast<double>(v.triangles);
-    figures.tilingTriangles += before;
-    figures.finishedTriangles += after;
-    figures.tilingBelow30 += tiling.validation.fractionAnglesBelow30 * before;
-    figures.finishedBelow30 += v.fractionAnglesBelow30 * after;
-    figures.minRatio = std::min(figures.minRatio, after / before);
-    figures.maxRatio = std::max(figures.maxRatio, after / before);
+    figures.applied[finished.finish].add(tiling, v);
   }
   print(kindName, figures);
   EXPECT_EQ(figures.failures, 0u) << failures.str();

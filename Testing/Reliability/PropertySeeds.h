@@ -1,6 +1,7 @@
 // The seeds a property test runs, from the environment: SLICEMESH_PROPERTY_CASES masks per kind (a
-// test's own default otherwise) or the one seed SLICEMESH_PROPERTY_SEED. Shared by the tests that
-// draw randomMask, so one pair of variables lengthens or narrows all of them.
+// test's own default otherwise) or the one seed SLICEMESH_PROPERTY_SEED; SLICEMESH_PROPERTY_STRICT
+// counts known Logic failures. Shared by the tests that draw randomMask, so the same variables
+// lengthen, narrow or harden all of them.
 #ifndef PropertySeeds_h
 #define PropertySeeds_h
 
@@ -19,6 +20,12 @@ inline std::uint64_t environmentNumber(const char* name, std::uint64_t fallback)
 {
   const char* value = std::getenv(name);
   return value && *value ? std::strtoull(value, nullptr, 10) : fallback;
+}
+
+/** SLICEMESH_PROPERTY_STRICT is set: seeds listed as known Logic failures fail the run too. */
+inline bool strictPropertyRun()
+{
+  return std::getenv("SLICEMESH_PROPERTY_STRICT") != nullptr;
 }
 
 /** firstSeed .. firstSeed + cases - 1, or only SLICEMESH_PROPERTY_SEED when it is set. */

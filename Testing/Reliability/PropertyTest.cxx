@@ -31,15 +31,10 @@ const std::uint64_t knownLogicFailures[] = { 0 }; // 0 is a placeholder, never a
  *  at 24484fa. Skipped unless SLICEMESH_PROPERTY_STRICT=1; 0 is a placeholder, never a seed here. */
 const std::uint64_t knownLogicHangs[] = { 0 };
 
-bool strict()
-{
-  return std::getenv("SLICEMESH_PROPERTY_STRICT") != nullptr;
-}
-
 template <std::size_t N>
 bool listed(const std::uint64_t (&seeds)[N], std::uint64_t seed)
 {
-  return !strict() && std::find(std::begin(seeds), std::end(seeds), seed) != std::end(seeds);
+  return !strictPropertyRun() && std::find(std::begin(seeds), std::end(seeds), seed) != std::end(seeds);
 }
 
 bool isKnownFailure(std::uint64_t seed)
