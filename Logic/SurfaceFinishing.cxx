@@ -1,5 +1,7 @@
 #include "SurfaceFinishing.h"
 
+#include <algorithm>
+
 namespace slicemesh
 {
 namespace
@@ -20,6 +22,14 @@ std::string rejection(const MeshValidation& candidate, const MeshValidation& til
 }
 
 } // namespace
+
+SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing)
+{
+  SurfaceFinishingOptions options;
+  options.remeshing.targetEdgeLength = automaticEdgeLength(spacing);
+  options.smoothing.maxDisplacement = 0.3 * std::min({ spacing[0], spacing[1], spacing[2] });
+  return options;
+}
 
 const char* finishName(SurfaceFinish finish)
 {

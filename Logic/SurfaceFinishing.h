@@ -35,6 +35,11 @@ struct FinishedSurface
   std::string fallback; ///< why less was applied than asked; empty when all of it was
 };
 
+/** The finishing the CLI applies to a mask of this voxel spacing (mm): edges of
+ *  automaticEdgeLength(spacing), and smoothing that moves no vertex farther than 0.3 of the smallest
+ *  voxel side (the staircase is about that deep; a sharp edge is rounded no more). */
+SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing);
+
 /** Finishes a tiling whose validation is given. A finished mesh is kept only if it is valid and has
  *  the tiling's components and Euler characteristic; otherwise the smoothed tiling is tried, then
  *  the tiling itself is returned, and `fallback` says why. An invalid tiling is returned as it is. */

@@ -169,6 +169,21 @@ void restoreVolumes(TriangleMesh& mesh, const std::vector<std::size_t>& componen
   }
 }
 
+/** Pulls every point that has moved farther than `bound` from its start back onto that distance. */
+void clampDisplacements(std::vector<Point3>& points, const std::vector<Point3>& start, double bound)
+{
+  for (std::size_t v = 0; v < points.size(); ++v)
+  {
+    const double dx = points[v].x - start[v].x, dy = points[v].y - start[v].y, dz = points[v].z - start[v].z;
+    const double distance = std::sqrt(dx * dx + dy * dy + dz * dz);
+    if (distance > bound)
+    {
+      const double f = bound / distance;
+      points[v] = { start[v].x + f * dx, start[v].y + f * dy, start[v].z + f * dz };
+    }
+  }
+}
+
 } // namespace
 
 void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options)
@@ -186,10 +201,13 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options)
 
   const VertexNeighbours neighbours = neighboursOf(mesh);
   std::vector<Point3> scratch(mesh.points.size());
+  const std::vector<Point3> start = options.maxDisplacement > 0.0 ? mesh.points : std::vector<Point3>{};
   for (int i = 0; i < options.iterations; ++i)
   {
     umbrellaStep(mesh.points, neighbours, lambda, scratch);
     umbrellaStep(mesh.points, neighbours, mu, scratch);
+    if (options.maxDisplacement > 0.0)
+      clampDisplacements(mesh.points, start, options.maxDisplacement);
   }
   restoreVolumes(mesh, component, volume);
 }

@@ -15,10 +15,15 @@ struct SurfaceSmoothingOptions
   /** Taubin's pass band k_PB = 1/lambda + 1/mu: mesh frequencies below it (the shape) pass, the
    *  staircase of a mask (periods of a few edges) is damped. lambda is 0.5; mu follows from k_PB. */
   double passBand = 0.01;
+  /** No vertex ends farther than this from where it started (mm; 0: unbounded), checked after every
+   *  step pair. The staircase of a mask is a fraction of a voxel deep, so a bound of that order
+   *  takes it out but keeps the filter from rounding a sharp edge over more than that. */
+  double maxDisplacement = 0.0;
 };
 
 /** Smooths every vertex of the mesh: `iterations` pairs of p += lambda * L(p) and p += mu * L(p),
- *  where L(p) is the mean of p's neighbours minus p; then gives every connected component its signed
+ *  where L(p) is the mean of p's neighbours minus p, each pair followed by the maxDisplacement
+ *  clamp; then gives every connected component its signed
  *  volume back by one offset along the vertex normals (small structures, a few edges across, shrink
  *  under the filter). The connectivity is not changed.
  *  G. Taubin, "A signal processing approach to fair surface design", SIGGRAPH 1995. */

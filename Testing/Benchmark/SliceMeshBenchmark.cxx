@@ -98,10 +98,9 @@ Row sliceMesh(const Phantom& phantom, const MaskVolume* mask, cli::ContourPrepar
   ReconstructionOptions options;
   options.minAngleDegrees = minAngle;
   const TriangleMesh tiling = reconstructSurface(stack, options);
-  SurfaceFinishingOptions finishing;
-  finishing.finish = finish;
   const auto spacing = mask->GetSpacing();
-  finishing.remeshing.targetEdgeLength = automaticEdgeLength({ spacing[0], spacing[1], spacing[2] });
+  SurfaceFinishingOptions finishing = finishingOptionsFor({ spacing[0], spacing[1], spacing[2] });
+  finishing.finish = finish;
   const FinishedSurface finished = finishSurface(tiling, validateMesh(tiling), finishing);
   if (!finished.fallback.empty())
     std::fprintf(stderr, "\n%s: %s\n", method.c_str(), finished.fallback.c_str());

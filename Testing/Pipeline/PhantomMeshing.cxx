@@ -29,9 +29,8 @@ PhantomMeshResult meshPhantom(const Phantom& phantom, const std::array<double, 3
   if (finish != SurfaceFinish::Tiled)
   {
     // Physical space is the stack frame moved rigidly: the finishing does not see the difference.
-    SurfaceFinishingOptions finishing;
+    SurfaceFinishingOptions finishing = finishingOptionsFor(spacing);
     finishing.finish = finish;
-    finishing.remeshing.targetEdgeLength = automaticEdgeLength(spacing);
     FinishedSurface finished = finishSurface(result.mesh, result.validation, finishing);
     result.mesh = std::move(finished.mesh);
     result.validation = finished.validation;
