@@ -201,7 +201,7 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options)
 
   const VertexNeighbours neighbours = neighboursOf(mesh);
   std::vector<Point3> scratch(mesh.points.size());
-  const std::vector<Point3> start = options.maxDisplacement > 0.0 ? mesh.points : std::vector<Point3>{};
+  const std::vector<Point3> start = mesh.points;
   for (int i = 0; i < options.iterations; ++i)
   {
     umbrellaStep(mesh.points, neighbours, lambda, scratch);
@@ -209,6 +209,17 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options)
     if (options.maxDisplacement > 0.0)
       clampDisplacements(mesh.points, start, options.maxDisplacement);
   }
+  // A component a few edges across has no shape below the pass band: the filter collapses it, and
+  // no offset can give a speck its volume back. Such a component keeps its unsmoothed vertices.
+  std::vector<double> smoothedVolume(components), smoothedArea(components);
+  measureComponents(mesh, component, smoothedVolume, smoothedArea);
+  std::vector<bool> collapsed(components);
+  for (std::size_t k = 0; k < components; ++k)
+    collapsed[k] = !(smoothedArea[k] > 0.0 && smoothedVolume[k] * volume[k] > 0.0 &&
+                     std::abs(smoothedVolume[k]) >= 0.5 * std::abs(volume[k]));
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    if (collapsed[component[v]])
+      mesh.points[v] = start[v];
   restoreVolumes(mesh, component, volume);
 }
 

@@ -25,7 +25,8 @@ struct SurfaceSmoothingOptions
  *  where L(p) is the mean of p's neighbours minus p, each pair followed by the maxDisplacement
  *  clamp; then gives every connected component its signed
  *  volume back by one offset along the vertex normals (small structures, a few edges across, shrink
- *  under the filter). The connectivity is not changed.
+ *  under the filter). A component that lost half its volume or more (a speck the filter collapses)
+ *  keeps its unsmoothed vertices instead. The connectivity is not changed.
  *  G. Taubin, "A signal processing approach to fair surface design", SIGGRAPH 1995. */
 void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options);
 

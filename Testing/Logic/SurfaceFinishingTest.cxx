@@ -226,45 +226,31 @@ TEST(SurfaceFinishing, WhateverIsKeptIsValidWithTheTilingsTopology)
   }
 }
 
-namespace
+TEST(SurfaceSmoothing, ASpeckTheFilterWouldCollapseKeepsItsShape)
 {
-
-/** A torus about the z axis (ring radius R, tube radius r), nu x nv quads split in two; outward. */
-TriangleMesh torus(double R, double r, int nu, int nv)
-{
-  TriangleMesh mesh;
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j)
-    {
-      const double u = 2.0 * M_PI * i / nu, v = 2.0 * M_PI * j / nv;
-      mesh.points.push_back({ (R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v) });
-    }
-  auto id = [&](int i, int j) { return static_cast<std::int32_t>(((i + nu) % nu) * nv + (j + nv) % nv); };
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j)
-    {
-      mesh.triangles.push_back({ id(i, j), id(i + 1, j), id(i + 1, j + 1) });
-      mesh.triangles.push_back({ id(i, j), id(i + 1, j + 1), id(i, j + 1) });
-    }
-  return mesh;
-}
-
-} // namespace
-
-TEST(SurfaceFinishing, FallsBackWhenTheTargetEdgeIsLongerThanTheShapeIsThick)
-{
-  // A torus whose hole is 0.04 mm across, remeshed at edges of 6 mm: triangles that long cannot
-  // follow the ring without cutting through it, so the stage must fall back and say why.
-  const TriangleMesh ring = torus(5.0, 4.98, 120, 60);
-  const MeshValidation tiling = validateMesh(ring);
-  ASSERT_TRUE(tiling.valid()) << tiling.summary();
-  ASSERT_EQ(tiling.eulerCharacteristic, 0);
-  SurfaceFinishingOptions options;
-  options.remeshing.targetEdgeLength = 6.0;
-  const FinishedSurface finished = finishSurface(ring, tiling, options);
-  std::printf("%s: %s\n", finishName(finished.finish), finished.fallback.c_str());
-  EXPECT_NE(finished.finish, SurfaceFinish::Remeshed);
-  EXPECT_FALSE(finished.fallback.empty());
-  EXPECT_TRUE(finished.validation.valid()) << finished.validation.summary();
-  EXPECT_EQ(finished.validation.eulerCharacteristic, 0);
+  // An octahedron: every vertex's neighbours average to the centre, so each lambda/mu pair scales
+  // it by 0.75 and 150 pairs leave nothing. It keeps its vertices; a large sphere beside it (one
+  // mesh, two components) is still smoothed.
+  TriangleMesh mesh = octaSphere(1, 0.5);
+  const TriangleMesh speck = mesh;
+  const TriangleMesh sphere = octaSphere(30, 10.0, 0.02, 1.5);
+  const auto offset = static_cast<std::int32_t>(mesh.points.size());
+  for (const Point3& p : sphere.points)
+    mesh.points.push_back({ p.x + 20.0, p.y, p.z });
+  for (const Triangle& t : sphere.triangles)
+    mesh.triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+  smoothSurface(mesh, SurfaceSmoothingOptions{});
+  for (std::size_t i = 0; i < speck.points.size(); ++i)
+  {
+    EXPECT_EQ(mesh.points[i].x, speck.points[i].x);
+    EXPECT_EQ(mesh.points[i].z, speck.points[i].z);
+  }
+  const MeshValidation v = validateMesh(mesh);
+  EXPECT_TRUE(v.valid()) << v.summary();
+  EXPECT_EQ(v.components, 2u);
+  TriangleMesh moved;
+  moved.points.assign(mesh.points.begin() + offset, mesh.points.end());
+  for (Point3& p : moved.points)
+    p.x -= 20.0;
+  EXPECT_LT(meanRadiusError(moved, 10.0), 0.5 * meanRadiusError(sphere, 10.0));
 }
