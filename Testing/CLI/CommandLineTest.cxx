@@ -135,7 +135,7 @@ TEST(CommandLine, SurfaceFinishingOptionsReachTheLibrarysDefaults)
   for (const char* finish : { "Remeshed", "Smoothed", "Tiled" })
     EXPECT_EQ(errorOf({ "--surfaceFinish", finish, "in", "out.vtp" }), "(no error)") << finish;
   // The parser checks the XML's inclusive range; the ends 0 and 1 are refused by the executable
-  // (SurfaceFinishingTest.BadValuesAreUsageErrorsThatWriteNothing).
+  // (FinishingOptions.BadValuesAreUsageErrorsThatWriteNothing).
   for (const std::string value : { "-0.01", "1.01", "abc" })
     EXPECT_NE(errorOf({ "--surfaceSmoothingPassBand", value, "in", "out.vtp" }).find("--surfaceSmoothingPassBand"),
               std::string::npos)

@@ -116,7 +116,7 @@ void expectValidClosedSphere(const TriangleMesh& mesh, const std::string& name)
   EXPECT_EQ(v.eulerCharacteristic, 2) << name;
 }
 
-TEST(SurfaceFinishing, TiledKeepsTheContoursOnTheirSlicesAndTheDefaultDoesNot)
+TEST(FinishingOptions, TiledKeepsTheContoursOnTheirSlicesAndTheDefaultDoesNot)
 {
   // The paper's tiling without Steiner points (--minimumAngle 0), wall rows (a row as tall as the
   // slab) or domes (flat caps): its vertices are the contours', on their slices, except the few the
@@ -143,7 +143,7 @@ TEST(SurfaceFinishing, TiledKeepsTheContoursOnTheirSlicesAndTheDefaultDoesNot)
   expectValidClosedSphere(remeshed, "remeshed");
 }
 
-TEST(SurfaceFinishing, DefaultIsAValidSurfaceCloserToTheTrueSphereThanTheTiling)
+TEST(FinishingOptions, DefaultIsAValidSurfaceCloserToTheTrueSphereThanTheTiling)
 {
   const fs::path folder = freshFolder("finish-default");
   const fs::path report = folder / "remeshed.json";
@@ -186,7 +186,7 @@ TEST(SurfaceFinishing, DefaultIsAValidSurfaceCloserToTheTrueSphereThanTheTiling)
     << "the report describes the mesh written";
 }
 
-TEST(SurfaceFinishing, TargetEdgeLengthSetsTheResolution)
+TEST(FinishingOptions, TargetEdgeLengthSetsTheResolution)
 {
   // Twice the automatic edge length: about a quarter of the triangles (area / edge^2).
   const fs::path folder = freshFolder("finish-edge");
@@ -203,7 +203,7 @@ TEST(SurfaceFinishing, TargetEdgeLengthSetsTheResolution)
   EXPECT_LT(ratio, 0.4);
 }
 
-TEST(SurfaceFinishing, NoSmoothingIterationsKeepTheTilingUnderSmoothed)
+TEST(FinishingOptions, NoSmoothingIterationsKeepTheTilingUnderSmoothed)
 {
   // Smoothed with 0 iterations is the tiling itself, vertex for vertex.
   const fs::path folder = freshFolder("finish-no-smoothing");
@@ -220,7 +220,7 @@ TEST(SurfaceFinishing, NoSmoothingIterationsKeepTheTilingUnderSmoothed)
   EXPECT_EQ(unsmoothed.triangles, tiled.triangles);
 }
 
-TEST(SurfaceFinishing, BadValuesAreUsageErrorsThatWriteNothing)
+TEST(FinishingOptions, BadValuesAreUsageErrorsThatWriteNothing)
 {
   const fs::path folder = freshFolder("finish-bad");
   const fs::path input = sphereLabelMap(folder);
@@ -244,7 +244,7 @@ TEST(SurfaceFinishing, BadValuesAreUsageErrorsThatWriteNothing)
   EXPECT_NE(runSliceMesh("--surfaceSmoothingPassBand 1 in.mha out.vtp").err.find("both excluded"), std::string::npos);
 }
 
-TEST(SurfaceFinishing, EveryLabelIsFinishedAndItsReportEntrySaysHow)
+TEST(FinishingOptions, EveryLabelIsFinishedAndItsReportEntrySaysHow)
 {
   const fs::path folder = freshFolder("finish-multilabel");
   const fs::path input = folder / "two-spheres.mha";
