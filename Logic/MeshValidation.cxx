@@ -38,7 +38,9 @@ double angleAt(const Point3& o, const Point3& p, const Point3& q)
 }
 
 /** Counts pairs of triangles that intersect other than along the vertices and edges they share. */
-std::size_t countSelfIntersections(const TriangleMesh& mesh, bool& checked)
+/** The self-intersecting pairs by face index (faces are added in the order of mesh.triangles, so a
+ *  face's index is its triangle's); `checked` false when CGAL cannot hold the mesh as a surface. */
+std::vector<std::pair<std::size_t, std::size_t>> intersectingPairs(const TriangleMesh& mesh, bool& checked)
 {
   SurfaceMesh surface;
   std::vector<SurfaceMesh::Vertex_index> handles;
@@ -49,12 +51,16 @@ std::size_t countSelfIntersections(const TriangleMesh& mesh, bool& checked)
     if (surface.add_face(handles[t[0]], handles[t[1]], handles[t[2]]) == SurfaceMesh::null_face())
     {
       checked = false;
-      return 0;
+      return {};
     }
   std::vector<std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>> pairs;
   CGAL::Polygon_mesh_processing::self_intersections(surface, std::back_inserter(pairs));
   checked = true;
-  return pairs.size();
+  std::vector<std::pair<std::size_t, std::size_t>> result;
+  result.reserve(pairs.size());
+  for (const auto& [first, second] : pairs)
+    result.emplace_back(static_cast<std::size_t>(first.idx()), static_cast<std::size_t>(second.idx()));
+  return result;
 }
 
 } // namespace
@@ -190,8 +196,14 @@ MeshValidation validateMesh(const TriangleMesh& mesh)
   v.fractionAnglesBelow30 = mesh.triangles.empty() ? 0.0 : static_cast<double>(below30) / mesh.triangles.size();
 
   if (v.manifold() && v.inconsistentEdges == 0)
-    v.selfIntersections = countSelfIntersections(mesh, v.selfIntersectionChecked);
+    v.selfIntersections = intersectingPairs(mesh, v.selfIntersectionChecked).size();
   return v;
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingPairs(const TriangleMesh& mesh)
+{
+  bool checked = false;
+  return intersectingPairs(mesh, checked);
 }
 
 } // namespace slicemesh

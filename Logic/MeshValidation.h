@@ -5,6 +5,8 @@
 #include "SliceMeshTypes.h"
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace slicemesh
 {
@@ -45,6 +47,10 @@ struct MeshValidation
  *  on one edge lying almost on top of each other) are counted but do not make a mesh invalid: no
  *  triangles cross there, but a rotation or rounding of the coordinates may make them cross. */
 MeshValidation validateMesh(const TriangleMesh& mesh);
+
+/** The pairs of triangles (indices into mesh.triangles) that intersect other than along shared
+ *  simplices, as validateMesh counts them; empty when the mesh is not manifold enough to check. */
+std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingPairs(const TriangleMesh& mesh);
 
 } // namespace slicemesh
 

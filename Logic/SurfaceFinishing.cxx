@@ -21,6 +21,36 @@ std::string rejection(const MeshValidation& candidate, const MeshValidation& til
   return {};
 }
 
+/** Puts back where `unsmoothed` has them the vertices of every triangle in a crossing pair and
+ *  `rings` rings of triangles around them. Returns how many vertices moved back. */
+std::size_t unsmoothAround(TriangleMesh& mesh, const TriangleMesh& unsmoothed,
+                           const std::vector<std::pair<std::size_t, std::size_t>>& crossings, int rings)
+{
+  std::vector<bool> marked(mesh.points.size(), false);
+  for (const auto& [first, second] : crossings)
+    for (std::size_t t : { first, second })
+      for (std::int32_t v : mesh.triangles[t])
+        marked[static_cast<std::size_t>(v)] = true;
+  for (int ring = 0; ring < rings; ++ring)
+  {
+    std::vector<bool> grown = marked;
+    for (const Triangle& t : mesh.triangles)
+      if (marked[t[0]] || marked[t[1]] || marked[t[2]])
+        for (std::int32_t v : t)
+          grown[static_cast<std::size_t>(v)] = true;
+    marked.swap(grown);
+  }
+  std::size_t moved = 0;
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    if (marked[v] && (mesh.points[v].x != unsmoothed.points[v].x || mesh.points[v].y != unsmoothed.points[v].y ||
+                      mesh.points[v].z != unsmoothed.points[v].z))
+    {
+      mesh.points[v] = unsmoothed.points[v];
+      ++moved;
+    }
+  return moved;
+}
+
 } // namespace
 
 SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing)
@@ -67,7 +97,6 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
     try
     {
       remeshed = remeshSurface(tiling, options.remeshing);
-      smoothSurface(remeshed, options.smoothing);
     }
     catch (const Error& e)
     {
@@ -75,10 +104,24 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
     }
     if (why.empty())
     {
+      const TriangleMesh unsmoothed = remeshed;
+      smoothSurface(remeshed, options.smoothing);
       MeshValidation validation = validateMesh(remeshed);
+      // Two sheets a voxel apart (a thin gap between gyri, a thin wall) can be smoothed into each
+      // other: there, and only there, the remesh's own positions are kept.
+      std::size_t unsmoothedVertices = 0;
+      for (int rings = 1; rings <= 4 && validation.selfIntersections > 0; rings *= 2)
+      {
+        unsmoothedVertices += unsmoothAround(remeshed, unsmoothed, selfIntersectingPairs(remeshed), rings);
+        validation = validateMesh(remeshed);
+      }
       why = rejection(validation, tilingValidation);
       if (why.empty())
-        return { std::move(remeshed), validation, SurfaceFinish::Remeshed, {} };
+      {
+        FinishedSurface finished{ std::move(remeshed), validation, SurfaceFinish::Remeshed, {} };
+        finished.unsmoothedVertices = unsmoothedVertices;
+        return finished;
+      }
     }
     result.fallback = "the remeshed surface was not kept: " + why;
   }

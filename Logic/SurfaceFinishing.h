@@ -33,6 +33,9 @@ struct FinishedSurface
   MeshValidation validation; ///< of `mesh`
   SurfaceFinish finish = SurfaceFinish::Tiled; ///< what was applied (less than asked after a fallback)
   std::string fallback; ///< why less was applied than asked; empty when all of it was
+  /** Vertices of the remeshed surface left where the remesh put them, unsmoothed, because smoothing
+   *  made triangles near them cross (two sheets of a structure a voxel or two apart). */
+  std::size_t unsmoothedVertices = 0;
 };
 
 /** The finishing the CLI applies to a mask of this voxel spacing (mm): edges of
@@ -40,8 +43,10 @@ struct FinishedSurface
  *  voxel side (the staircase is about that deep; a sharp edge is rounded no more). */
 SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing);
 
-/** Finishes a tiling whose validation is given. A finished mesh is kept only if it is valid and has
- *  the tiling's components and Euler characteristic; otherwise the smoothed tiling is tried, then
+/** Finishes a tiling whose validation is given. Where smoothing the remeshed surface makes triangles
+ *  cross, the vertices around them (growing rings, up to three tries) go back to their remeshed
+ *  positions. A finished mesh is kept only if it is valid and has the tiling's components and Euler
+ *  characteristic; otherwise the smoothed tiling is tried, then
  *  the tiling itself is returned, and `fallback` says why. An invalid tiling is returned as it is. */
 FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& tilingValidation,
                               const SurfaceFinishingOptions& options);
