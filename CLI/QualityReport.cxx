@@ -108,6 +108,7 @@ RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshVal
       combined.targetEdgeLength = q.targetEdgeLength; // every label's mask has the volume's spacing
       combined.smoothingIterations = q.smoothingIterations;
       combined.smoothingPassBand = q.smoothingPassBand;
+      combined.smoothingMaxDisplacement = q.smoothingMaxDisplacement;
       first = false;
     }
     else if (combined.finish != q.finish)
@@ -189,6 +190,7 @@ void writeMeshBlocks(std::ostream& json, const std::string& indent, const MeshVa
   number("targetEdgeLengthMm", q.targetEdgeLength);
   number("smoothingIterations", q.smoothingIterations);
   number("smoothingPassBand", q.smoothingPassBand);
+  number("smoothingMaxDisplacementMm", q.smoothingMaxDisplacement);
   json << indent << "  \"fallback\": " << (q.fallback.empty() ? "null" : jsonString(q.fallback)) << "\n";
   json << indent << "},\n";
   json << indent << "\"mesh\": {\n";

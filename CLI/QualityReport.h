@@ -47,6 +47,7 @@ struct RunQuality
   double targetEdgeLength = 0.0; ///< of the remeshing (mm), when Remeshed was asked; else 0
   int smoothingIterations = 0;   ///< Taubin pairs, when Remeshed or Smoothed was asked; else 0
   double smoothingPassBand = 0.0;
+  double smoothingMaxDisplacement = 0.0; ///< mm; 0: unbounded
   std::string fallback;          ///< why less was applied than asked (SurfaceFinishing.h); empty when all of it was
   double pointSpacing = 0.0;       ///< mean in-plane distance between contour points (mm)
   double sliceSpacing = 0.0;       ///< mm

@@ -126,9 +126,17 @@ ContourStack maskContours(const MaskVolume* mask, const ContourOptions& contours
 SurfaceFinishingOptions resolvedFinishing(const SurfaceFinishingOptions& finishing,
                                           const std::array<double, 3>& spacing)
 {
-  SurfaceFinishingOptions resolved = finishing;
-  if (resolved.remeshing.targetEdgeLength <= 0.0)
-    resolved.remeshing.targetEdgeLength = automaticEdgeLength(spacing);
+  // The library's finishing for this grid (automatic edge length, smoothing that moves no vertex
+  // farther than a fraction of a voxel), with the command line's choices on top.
+  SurfaceFinishingOptions resolved = finishingOptionsFor(spacing);
+  resolved.finish = finishing.finish;
+  resolved.smoothing.iterations = finishing.smoothing.iterations;
+  resolved.smoothing.passBand = finishing.smoothing.passBand;
+  if (finishing.smoothing.maxDisplacement > 0.0)
+    resolved.smoothing.maxDisplacement = finishing.smoothing.maxDisplacement;
+  resolved.remeshing.iterations = finishing.remeshing.iterations;
+  if (finishing.remeshing.targetEdgeLength > 0.0)
+    resolved.remeshing.targetEdgeLength = finishing.remeshing.targetEdgeLength;
   return resolved;
 }
 
@@ -149,6 +157,7 @@ FinishedSurface finishAndMeasure(const TriangleMesh& tiling, const MeshValidatio
   {
     quality.smoothingIterations = options.smoothing.iterations;
     quality.smoothingPassBand = options.smoothing.passBand;
+    quality.smoothingMaxDisplacement = options.smoothing.maxDisplacement;
   }
   if (!finished.fallback.empty())
   {

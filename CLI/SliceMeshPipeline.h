@@ -104,8 +104,10 @@ private:
   ExitCode Code;
 };
 
-/** The finishing options for a mask of this spacing (mm): a target edge length of 0 becomes
- *  automaticEdgeLength(spacing), so the remeshed surface's resolution follows the voxels. */
+/** The finishing options for a mask of this spacing (mm): finishingOptionsFor(spacing) (the
+ *  automatic edge length, the smoothing's displacement bound) with the finish, smoothing iterations
+ *  and pass band of `finishing`, and its target edge length and displacement bound where they are
+ *  above 0, so the remeshed surface's resolution follows the voxels unless one is given. */
 SurfaceFinishingOptions resolvedFinishing(const SurfaceFinishingOptions& finishing,
                                           const std::array<double, 3>& spacing);
 
