@@ -92,6 +92,16 @@ std::vector<std::size_t> componentOfVertices(const TriangleMesh& mesh, std::size
   return component;
 }
 
+/** Twice the area times the unit normal of triangle t (the cross product of two of its edges). */
+Point3 areaNormal(const TriangleMesh& mesh, const Triangle& t)
+{
+  const Point3& a = mesh.points[t[0]];
+  const Point3& b = mesh.points[t[1]];
+  const Point3& c = mesh.points[t[2]];
+  return { (b.y - a.y) * (c.z - a.z) - (b.z - a.z) * (c.y - a.y), (b.z - a.z) * (c.x - a.x) - (b.x - a.x) * (c.z - a.z),
+           (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) };
+}
+
 /** Signed volume and area of every component (by the component of each triangle's first vertex). */
 void measureComponents(const TriangleMesh& mesh, const std::vector<std::size_t>& component, std::vector<double>& volume,
                        std::vector<double>& area)
@@ -100,15 +110,11 @@ void measureComponents(const TriangleMesh& mesh, const std::vector<std::size_t>&
   std::fill(area.begin(), area.end(), 0.0);
   for (const Triangle& t : mesh.triangles)
   {
+    const Point3 n = areaNormal(mesh, t);
     const Point3& a = mesh.points[t[0]];
-    const Point3& b = mesh.points[t[1]];
-    const Point3& c = mesh.points[t[2]];
-    const double nx = (b.y - a.y) * (c.z - a.z) - (b.z - a.z) * (c.y - a.y);
-    const double ny = (b.z - a.z) * (c.x - a.x) - (b.x - a.x) * (c.z - a.z);
-    const double nz = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
     const std::size_t k = component[static_cast<std::size_t>(t[0])];
-    volume[k] += (a.x * nx + a.y * ny + a.z * nz) / 6.0;
-    area[k] += 0.5 * std::sqrt(nx * nx + ny * ny + nz * nz);
+    volume[k] += (a.x * n.x + a.y * n.y + a.z * n.z) / 6.0;
+    area[k] += 0.5 * std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
   }
 }
 
@@ -118,17 +124,12 @@ std::vector<Point3> vertexNormals(const TriangleMesh& mesh)
   std::vector<Point3> normals(mesh.points.size());
   for (const Triangle& t : mesh.triangles)
   {
-    const Point3& a = mesh.points[t[0]];
-    const Point3& b = mesh.points[t[1]];
-    const Point3& c = mesh.points[t[2]];
-    const double nx = (b.y - a.y) * (c.z - a.z) - (b.z - a.z) * (c.y - a.y);
-    const double ny = (b.z - a.z) * (c.x - a.x) - (b.x - a.x) * (c.z - a.z);
-    const double nz = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    const Point3 n = areaNormal(mesh, t);
     for (std::int32_t v : t)
     {
-      normals[v].x += nx;
-      normals[v].y += ny;
-      normals[v].z += nz;
+      normals[v].x += n.x;
+      normals[v].y += n.y;
+      normals[v].z += n.z;
     }
   }
   for (Point3& n : normals)

@@ -18,28 +18,11 @@ using namespace slicemesh::testing;
 namespace
 {
 
-struct Case
-{
-  const char* name;
-  std::array<double, 3> spacing;
-  Matrix3 direction;
-};
-
-std::vector<Case> grids()
-{
-  Matrix3 mirrored = Matrix3::Identity();
-  mirrored(0, 0) = -1.0;
-  return { { "iso1mm", { 1.0, 1.0, 1.0 }, Matrix3::Identity() },
-           { "aniso08x08x3", { 0.8, 0.8, 3.0 }, Matrix3::Identity() },
-           { "oblique", { 0.9, 1.1, 2.0 }, rotation({ 1.0, 2.0, 0.5 }, 0.6) },
-           { "mirrored", { 1.0, 0.7, 1.5 }, mirrored * rotation({ 0.0, 0.0, 1.0 }, 0.3) } };
-}
-
 /** Checks validity, volume, distance and bounding box; returns the result for extra checks.
  *  The mask itself misses the analytic volume (a box whose faces fall near voxel centres gains or
  *  loses a whole layer), so the volume is held to the mask's voxel volume within volumeTolerance,
  *  and to the analytic volume within the mask's own error plus volumeTolerance. */
-PhantomMeshResult expectFaithful(const Phantom& phantom, const Case& grid, double volumeTolerance = 0.04)
+PhantomMeshResult expectFaithful(const Phantom& phantom, const PhantomTestGrid& grid, double volumeTolerance = 0.04)
 {
   const PhantomMeshResult r = meshPhantom(phantom, grid.spacing, grid.direction);
   const double halfDiagonal =
@@ -73,14 +56,14 @@ PhantomMeshResult expectFaithful(const Phantom& phantom, const Case& grid, doubl
 TEST(PhantomMesh, Sphere)
 {
   const Sphere sphere({ 10.0, -20.0, 35.0 }, 12.0);
-  for (const Case& grid : grids())
+  for (const PhantomTestGrid& grid : phantomTestGrids())
     expectFaithful(sphere, grid);
 }
 
 TEST(PhantomMesh, RotatedEllipsoid)
 {
   const Ellipsoid ellipsoid({ -5.0, 8.0, 12.0 }, { 14.0, 9.0, 11.0 }, rotation({ 0.3, 1.0, 0.2 }, 0.7));
-  for (const Case& grid : grids())
+  for (const PhantomTestGrid& grid : phantomTestGrids())
     expectFaithful(ellipsoid, grid);
 }
 
@@ -88,13 +71,13 @@ TEST(PhantomMesh, StraightCylinder)
 {
   // Sizes off the voxel grid, so the mask is not biased by faces falling on voxel centres.
   const CappedCylinder cylinder({ 0.3, -0.2, 0.1 }, { 0.0, 0.0, 1.0 }, 9.3, 15.2);
-  for (const Case& grid : grids())
+  for (const PhantomTestGrid& grid : phantomTestGrids())
     expectFaithful(cylinder, grid);
 }
 
 TEST(PhantomMesh, Box)
 {
   const Box box({ 3.1, 4.2, 5.3 }, { 10.3, 7.4, 12.2 });
-  for (const Case& grid : grids())
+  for (const PhantomTestGrid& grid : phantomTestGrids())
     expectFaithful(box, grid);
 }

@@ -73,4 +73,14 @@ Matrix3 rotation(const Vector3& axis, double angle)
   return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
 }
 
+std::vector<PhantomTestGrid> phantomTestGrids()
+{
+  Matrix3 mirrored = Matrix3::Identity();
+  mirrored(0, 0) = -1.0;
+  return { { "iso1mm", { 1.0, 1.0, 1.0 }, Matrix3::Identity() },
+           { "aniso08x08x3", { 0.8, 0.8, 3.0 }, Matrix3::Identity() },
+           { "oblique", { 0.9, 1.1, 2.0 }, rotation({ 1.0, 2.0, 0.5 }, 0.6) },
+           { "mirrored", { 1.0, 0.7, 1.5 }, mirrored * rotation({ 0.0, 0.0, 1.0 }, 0.3) } };
+}
+
 } // namespace slicemesh::testing

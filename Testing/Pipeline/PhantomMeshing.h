@@ -42,6 +42,18 @@ PhantomMeshResult meshPhantom(const Phantom& phantom, const std::array<double, 3
 /** A rotation by angle (radians) about a unit axis. */
 Matrix3 rotation(const Vector3& axis, double angle);
 
+/** A grid the phantoms are rasterized on: voxel spacing (mm) and direction matrix. */
+struct PhantomTestGrid
+{
+  const char* name;
+  std::array<double, 3> spacing;
+  Matrix3 direction = Matrix3::Identity();
+};
+
+/** The four grids the end-to-end phantom tests run on: isotropic 1 mm, 0.8 x 0.8 x 3 mm, an oblique
+ *  anisotropic one and a mirrored rotated one (negative determinant). */
+std::vector<PhantomTestGrid> phantomTestGrids();
+
 } // namespace slicemesh::testing
 
 #endif

@@ -20,23 +20,6 @@ using namespace slicemesh::testing;
 namespace
 {
 
-struct Grid
-{
-  const char* name;
-  std::array<double, 3> spacing;
-  Matrix3 direction;
-};
-
-std::vector<Grid> grids()
-{
-  Matrix3 mirrored = Matrix3::Identity();
-  mirrored(0, 0) = -1.0;
-  return { { "iso1mm", { 1.0, 1.0, 1.0 }, Matrix3::Identity() },
-           { "aniso08x08x3", { 0.8, 0.8, 3.0 }, Matrix3::Identity() },
-           { "oblique", { 0.9, 1.1, 2.0 }, rotation({ 1.0, 2.0, 0.5 }, 0.6) },
-           { "mirrored", { 1.0, 0.7, 1.5 }, mirrored * rotation({ 0.0, 0.0, 1.0 }, 0.3) } };
-}
-
 double meanDistance(const Phantom& phantom, const TriangleMesh& mesh)
 {
   double sum = 0.0;
@@ -58,7 +41,7 @@ struct Finished
   double tilingDistance = 0.0, finishedDistance = 0.0;
 };
 
-Finished finish(const Phantom& phantom, const Grid& grid)
+Finished finish(const Phantom& phantom, const PhantomTestGrid& grid)
 {
   Finished f;
   f.tiling = meshPhantom(phantom, grid.spacing, grid.direction);
@@ -81,7 +64,7 @@ Finished finish(const Phantom& phantom, const Grid& grid)
 /** What every finished phantom must do. `closer`: the largest finished mean distance as a fraction
  *  of the tiling's (0: not compared); `ofHalfDiagonal`: the largest finished mean distance as a
  *  fraction of half the voxel diagonal (0: not compared). */
-void expectFinished(const Phantom& phantom, const Grid& grid, double closer, double ofHalfDiagonal = 0.0)
+void expectFinished(const Phantom& phantom, const PhantomTestGrid& grid, double closer, double ofHalfDiagonal = 0.0)
 {
   const Finished f = finish(phantom, grid);
   const MeshValidation& v = f.surface.validation;
@@ -109,14 +92,14 @@ void expectFinished(const Phantom& phantom, const Grid& grid, double closer, dou
 TEST(SurfaceFinishingPhantom, Sphere)
 {
   const Sphere sphere(Vector3(0.3, -0.2, 0.1), 15.0);
-  for (const Grid& grid : grids())
+  for (const PhantomTestGrid& grid : phantomTestGrids())
     expectFinished(sphere, grid, grid.spacing[2] > 2.5 ? 0.85 : 0.65);
 }
 
 TEST(SurfaceFinishingPhantom, TiltedTorus)
 {
   const Torus torus(Vector3(0, 0, 0), Vector3(1, 0, 0.5), 14.0, 5.0);
-  for (const Grid& grid : grids())
+  for (const PhantomTestGrid& grid : phantomTestGrids())
     expectFinished(torus, grid, grid.spacing[2] > 2.5 ? 0.85 : 0.65);
 }
 
@@ -125,7 +108,7 @@ TEST(SurfaceFinishingPhantom, RotatedBox)
   // Sharp edges: smoothing would round them over about a voxel (1.1-1.4 times the tiling's distance
   // without the displacement bound); with it the box ends 0.72-0.87 of the tiling's distance.
   const Box box(Vector3(0, 0, 0), Vector3(12, 8, 7), rotation({ 0, 1, 1 }, 0.5));
-  for (const Grid& grid : grids())
+  for (const PhantomTestGrid& grid : phantomTestGrids())
     expectFinished(box, grid, 0.95, 0.2);
 }
 
@@ -142,7 +125,7 @@ TEST(SurfaceFinishingPhantom, ThinBranchingTubeKeepsItsVolume)
   const TubeTree tubes({ { Vector3(0, 0, -12), Vector3(0, 0, 0) }, { Vector3(0, 0, 0), Vector3(8, 2, 10) },
                          { Vector3(0, 0, 0), Vector3(-7, -3, 11) } },
                        1.5);
-  for (const Grid& grid : grids())
+  for (const PhantomTestGrid& grid : phantomTestGrids())
   {
     if (grid.spacing[2] > 2.5)
       continue; // 3 mm slices do not resolve a 3 mm tube
