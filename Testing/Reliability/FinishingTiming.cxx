@@ -82,9 +82,9 @@ int main(int argc, char* argv[])
   const MeshValidation tilingValidation = validateMesh(tiling);
   const std::string validateTime = watch.lap();
 
-  // The stages one by one, as finishSurface runs them, then finishSurface itself.
-  SurfaceFinishingOptions options;
-  options.remeshing.targetEdgeLength = automaticEdgeLength(spacing);
+  // The two stages on the whole mesh at once, then finishSurface itself (piece by piece, with its
+  // checks and repairs), with the options the CLI uses.
+  const SurfaceFinishingOptions options = finishingOptionsFor(spacing);
   watch = Stopwatch();
   TriangleMesh remeshed = remeshSurface(tiling, options.remeshing);
   const std::string remeshTime = watch.lap();
