@@ -17,7 +17,7 @@ enum class SurfaceFinish
 {
   Remeshed, ///< remeshed to the target edge length, then smoothed in 3D (the default)
   Smoothed, ///< smoothed in 3D; the tiling's triangles kept
-  Tiled     ///< the tiling as it is (the paper's surface: every vertex on its slice)
+  Tiled     ///< the tiling as it is (the paper's surface: contour vertices stay on their slices)
 };
 
 struct SurfaceFinishingOptions
@@ -31,11 +31,19 @@ struct FinishedSurface
 {
   TriangleMesh mesh;
   MeshValidation validation; ///< of `mesh`
-  SurfaceFinish finish = SurfaceFinish::Tiled; ///< what was applied (less than asked after a fallback)
-  std::string fallback; ///< why less was applied than asked; empty when all of it was
+  /** What was applied: the least finished of the connected pieces (less than asked after a
+   *  fallback, however many of the pieces it concerns: `fallback` counts them). */
+  SurfaceFinish finish = SurfaceFinish::Tiled;
+  std::string fallback; ///< why less was applied than asked, and to how many pieces; empty when all of it was
   /** Vertices of the remeshed surface left where the remesh put them, unsmoothed, because smoothing
    *  made triangles near them cross (two sheets of a structure a voxel or two apart). */
   std::size_t unsmoothedVertices = 0;
+  /** Pieces remeshed at half the target edge length, because at the full length the remesh crossed
+   *  itself (a gap between two sheets narrower than the edge). */
+  std::size_t piecesRemeshedFiner = 0;
+  /** Pieces whose tiling has under 100 triangles (specks of a few voxels): left as tiled, which
+   *  counts as finished (remeshing or smoothing a shape a couple of edges across only collapses it). */
+  std::size_t smallPiecesAsTiled = 0;
 };
 
 /** The finishing the CLI applies to a mask of this voxel spacing (mm): edges of
@@ -43,11 +51,14 @@ struct FinishedSurface
  *  voxel side (the staircase is about that deep; a sharp edge is rounded no more). */
 SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing);
 
-/** Finishes a tiling whose validation is given. Where smoothing the remeshed surface makes triangles
- *  cross, the vertices around them (growing rings, up to three tries) go back to their remeshed
- *  positions. A finished mesh is kept only if it is valid and has the tiling's components and Euler
- *  characteristic; otherwise the smoothed tiling is tried, then
- *  the tiling itself is returned, and `fallback` says why. An invalid tiling is returned as it is. */
+/** Finishes a tiling whose validation is given, one connected piece at a time: each piece is
+ *  remeshed and smoothed and gets its tiled volume back; where smoothing makes its triangles cross,
+ *  the vertices around them (growing rings, three tries) go back to their remeshed positions; if
+ *  it still crosses itself, it is remeshed again at half the target edge length. A piece
+ *  is kept finished only if it is a valid surface of its tiled topology, facing the same way;
+ *  otherwise it is smoothed only, else left as tiled. Pieces that cross each other once finished go
+ *  back to their tiled shape. `fallback` says how many pieces got less than asked, and why the first
+ *  did. An invalid tiling is returned as it is. */
 FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& tilingValidation,
                               const SurfaceFinishingOptions& options);
 

@@ -187,6 +187,13 @@ void clampDisplacements(std::vector<Point3>& points, const std::vector<Point3>& 
 
 } // namespace
 
+void offsetToVolume(TriangleMesh& mesh, double volume)
+{
+  if (mesh.triangles.empty())
+    return;
+  restoreVolumes(mesh, std::vector<std::size_t>(mesh.points.size(), 0), { volume });
+}
+
 void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options)
 {
   if (options.iterations <= 0 || mesh.triangles.empty())

@@ -30,6 +30,11 @@ struct SurfaceSmoothingOptions
  *  G. Taubin, "A signal processing approach to fair surface design", SIGGRAPH 1995. */
 void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options);
 
+/** Moves every vertex of a closed, consistently oriented mesh along its vertex normal by one common
+ *  distance so that its signed volume becomes `volume` (a few Newton steps: the volume grows by the
+ *  area per unit of offset). For one connected piece; offsets large against the mesh's features fold it. */
+void offsetToVolume(TriangleMesh& mesh, double volume);
+
 } // namespace slicemesh
 
 #endif

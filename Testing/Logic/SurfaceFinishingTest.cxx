@@ -254,3 +254,33 @@ TEST(SurfaceSmoothing, ASpeckTheFilterWouldCollapseKeepsItsShape)
     p.x -= 20.0;
   EXPECT_LT(meanRadiusError(moved, 10.0), 0.5 * meanRadiusError(sphere, 10.0));
 }
+
+TEST(SurfaceFinishing, EveryPieceIsFinishedOnItsOwn)
+{
+  // A sphere of radius 10 and, apart from it, a speck: an octahedron 0.2 mm across, far below the
+  // 1 mm target edge. The stage works piece by piece: the sphere is remeshed whatever happens to
+  // the speck (CGAL keeps it an octahedron today), and if the speck got less, the fallback would
+  // say so and count it. The property test (FinishingProperty.*) meets such pieces by the hundred.
+  TriangleMesh mesh = octaSphere(30, 10.0, 0.01, 1.5);
+  const std::size_t sphereTriangles = mesh.triangles.size();
+  const TriangleMesh speck = octaSphere(1, 0.1);
+  const auto offset = static_cast<std::int32_t>(mesh.points.size());
+  for (const Point3& p : speck.points)
+    mesh.points.push_back({ p.x + 15.0, p.y, p.z });
+  for (const Triangle& t : speck.triangles)
+    mesh.triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+  const MeshValidation tiling = validateMesh(mesh);
+  ASSERT_TRUE(tiling.valid()) << tiling.summary();
+  SurfaceFinishingOptions options;
+  options.remeshing.targetEdgeLength = 1.0;
+  const FinishedSurface finished = finishSurface(mesh, tiling, options);
+  std::printf("%s: %s\n", finishName(finished.finish), finished.fallback.c_str());
+  EXPECT_TRUE(finished.validation.valid()) << finished.validation.summary();
+  EXPECT_EQ(finished.validation.components, 2u);
+  EXPECT_EQ(finished.validation.eulerCharacteristic, 4);
+  // The sphere's 7200 triangles of about 0.75 mm became about 1 mm ones: fewer.
+  EXPECT_LT(finished.mesh.triangles.size(), 0.7 * sphereTriangles);
+  EXPECT_EQ(finished.finish != SurfaceFinish::Remeshed, !finished.fallback.empty());
+  if (!finished.fallback.empty())
+    EXPECT_EQ(finished.fallback.rfind("1 of 2 pieces", 0), 0u) << finished.fallback;
+}
