@@ -66,9 +66,18 @@ std::string reasonClass(const std::string& why)
   return "other"; // degenerate triangles or an inverted orientation: the summary does not name them
 }
 
-/** The fallback text reduced to its reasons, e.g. "remesh: self-intersecting; smooth: topology". */
+/** The fallback text reduced to its reasons, e.g. "remesh: self-intersecting; smooth: topology", or
+ *  for a piece-by-piece finish "pieces: crossed another piece" (the first piece's reason). */
 std::string fallbackClass(const std::string& fallback)
 {
+  if (fallback.find("pieces were finished less than asked") != std::string::npos)
+  {
+    const std::size_t first = fallback.find("the first: ");
+    const std::string why = first == std::string::npos ? fallback : fallback.substr(first + 11);
+    if (why.find("crossed another piece") != std::string::npos)
+      return "pieces: crossed another piece";
+    return "pieces: " + (why.find("triangles,") == std::string::npos ? why.substr(0, 60) : reasonClass(why));
+  }
   const std::string remeshed = "the remeshed surface was not kept: ", smoothed = "the smoothed surface was not kept: ";
   std::string result;
   const std::size_t r = fallback.find(remeshed), s = fallback.find(smoothed);
