@@ -39,10 +39,11 @@ bool isKnownVolumeFailure(std::uint64_t seed)
          std::find(std::begin(knownVolumeFailures), std::end(knownVolumeFailures), seed) != std::end(knownVolumeFailures);
 }
 
-/** Seeds on which remeshSurface crashes (SIGSEGV in CGAL 5.5's tangential relaxation, whose
- *  check_normals reads the edge of a null halfedge when every face around a vertex is degenerate:
- *  CGAL issue 7345); not finished unless SLICEMESH_PROPERTY_STRICT is set, so that a long run ends. */
-const std::uint64_t knownCrashes[] = { 3369 };
+/** Seeds on which remeshSurface crashed: 3369 (blobs+noise) at 7ddd116, a SIGSEGV in CGAL 5.5's
+ *  tangential relaxation, whose check_normals reads the edge of a null halfedge when every face
+ *  around a vertex is degenerate (CGAL issue 7345); it passes since 4a3b583 leaves specks under 100
+ *  tiling triangles as tiled. Skipped unless SLICEMESH_PROPERTY_STRICT is set, so a long run ends. */
+const std::uint64_t knownCrashes[] = { 0 }; // 0 is a placeholder, never a seed here
 
 bool isKnownCrash(std::uint64_t seed)
 {
