@@ -134,7 +134,6 @@ struct FinishedPiece
   SurfaceFinish finish = SurfaceFinish::Tiled;
   std::string why; ///< why less than asked was applied
   std::size_t unsmoothedVertices = 0;
-  bool remeshedFiner = false; ///< remeshed at half the target edge length
 };
 
 /** What a piece of a valid tiling is, without the self-intersection check validateMesh makes: one
@@ -159,28 +158,27 @@ MeshValidation tiledPiece(const TriangleMesh& piece)
 FinishedPiece finishPiece(const TriangleMesh& tiled, const SurfaceFinishingOptions& options)
 {
   const MeshValidation reference = tiledPiece(tiled);
-  FinishedPiece result{ tiled, SurfaceFinish::Tiled, {}, 0, false };
+  FinishedPiece result{ tiled, SurfaceFinish::Tiled, {}, 0 };
   if (options.finish == SurfaceFinish::Remeshed)
   {
     // Remeshed first, then smoothed: the umbrella operator is a fair Laplacian only on a regular
     // mesh. Smoothing the tiling's rows (edges of every length and direction) first, then
     // remeshing, left the surface 10-20% farther from the true one on the benchmark's phantoms.
-    // A gap narrower than the target edge can make the remesh cross itself there; at half the
-    // edge length it usually does not.
+    // One attempt at the asked edge length. (A second one at half the length, where a gap
+    // narrower than the edge makes the remesh cross itself, rescued the large pieces of noisy
+    // k-means labels but cost 80 s and 1.4 million triangles there: not what was asked.)
     std::string why;
-    for (const double scale : { 1.0, 0.5 })
+    do
     {
-      SurfaceRemeshingOptions remeshing = options.remeshing;
-      remeshing.targetEdgeLength *= scale;
       TriangleMesh remeshed;
       try
       {
-        remeshed = remeshSurface(tiled, remeshing);
+        remeshed = remeshSurface(tiled, options.remeshing);
       }
       catch (const Error& e)
       {
         why = e.what();
-        continue;
+        break;
       }
       const TriangleMesh unsmoothed = remeshed;
       smoothSurface(remeshed, options.smoothing);
@@ -202,10 +200,9 @@ FinishedPiece finishPiece(const TriangleMesh& tiled, const SurfaceFinishingOptio
         result.mesh = std::move(remeshed);
         result.finish = SurfaceFinish::Remeshed;
         result.unsmoothedVertices = unsmoothedVertices;
-        result.remeshedFiner = scale < 1.0;
         return result;
       }
-    }
+    } while (false);
     result.why = "remeshed: " + why;
   }
   TriangleMesh smoothed = tiled;
@@ -262,7 +259,7 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
     // across: remeshing or smoothing can only collapse it. It stays as tiled, as asked.
     if (piece.triangles.size() < smallPieceTriangles)
     {
-      pieces.push_back({ piece, options.finish, {}, 0, false });
+      pieces.push_back({ piece, options.finish, {}, 0 });
       ++result.smallPiecesAsTiled;
       continue;
     }
@@ -281,7 +278,7 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
     for (const auto& [first, second] : selfIntersectingPairs(joined))
       for (const std::size_t p : { pieceOf(first), pieceOf(second) })
         if (pieces[p].finish != SurfaceFinish::Tiled)
-          pieces[p] = { tiledPieces[p], SurfaceFinish::Tiled, "it crossed another piece once finished", 0, false };
+          pieces[p] = { tiledPieces[p], SurfaceFinish::Tiled, "it crossed another piece once finished", 0 };
     joined = joinPieces(pieces, firstTriangle);
     validation = validateMesh(joined);
   }
@@ -301,7 +298,6 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   for (const FinishedPiece& piece : pieces)
   {
     result.unsmoothedVertices += piece.unsmoothedVertices;
-    result.piecesRemeshedFiner += piece.remeshedFiner;
     result.finish = std::max(result.finish, piece.finish); // the enum runs from most to least finished
     if (piece.finish != options.finish)
     {

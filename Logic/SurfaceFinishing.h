@@ -38,9 +38,6 @@ struct FinishedSurface
   /** Vertices of the remeshed surface left where the remesh put them, unsmoothed, because smoothing
    *  made triangles near them cross (two sheets of a structure a voxel or two apart). */
   std::size_t unsmoothedVertices = 0;
-  /** Pieces remeshed at half the target edge length, because at the full length the remesh crossed
-   *  itself (a gap between two sheets narrower than the edge). */
-  std::size_t piecesRemeshedFiner = 0;
   /** Pieces whose tiling has under 100 triangles (specks of a few voxels): left as tiled, which
    *  counts as finished (remeshing or smoothing a shape a couple of edges across only collapses it). */
   std::size_t smallPiecesAsTiled = 0;
@@ -53,8 +50,7 @@ SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing
 
 /** Finishes a tiling whose validation is given, one connected piece at a time: each piece is
  *  remeshed and smoothed and gets its tiled volume back; where smoothing makes its triangles cross,
- *  the vertices around them (growing rings, three tries) go back to their remeshed positions; if
- *  it still crosses itself, it is remeshed again at half the target edge length. A piece
+ *  the vertices around them (growing rings, three tries) go back to their remeshed positions. A piece
  *  is kept finished only if it is a valid surface of its tiled topology, facing the same way;
  *  otherwise it is smoothed only, else left as tiled. Pieces that cross each other once finished go
  *  back to their tiled shape. `fallback` says how many pieces got less than asked, and why the first

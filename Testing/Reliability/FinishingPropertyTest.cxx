@@ -10,6 +10,7 @@
 // degrees, the triangle count and volume finished / tiling; and the fallback reasons.
 // The default run finishes 12 masks per kind (the same seeds as PropertyTest.cxx); longer:
 // SLICEMESH_PROPERTY_CASES=2000 ctest -R FinishingProperty ; one seed: SLICEMESH_PROPERTY_SEED=123.
+#include "ContourExtraction.h"
 #include "PropertySeeds.h"
 #include "ReliabilitySupport.h"
 #include "SurfaceFinishing.h"
@@ -248,4 +249,29 @@ TEST(FinishingProperty, ThinSheetsAndRodsFinishToValidSurfacesOfTheSameTopology)
 }
 
 } // namespace
+} // namespace slicemesh::testing
+
+namespace slicemesh::testing
+{
+
+TEST(FinishingProperty, Seed3369TheMaskThatCrashedCGALsRelaxation)
+{
+  // Twelve voxels (seed 3369 of blobs+noise, minimized): CGAL 5.5.1's tangential relaxation, inside
+  // the isotropic remeshing, read a null halfedge where every face around a vertex had become
+  // degenerate (CGAL issue 7345) and the process died. Pieces this small now stay as tiled; the
+  // stage must come back with a valid surface of the tiling's topology.
+  const MaskVolume::Pointer mask = makeMask({ 8, 10, 14 }, { 1.0, 1.0, 1.0 });
+  for (const auto& [i, j, k] : std::vector<std::array<long, 3>>{ { 1, 1, 1 }, { 3, 1, 1 }, { 5, 2, 1 }, { 2, 6, 1 },
+                                                                  { 0, 0, 2 }, { 0, 3, 2 }, { 4, 3, 2 }, { 2, 4, 2 },
+                                                                  { 2, 5, 2 }, { 2, 6, 2 }, { 2, 7, 2 }, { 4, 3, 3 } })
+    mask->SetPixel({ { i, j, k } }, 1);
+  const TriangleMesh tiling = reconstructSurface(extractContours(mask));
+  const MeshValidation tiled = validateMesh(tiling);
+  ASSERT_TRUE(tiled.valid()) << tiled.summary();
+  const FinishedSurface finished = finishSurface(tiling, tiled, finishingOptionsFor({ 1.0, 1.0, 1.0 }));
+  EXPECT_TRUE(finished.validation.valid()) << finished.validation.summary();
+  EXPECT_EQ(finished.validation.components, tiled.components);
+  EXPECT_EQ(finished.validation.eulerCharacteristic, tiled.eulerCharacteristic);
+}
+
 } // namespace slicemesh::testing
