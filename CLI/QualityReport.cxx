@@ -113,6 +113,8 @@ RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshVal
     }
     else if (combined.finish != q.finish)
       combined.finish = "Mixed";
+    combined.smallPiecesAsTiled += q.smallPiecesAsTiled;
+    combined.unsmoothedVertices += q.unsmoothedVertices;
     if (!q.fallback.empty())
       combined.fallback += (combined.fallback.empty() ? "label " : "; label ") + std::to_string(label.label) + " (" +
                            label.name + "): " + q.fallback;
@@ -191,6 +193,8 @@ void writeMeshBlocks(std::ostream& json, const std::string& indent, const MeshVa
   number("smoothingIterations", q.smoothingIterations);
   number("smoothingPassBand", q.smoothingPassBand);
   number("smoothingMaxDisplacementMm", q.smoothingMaxDisplacement);
+  number("smallPiecesLeftTiled", static_cast<double>(q.smallPiecesAsTiled));
+  number("verticesLeftUnsmoothed", static_cast<double>(q.unsmoothedVertices));
   json << indent << "  \"fallback\": " << (q.fallback.empty() ? "null" : jsonString(q.fallback)) << "\n";
   json << indent << "},\n";
   json << indent << "\"mesh\": {\n";

@@ -49,6 +49,8 @@ struct RunQuality
   double smoothingPassBand = 0.0;
   double smoothingMaxDisplacement = 0.0; ///< mm; 0: unbounded
   std::string fallback;          ///< why less was applied than asked (SurfaceFinishing.h); empty when all of it was
+  std::size_t smallPiecesAsTiled = 0; ///< specks left as tiled (FinishedSurface::smallPiecesAsTiled)
+  std::size_t unsmoothedVertices = 0; ///< left at their remeshed positions where smoothing made triangles cross
   double pointSpacing = 0.0;       ///< mean in-plane distance between contour points (mm)
   double sliceSpacing = 0.0;       ///< mm
   std::vector<std::pair<std::string, double>> stageSeconds;

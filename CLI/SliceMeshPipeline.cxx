@@ -151,6 +151,8 @@ FinishedSurface finishAndMeasure(const TriangleMesh& tiling, const MeshValidatio
   quality.requestedFinish = finishName(options.finish);
   quality.finish = finishName(finished.finish);
   quality.fallback = finished.fallback;
+  quality.smallPiecesAsTiled = finished.smallPiecesAsTiled;
+  quality.unsmoothedVertices = finished.unsmoothedVertices;
   if (options.finish == SurfaceFinish::Remeshed)
     quality.targetEdgeLength = options.remeshing.targetEdgeLength;
   if (options.finish != SurfaceFinish::Tiled)
