@@ -123,7 +123,6 @@ MeshValidation validateMesh(const TriangleMesh& mesh)
     normals.push_back(twiceArea > 0.0 ? std::array<double, 3>{ cx / twiceArea, cy / twiceArea, cz / twiceArea }
                                       : std::array<double, 3>{ 0.0, 0.0, 0.0 });
     v.area += 0.5 * twiceArea;
-    v.volume += (a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x)) / 6.0;
     const double smallest = std::min({ angleAt(a, b, c), angleAt(b, c, a), angleAt(c, a, b) });
     minAngle = std::min(minAngle, smallest);
     if (smallest < M_PI / 6.0)
@@ -190,6 +189,7 @@ MeshValidation validateMesh(const TriangleMesh& mesh)
       v.components += pieces.find(p) == p;
     }
   v.vertices = usedCount;
+  v.volume = signedVolume(mesh);
   v.eulerCharacteristic =
     static_cast<long>(usedCount) - static_cast<long>(undirected.size()) + static_cast<long>(mesh.triangles.size());
   v.minAngleDegrees = mesh.triangles.empty() ? 0.0 : minAngle * 180.0 / M_PI;
@@ -198,6 +198,19 @@ MeshValidation validateMesh(const TriangleMesh& mesh)
   if (v.manifold() && v.inconsistentEdges == 0)
     v.selfIntersections = intersectingPairs(mesh, v.selfIntersectionChecked).size();
   return v;
+}
+
+double signedVolume(const TriangleMesh& mesh)
+{
+  double volume = 0.0;
+  for (const Triangle& t : mesh.triangles)
+  {
+    const Point3& a = mesh.points[t[0]];
+    const Point3& b = mesh.points[t[1]];
+    const Point3& c = mesh.points[t[2]];
+    volume += (a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x)) / 6.0;
+  }
+  return volume;
 }
 
 std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingPairs(const TriangleMesh& mesh)

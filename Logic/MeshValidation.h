@@ -48,6 +48,10 @@ struct MeshValidation
  *  triangles cross there, but a rotation or rounding of the coordinates may make them cross. */
 MeshValidation validateMesh(const TriangleMesh& mesh);
 
+/** The signed volume the mesh encloses (mm^3): positive when its triangles wind counter-clockwise
+ *  seen from outside; a closed surface's, whatever the origin. */
+double signedVolume(const TriangleMesh& mesh);
+
 /** The pairs of triangles (indices into mesh.triangles) that intersect other than along shared
  *  simplices, as validateMesh counts them; empty when the mesh is not manifold enough to check. */
 std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingPairs(const TriangleMesh& mesh);

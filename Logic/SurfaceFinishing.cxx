@@ -1,8 +1,9 @@
 #include "SurfaceFinishing.h"
 
-#include "DisjointSets.h"
+#include "MeshComponents.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace slicemesh
 {
@@ -33,36 +34,23 @@ std::string rejection(const MeshValidation& candidate, const MeshValidation& til
  *  back as it was. */
 std::vector<TriangleMesh> splitIntoPieces(const TriangleMesh& mesh)
 {
-  DisjointSets sets(mesh.points.size());
-  for (const Triangle& t : mesh.triangles)
-  {
-    sets.unite(static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[1]));
-    sets.unite(static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[2]));
-  }
-  const std::size_t none = mesh.points.size();
-  std::vector<std::size_t> pieceOfRoot(mesh.points.size(), none);
   std::size_t count = 0;
+  const std::vector<std::size_t> component = vertexComponents(mesh, count);
+  // Components with triangles come first; a vertex in no triangle makes no piece.
+  std::size_t withTriangles = 0;
   for (const Triangle& t : mesh.triangles)
-  {
-    const std::size_t root = sets.find(static_cast<std::size_t>(t[0]));
-    if (pieceOfRoot[root] == none)
-      pieceOfRoot[root] = count++;
-  }
-  std::vector<TriangleMesh> pieces(count);
+    withTriangles = std::max(withTriangles, component[static_cast<std::size_t>(t[0])] + 1);
+  std::vector<TriangleMesh> pieces(withTriangles);
   std::vector<std::int32_t> newIndex(mesh.points.size(), -1);
-  std::vector<bool> used(mesh.points.size(), false);
-  for (const Triangle& t : mesh.triangles)
-    for (std::int32_t v : t)
-      used[static_cast<std::size_t>(v)] = true;
   for (std::size_t v = 0; v < mesh.points.size(); ++v)
-    if (used[v])
+    if (component[v] < withTriangles)
     {
-      TriangleMesh& piece = pieces[pieceOfRoot[sets.find(v)]];
+      TriangleMesh& piece = pieces[component[v]];
       newIndex[v] = static_cast<std::int32_t>(piece.points.size());
       piece.points.push_back(mesh.points[v]);
     }
   for (const Triangle& t : mesh.triangles)
-    pieces[pieceOfRoot[sets.find(static_cast<std::size_t>(t[0]))]].triangles.push_back(
+    pieces[component[static_cast<std::size_t>(t[0])]].triangles.push_back(
       { newIndex[t[0]], newIndex[t[1]], newIndex[t[2]] });
   return pieces;
 }
@@ -145,14 +133,46 @@ MeshValidation tiledPiece(const TriangleMesh& piece)
   v.triangles = piece.triangles.size();
   v.components = 1;
   v.eulerCharacteristic = static_cast<long>(v.vertices) - static_cast<long>(v.triangles / 2);
-  for (const Triangle& t : piece.triangles)
-  {
-    const Point3& a = piece.points[t[0]];
-    const Point3& b = piece.points[t[1]];
-    const Point3& c = piece.points[t[2]];
-    v.volume += (a.x * (b.y * c.z - b.z * c.y) + a.y * (b.z * c.x - b.x * c.z) + a.z * (b.x * c.y - b.y * c.x)) / 6.0;
-  }
+  v.volume = signedVolume(piece);
   return v;
+}
+
+/** The remeshed, smoothed piece, if it is a valid surface of the tiled piece's topology (`reference`);
+ *  else nothing, and `why` says what was wrong. */
+std::optional<FinishedPiece> remeshedPiece(const TriangleMesh& tiled, const MeshValidation& reference,
+                                           const SurfaceFinishingOptions& options, std::string& why)
+{
+  // Remeshed first, then smoothed: the umbrella operator is a fair Laplacian only on a regular
+  // mesh. Smoothing the tiling's rows (edges of every length and direction) first, then
+  // remeshing, left the surface 10-20% farther from the true one on the benchmark's phantoms.
+  TriangleMesh remeshed;
+  try
+  {
+    remeshed = remeshSurface(tiled, options.remeshing);
+  }
+  catch (const Error& e)
+  {
+    why = e.what();
+    return std::nullopt;
+  }
+  const TriangleMesh unsmoothed = remeshed;
+  smoothSurface(remeshed, options.smoothing);
+  // The remesh's chords cut the corners of structures a few edges across: the piece gets the
+  // tiling's volume back.
+  offsetToVolume(remeshed, reference.volume);
+  MeshValidation validation = validateMesh(remeshed);
+  // Two sheets a voxel apart (a thin gap between gyri, a thin wall) can be smoothed into each
+  // other: there, and only there, the remesh's own positions are kept.
+  std::size_t unsmoothedVertices = 0;
+  for (int rings = 1; rings <= 4 && validation.selfIntersections > 0; rings *= 2)
+  {
+    unsmoothedVertices += unsmoothAround(remeshed, unsmoothed, selfIntersectingPairs(remeshed), rings);
+    validation = validateMesh(remeshed);
+  }
+  why = rejection(validation, reference);
+  if (!why.empty())
+    return std::nullopt;
+  return FinishedPiece{ std::move(remeshed), SurfaceFinish::Remeshed, {}, unsmoothedVertices };
 }
 
 FinishedPiece finishPiece(const TriangleMesh& tiled, const SurfaceFinishingOptions& options)
@@ -161,48 +181,12 @@ FinishedPiece finishPiece(const TriangleMesh& tiled, const SurfaceFinishingOptio
   FinishedPiece result{ tiled, SurfaceFinish::Tiled, {}, 0 };
   if (options.finish == SurfaceFinish::Remeshed)
   {
-    // Remeshed first, then smoothed: the umbrella operator is a fair Laplacian only on a regular
-    // mesh. Smoothing the tiling's rows (edges of every length and direction) first, then
-    // remeshing, left the surface 10-20% farther from the true one on the benchmark's phantoms.
     // One attempt at the asked edge length. (A second one at half the length, where a gap
     // narrower than the edge makes the remesh cross itself, rescued the large pieces of noisy
     // k-means labels but cost 80 s and 1.4 million triangles there: not what was asked.)
     std::string why;
-    do
-    {
-      TriangleMesh remeshed;
-      try
-      {
-        remeshed = remeshSurface(tiled, options.remeshing);
-      }
-      catch (const Error& e)
-      {
-        why = e.what();
-        break;
-      }
-      const TriangleMesh unsmoothed = remeshed;
-      smoothSurface(remeshed, options.smoothing);
-      // The remesh's chords cut the corners of structures a few edges across: the piece gets the
-      // tiling's volume back.
-      offsetToVolume(remeshed, reference.volume);
-      MeshValidation validation = validateMesh(remeshed);
-      // Two sheets a voxel apart (a thin gap between gyri, a thin wall) can be smoothed into each
-      // other: there, and only there, the remesh's own positions are kept.
-      std::size_t unsmoothedVertices = 0;
-      for (int rings = 1; rings <= 4 && validation.selfIntersections > 0; rings *= 2)
-      {
-        unsmoothedVertices += unsmoothAround(remeshed, unsmoothed, selfIntersectingPairs(remeshed), rings);
-        validation = validateMesh(remeshed);
-      }
-      why = rejection(validation, reference);
-      if (why.empty())
-      {
-        result.mesh = std::move(remeshed);
-        result.finish = SurfaceFinish::Remeshed;
-        result.unsmoothedVertices = unsmoothedVertices;
-        return result;
-      }
-    } while (false);
+    if (std::optional<FinishedPiece> remeshed = remeshedPiece(tiled, reference, options, why))
+      return std::move(*remeshed);
     result.why = "remeshed: " + why;
   }
   TriangleMesh smoothed = tiled;

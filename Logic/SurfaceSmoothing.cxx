@@ -1,6 +1,6 @@
 #include "SurfaceSmoothing.h"
 
-#include "DisjointSets.h"
+#include "MeshComponents.h"
 
 #include <algorithm>
 #include <cmath>
@@ -68,28 +68,6 @@ void umbrellaStep(std::vector<Point3>& points, const VertexNeighbours& neighbour
     scratch[v].z += factor * (z / count - points[v].z);
   }
   points.swap(scratch);
-}
-
-/** The connected component of every vertex, numbered 0..count-1 (a vertex in no triangle gets its own). */
-std::vector<std::size_t> componentOfVertices(const TriangleMesh& mesh, std::size_t& count)
-{
-  DisjointSets sets(mesh.points.size());
-  for (const Triangle& t : mesh.triangles)
-  {
-    sets.unite(static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[1]));
-    sets.unite(static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[2]));
-  }
-  std::vector<std::size_t> component(mesh.points.size());
-  std::vector<std::size_t> number(mesh.points.size(), mesh.points.size());
-  count = 0;
-  for (std::size_t v = 0; v < mesh.points.size(); ++v)
-  {
-    const std::size_t root = sets.find(v);
-    if (number[root] == mesh.points.size())
-      number[root] = count++;
-    component[v] = number[root];
-  }
-  return component;
 }
 
 /** Twice the area times the unit normal of triangle t (the cross product of two of its edges). */
@@ -203,7 +181,7 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options)
   const double lambda = 0.5;
   const double mu = 1.0 / (options.passBand - 1.0 / lambda);
   std::size_t components = 0;
-  const std::vector<std::size_t> component = componentOfVertices(mesh, components);
+  const std::vector<std::size_t> component = vertexComponents(mesh, components);
   std::vector<double> volume(components), area(components);
   measureComponents(mesh, component, volume, area);
 
