@@ -59,6 +59,47 @@ std::string percent(double fraction)
 
 } // namespace
 
+std::string finishSummary(const RunQuality& q)
+{
+  const std::array<std::size_t, 3>& pieces = q.piecesByFinish;
+  const std::size_t total = pieces[0] + pieces[1] + pieces[2];
+  const std::size_t asked = q.requestedFinish == "Remeshed" ? 0 : q.requestedFinish == "Smoothed" ? 1 : 2;
+  // Specks are left as tiled by design and count as finished as asked.
+  const std::size_t smoothedOnly = asked == 0 ? pieces[1] : 0;
+  const std::size_t leftTiled = asked < 2 ? pieces[2] - std::min(pieces[2], q.smallPiecesAsTiled) : 0;
+  // The asked finish reached some pieces: say how many got less, not only the least finish.
+  const bool partly = total > 0 && pieces[asked] > 0 && (smoothedOnly > 0 || leftTiled > 0);
+  const bool asAsked = q.fallback.empty() || partly;
+  const std::string shown = asAsked ? q.requestedFinish : q.finish.empty() ? "Tiled" : q.finish;
+  std::vector<std::string> notes;
+  if (shown == "Remeshed")
+  {
+    std::ostringstream edge;
+    edge << "target edge " << std::fixed << std::setprecision(2) << q.targetEdgeLength << " mm";
+    notes.push_back(edge.str());
+  }
+  if (partly)
+  {
+    std::ostringstream less;
+    less << smoothedOnly + leftTiled << " of " << total << " pieces ";
+    if (smoothedOnly > 0)
+      less << smoothedOnly << " smoothed only" << (leftTiled > 0 ? ", " : "");
+    if (leftTiled > 0)
+      less << leftTiled << " left as tiled";
+    less << ", see the warning";
+    notes.push_back(less.str());
+  }
+  else if (!asAsked)
+    notes.push_back(q.requestedFinish + " asked; see the warning");
+  if (asAsked && q.smallPiecesAsTiled > 0)
+    notes.push_back(std::to_string(q.smallPiecesAsTiled) + " specks kept as tiled");
+  std::ostringstream text;
+  text << "finish " << shown;
+  for (std::size_t n = 0; n < notes.size(); ++n)
+    text << (n ? "; " : " (") << notes[n] << (n + 1 == notes.size() ? ")" : "");
+  return text.str();
+}
+
 void StageTimes::start(const std::string& stage)
 {
   m_Starts.emplace_back(stage, Clock::now());
@@ -114,6 +155,8 @@ RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshVal
     else if (combined.finish != q.finish)
       combined.finish = "Mixed";
     combined.smallPiecesAsTiled += q.smallPiecesAsTiled;
+    for (std::size_t f = 0; f < combined.piecesByFinish.size(); ++f)
+      combined.piecesByFinish[f] += q.piecesByFinish[f];
     combined.unsmoothedVertices += q.unsmoothedVertices;
     if (!q.fallback.empty())
       combined.fallback += (combined.fallback.empty() ? "label " : "; label ") + std::to_string(label.label) + " (" +
@@ -142,12 +185,7 @@ RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshVal
 std::string qualitySummary(const MeshValidation& v, const RunQuality& q)
 {
   std::ostringstream line;
-  line << "finish " << (q.finish.empty() ? "Tiled" : q.finish);
-  if (q.finish == "Remeshed")
-    line << " (target edge " << std::fixed << std::setprecision(2) << q.targetEdgeLength << " mm)";
-  else if (!q.fallback.empty())
-    line << " (" << q.requestedFinish << " asked; see the warning)";
-  line.unsetf(std::ios::floatfield);
+  line << finishSummary(q);
   line << ", " << v.vertices << " vertices, " << v.components << (v.components == 1 ? " component, " : " components, ")
        << (v.manifold() ? "manifold, " : "NOT manifold, ")
        << (!v.selfIntersectionChecked ? "self-intersections not checked, "
@@ -194,6 +232,8 @@ void writeMeshBlocks(std::ostream& json, const std::string& indent, const MeshVa
   number("smoothingPassBand", q.smoothingPassBand);
   number("smoothingMaxDisplacementMm", q.smoothingMaxDisplacement);
   number("smallPiecesLeftTiled", static_cast<double>(q.smallPiecesAsTiled));
+  json << indent << "  \"pieces\": { \"remeshed\": " << q.piecesByFinish[0] << ", \"smoothedOnly\": "
+       << q.piecesByFinish[1] << ", \"leftTiled\": " << q.piecesByFinish[2] << " },\n";
   number("verticesLeftUnsmoothed", static_cast<double>(q.unsmoothedVertices));
   json << indent << "  \"fallback\": " << (q.fallback.empty() ? "null" : jsonString(q.fallback)) << "\n";
   json << indent << "},\n";

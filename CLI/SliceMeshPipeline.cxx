@@ -152,6 +152,7 @@ FinishedSurface finishAndMeasure(const TriangleMesh& tiling, const MeshValidatio
   quality.finish = finishName(finished.finish);
   quality.fallback = finished.fallback;
   quality.smallPiecesAsTiled = finished.smallPiecesAsTiled;
+  quality.piecesByFinish = finished.piecesByFinish;
   quality.unsmoothedVertices = finished.unsmoothedVertices;
   if (options.finish == SurfaceFinish::Remeshed)
     quality.targetEdgeLength = options.remeshing.targetEdgeLength;

@@ -29,32 +29,6 @@ std::string rejection(const MeshValidation& candidate, const MeshValidation& til
   return {};
 }
 
-/** The connected pieces of a mesh (by shared vertices), in the order of their first triangle, each
- *  with its triangles in their order and its vertices numbered in theirs: a mesh of one piece comes
- *  back as it was. */
-std::vector<TriangleMesh> splitIntoPieces(const TriangleMesh& mesh)
-{
-  std::size_t count = 0;
-  const std::vector<std::size_t> component = vertexComponents(mesh, count);
-  // Components with triangles come first; a vertex in no triangle makes no piece.
-  std::size_t withTriangles = 0;
-  for (const Triangle& t : mesh.triangles)
-    withTriangles = std::max(withTriangles, component[static_cast<std::size_t>(t[0])] + 1);
-  std::vector<TriangleMesh> pieces(withTriangles);
-  std::vector<std::int32_t> newIndex(mesh.points.size(), -1);
-  for (std::size_t v = 0; v < mesh.points.size(); ++v)
-    if (component[v] < withTriangles)
-    {
-      TriangleMesh& piece = pieces[component[v]];
-      newIndex[v] = static_cast<std::int32_t>(piece.points.size());
-      piece.points.push_back(mesh.points[v]);
-    }
-  for (const Triangle& t : mesh.triangles)
-    pieces[component[static_cast<std::size_t>(t[0])]].triangles.push_back(
-      { newIndex[t[0]], newIndex[t[1]], newIndex[t[2]] });
-  return pieces;
-}
-
 /** Puts back where `unsmoothed` has them the vertices of every triangle in a crossing pair and
  *  `rings` rings of triangles around them. Returns how many vertices moved back. */
 std::size_t unsmoothAround(TriangleMesh& mesh, const TriangleMesh& unsmoothed,
@@ -82,6 +56,20 @@ std::size_t unsmoothAround(TriangleMesh& mesh, const TriangleMesh& unsmoothed,
       mesh.points[v] = unsmoothed.points[v];
       ++moved;
     }
+  return moved;
+}
+
+/** Two sheets a voxel apart (a thin gap between gyri, a thin wall) can be smoothed into each other:
+ *  there, and only there, the vertices go back to where `unsmoothed` has them (growing rings, three
+ *  tries). `validation` is the mesh's, kept up to date. Returns how many vertices went back. */
+std::size_t unsmoothCrossings(TriangleMesh& mesh, const TriangleMesh& unsmoothed, MeshValidation& validation)
+{
+  std::size_t moved = 0;
+  for (int rings = 1; rings <= 4 && validation.selfIntersections > 0; rings *= 2)
+  {
+    moved += unsmoothAround(mesh, unsmoothed, selfIntersectingPairs(mesh), rings);
+    validation = validateMesh(mesh);
+  }
   return moved;
 }
 
@@ -150,7 +138,7 @@ std::optional<FinishedPiece> remeshedPiece(const TriangleMesh& tiled, const Mesh
   {
     remeshed = remeshSurface(tiled, options.remeshing);
   }
-  catch (const Error& e)
+  catch (const std::exception& e) // ours, or a CGAL precondition the piece does not meet
   {
     why = e.what();
     return std::nullopt;
@@ -161,14 +149,7 @@ std::optional<FinishedPiece> remeshedPiece(const TriangleMesh& tiled, const Mesh
   // tiling's volume back.
   offsetToVolume(remeshed, reference.volume);
   MeshValidation validation = validateMesh(remeshed);
-  // Two sheets a voxel apart (a thin gap between gyri, a thin wall) can be smoothed into each
-  // other: there, and only there, the remesh's own positions are kept.
-  std::size_t unsmoothedVertices = 0;
-  for (int rings = 1; rings <= 4 && validation.selfIntersections > 0; rings *= 2)
-  {
-    unsmoothedVertices += unsmoothAround(remeshed, unsmoothed, selfIntersectingPairs(remeshed), rings);
-    validation = validateMesh(remeshed);
-  }
+  const std::size_t unsmoothedVertices = unsmoothCrossings(remeshed, unsmoothed, validation);
   why = rejection(validation, reference);
   if (!why.empty())
     return std::nullopt;
@@ -191,31 +172,27 @@ FinishedPiece finishPiece(const TriangleMesh& tiled, const SurfaceFinishingOptio
   }
   TriangleMesh smoothed = tiled;
   smoothSurface(smoothed, options.smoothing);
-  const std::string why = rejection(validateMesh(smoothed), reference);
+  MeshValidation validation = validateMesh(smoothed);
+  const std::size_t unsmoothedVertices = unsmoothCrossings(smoothed, tiled, validation);
+  const std::string why = rejection(validation, reference);
   if (why.empty())
   {
     result.mesh = std::move(smoothed);
     result.finish = SurfaceFinish::Smoothed;
+    result.unsmoothedVertices = unsmoothedVertices;
     return result;
   }
   result.why += (result.why.empty() ? "" : "; ") + std::string("smoothed: ") + why;
   return result;
 }
 
-/** The pieces side by side in one mesh; `firstTriangle[i]` is where piece i's triangles start. */
+/** The pieces' meshes side by side in one mesh; `firstTriangle[i]` is where piece i's triangles start. */
 TriangleMesh joinPieces(const std::vector<FinishedPiece>& pieces, std::vector<std::size_t>& firstTriangle)
 {
-  TriangleMesh joined;
-  firstTriangle.clear();
+  std::vector<const TriangleMesh*> meshes;
   for (const FinishedPiece& piece : pieces)
-  {
-    firstTriangle.push_back(joined.triangles.size());
-    const auto offset = static_cast<std::int32_t>(joined.points.size());
-    joined.points.insert(joined.points.end(), piece.mesh.points.begin(), piece.mesh.points.end());
-    for (const Triangle& t : piece.mesh.triangles)
-      joined.triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
-  }
-  return joined;
+    meshes.push_back(&piece.mesh);
+  return joinMeshes(meshes, &firstTriangle);
 }
 
 } // namespace
@@ -271,6 +248,7 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   {
     result.fallback = "the finished pieces do not make a valid surface together (" + validation.summary() +
                       "), so the tiling is written";
+    result.piecesByFinish[static_cast<std::size_t>(SurfaceFinish::Tiled)] = pieces.size();
     return result;
   }
 
@@ -279,8 +257,11 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   result.finish = options.finish;
   std::size_t short_ = 0;
   std::string firstReason;
-  for (const FinishedPiece& piece : pieces)
+  for (std::size_t p = 0; p < pieces.size(); ++p)
   {
+    const FinishedPiece& piece = pieces[p];
+    const bool speck = tiledPieces[p].triangles.size() < smallPieceTriangles;
+    ++result.piecesByFinish[static_cast<std::size_t>(speck ? SurfaceFinish::Tiled : piece.finish)];
     result.unsmoothedVertices += piece.unsmoothedVertices;
     result.finish = std::max(result.finish, piece.finish); // the enum runs from most to least finished
     if (piece.finish != options.finish)

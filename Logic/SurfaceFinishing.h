@@ -7,6 +7,7 @@
 #include "SurfaceRemeshing.h"
 #include "SurfaceSmoothing.h"
 
+#include <array>
 #include <string>
 
 namespace slicemesh
@@ -35,12 +36,15 @@ struct FinishedSurface
    *  fallback, however many of the pieces it concerns: `fallback` counts them). */
   SurfaceFinish finish = SurfaceFinish::Tiled;
   std::string fallback; ///< why less was applied than asked, and to how many pieces; empty when all of it was
-  /** Vertices of the remeshed surface left where the remesh put them, unsmoothed, because smoothing
-   *  made triangles near them cross (two sheets of a structure a voxel or two apart). */
+  /** Vertices left unsmoothed (where the remesh put them, or the tiling for a piece smoothed only)
+   *  because smoothing made triangles near them cross (two sheets a voxel or two apart). */
   std::size_t unsmoothedVertices = 0;
   /** Pieces whose tiling has under 100 triangles (specks of a few voxels): left as tiled, which
    *  counts as finished (remeshing or smoothing a shape a couple of edges across only collapses it). */
   std::size_t smallPiecesAsTiled = 0;
+  /** How many connected pieces got each finish, indexed by SurfaceFinish (specks, left as tiled,
+   *  count under Tiled). All zero when the tiling was not split (an invalid tiling, or Tiled asked). */
+  std::array<std::size_t, 3> piecesByFinish{};
 };
 
 /** The finishing the CLI applies to a mask of this voxel spacing (mm): edges of
@@ -52,7 +56,8 @@ SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing
  *  remeshed and smoothed and gets its tiled volume back; where smoothing makes its triangles cross,
  *  the vertices around them (growing rings, three tries) go back to their remeshed positions. A piece
  *  is kept finished only if it is a valid surface of its tiled topology, facing the same way;
- *  otherwise it is smoothed only, else left as tiled. Pieces that cross each other once finished go
+ *  otherwise it is smoothed only (put back to the tiling where sheets cross, likewise), else left
+ *  as tiled. Pieces that cross each other once finished go
  *  back to their tiled shape. `fallback` says how many pieces got less than asked, and why the first
  *  did. An invalid tiling is returned as it is. */
 FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& tilingValidation,

@@ -4,11 +4,31 @@
 #include "OtsuThresholds.h"
 #include "SliceMeshTypes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 namespace slicemesh
 {
+
+std::string intensityRangeText(const ScalarVolume* volume)
+{
+  const float* voxel = volume->GetBufferPointer();
+  const std::size_t count = volume->GetBufferedRegion().GetNumberOfPixels();
+  double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
+  for (std::size_t n = 0; n < count; ++n)
+    if (std::isfinite(voxel[n]))
+    {
+      lowest = std::min(lowest, static_cast<double>(voxel[n]));
+      highest = std::max(highest, static_cast<double>(voxel[n]));
+    }
+  std::ostringstream text;
+  if (lowest > highest)
+    text << "no voxel has a finite intensity";
+  else
+    text << "the intensities run from " << lowest << " to " << highest;
+  return text.str();
+}
 
 GrayscaleMask segmentGrayscale(const ScalarVolume* volume, const GrayscaleSegmentationOptions& options)
 {
@@ -78,7 +98,8 @@ GrayscaleMask segmentGrayscale(const ScalarVolume* volume, const GrayscaleSegmen
   if (inside == 0)
   {
     std::ostringstream message;
-    message << "no voxel lies in the intensity range [" << lower << ", " << upper << (upperInclusive ? "]" : ")");
+    message << "no voxel lies in the intensity range [" << lower << ", " << upper << (upperInclusive ? "]" : ")")
+            << " (" << intensityRangeText(smooth) << (smooth.GetPointer() == volume ? "" : " after smoothing") << ")";
     throw Error(message.str());
   }
 

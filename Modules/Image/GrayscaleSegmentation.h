@@ -7,6 +7,7 @@
 #include "ImageDenoising.h"
 
 #include <limits>
+#include <string>
 
 namespace slicemesh
 {
@@ -59,6 +60,10 @@ struct GrayscaleMask
 /** Throws slicemesh::Error naming the fault when the parameters are inconsistent (lower > upper,
  *  a class beyond the number of thresholds) or the mask is empty. */
 GrayscaleMask segmentGrayscale(const ScalarVolume* volume, const GrayscaleSegmentationOptions& options);
+
+/** "the intensities run from 0 to 255": the smallest and largest finite voxel value, for messages
+ *  that say a threshold selects nothing. */
+std::string intensityRangeText(const ScalarVolume* volume);
 
 } // namespace slicemesh
 

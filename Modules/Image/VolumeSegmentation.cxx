@@ -2,6 +2,8 @@
 // (given, or Otsu's).
 #include "VolumeSegmentation.h"
 
+#include "GrayscaleSegmentation.h"
+
 #include "SliceMeshTypes.h"
 
 #include "itkOtsuThresholdCalculator.h"
@@ -203,7 +205,8 @@ MaskVolume::Pointer segmentVolume(const ScalarVolume* volume, const Segmentation
   if (fillMask(volume, mask, inside) == 0)
   {
     std::ostringstream message;
-    message << volumeName(volume) << ": no voxel is at or above the threshold " << threshold;
+    message << volumeName(volume) << ": no voxel is at or above the threshold " << threshold << " ("
+            << intensityRangeText(volume) << ")";
     throw Error(message.str());
   }
   refineMask(mask, options.refinement);

@@ -28,7 +28,8 @@ inline bool strictPropertyRun()
   return std::getenv("SLICEMESH_PROPERTY_STRICT") != nullptr;
 }
 
-/** firstSeed .. firstSeed + cases - 1, or only SLICEMESH_PROPERTY_SEED when it is set. */
+/** firstSeed .. firstSeed + cases - 1, or only SLICEMESH_PROPERTY_SEED when it is set. A long run
+ *  can be cut into pieces: SLICEMESH_PROPERTY_OFFSET=k starts at firstSeed + k. */
 inline SeedRange propertySeeds(std::uint64_t firstSeed, std::uint64_t defaultCases)
 {
   if (const char* only = std::getenv("SLICEMESH_PROPERTY_SEED"); only && *only)
@@ -36,7 +37,8 @@ inline SeedRange propertySeeds(std::uint64_t firstSeed, std::uint64_t defaultCas
     const std::uint64_t seed = std::strtoull(only, nullptr, 10);
     return { seed, seed + 1 };
   }
-  return { firstSeed, firstSeed + environmentNumber("SLICEMESH_PROPERTY_CASES", defaultCases) };
+  const std::uint64_t first = firstSeed + environmentNumber("SLICEMESH_PROPERTY_OFFSET", 0);
+  return { first, first + environmentNumber("SLICEMESH_PROPERTY_CASES", defaultCases) };
 }
 
 } // namespace slicemesh::testing

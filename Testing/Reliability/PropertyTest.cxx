@@ -49,9 +49,9 @@ struct Figures
   double worstVolumeRatio = 0.0; ///< |volume - voxel volume| / tolerance, largest seen
 };
 
-void runProperty(RandomMaskKind kind, std::uint64_t firstSeed)
+void runProperty(RandomMaskKind kind, std::uint64_t firstSeed, std::uint64_t defaultCases = 80)
 {
-  const auto [begin, end] = propertySeeds(firstSeed, 80);
+  const auto [begin, end] = propertySeeds(firstSeed, defaultCases);
   Figures figures;
   std::ostringstream failures;
   for (std::uint64_t seed = begin; seed < end; ++seed)
@@ -63,7 +63,7 @@ void runProperty(RandomMaskKind kind, std::uint64_t firstSeed)
       ++figures.knownFailures;
       continue;
     }
-    const MaskMeshResult result = meshMask(random.mask);
+    const MaskMeshResult result = meshMask(random.mask, random.options);
     if (result.contours == 0)
     {
       ++figures.empty; // nothing to mesh: reconstructSurface is expected to say so
@@ -105,6 +105,7 @@ TEST(Property, RandomNoiseGivesValidMeshesOfTheRightVolume) { runProperty(Random
 TEST(Property, BlobsWithNoiseGiveValidMeshesOfTheRightVolume) { runProperty(RandomMaskKind::BlobsAndNoise, 3000); }
 TEST(Property, EdgeAndCornerTouchingVoxelsGiveValidMeshesOfTheRightVolume) { runProperty(RandomMaskKind::Touching, 4000); }
 TEST(Property, ThinSheetsAndRodsGiveValidMeshesOfTheRightVolume) { runProperty(RandomMaskKind::Thin, 5000); }
+TEST(Property, ThresholdedMriGivesValidMeshesOfTheRightVolume) { runProperty(RandomMaskKind::ThresholdedMri, 6000, 24); }
 
 } // namespace
 } // namespace slicemesh::testing

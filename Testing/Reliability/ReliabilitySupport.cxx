@@ -63,6 +63,7 @@ std::string MaskMeshResult::problem() const
 MaskMeshResult meshMask(const MaskVolume* mask, const ReconstructionOptions& options)
 {
   MaskMeshResult result;
+  result.capsAtSlice = options.capPlacement == CapPlacement::AtSlice;
   const auto size = mask->GetLargestPossibleRegion().GetSize();
   const auto spacing = mask->GetSpacing();
   result.maxSpacing = std::max({ spacing[0], spacing[1], spacing[2] });
@@ -133,6 +134,7 @@ const char* kindName(RandomMaskKind kind)
     case RandomMaskKind::BlobsAndNoise: return "blobs+noise";
     case RandomMaskKind::Touching: return "touching";
     case RandomMaskKind::Thin: return "thin";
+    case RandomMaskKind::ThresholdedMri: return "thresholded MRI";
     default: return "any";
   }
 }
@@ -149,7 +151,8 @@ RandomMask randomMask(std::uint64_t seed, RandomMaskKind kind)
 
   std::array<std::size_t, 3> size;
   for (auto& s : size)
-    s = static_cast<std::size_t>(integer(kind == RandomMaskKind::Thin ? 1 : 2, 16));
+    s = static_cast<std::size_t>(kind == RandomMaskKind::ThresholdedMri ? integer(12, 28)
+                                                                         : integer(kind == RandomMaskKind::Thin ? 1 : 2, 16));
   if (integer(0, 9) == 0)
     size[2] = 1; // a single slice
   std::array<double, 3> spacing{ 1.0, 1.0, 1.0 };
@@ -272,6 +275,35 @@ RandomMask randomMask(std::uint64_t seed, RandomMaskKind kind)
       }
       break;
     }
+    case RandomMaskKind::ThresholdedMri:
+    {
+      // Six plane waves of 4 to 20 voxels' wavelength, summed and thresholded: folded sheets and
+      // tubes that touch, branch and enclose holes, like a threshold through grey and white matter.
+      std::array<std::array<double, 4>, 6> waves;
+      for (auto& w : waves)
+      {
+        const double length = uniform(4.0, 20.0), theta = uniform(0.0, M_PI), phi = uniform(0.0, 2.0 * M_PI);
+        const double k = 2.0 * M_PI / length;
+        w = { k * std::sin(theta) * std::cos(phi), k * std::sin(theta) * std::sin(phi), k * std::cos(theta),
+              uniform(0.0, 2.0 * M_PI) };
+      }
+      const double level = uniform(-1.5, 2.0);
+      // The volume is cut off flat somewhere, as a field of view or a slab of slices is.
+      const long firstSlice = integer(0, nz / 3), lastSlice = integer(2 * nz / 3, nz - 1);
+      for (long k = firstSlice; k <= lastSlice; ++k)
+        for (long j = 0; j < ny; ++j)
+          for (long i = 0; i < nx; ++i)
+          {
+            double f = 0.0;
+            for (const auto& w : waves)
+              f += std::cos(w[0] * i + w[1] * j + w[2] * k + w[3]);
+            if (f > level)
+              set(i, j, k);
+          }
+      if (integer(0, 2) == 0)
+        addNoise(uniform(0.002, 0.02));
+      break;
+    }
     case RandomMaskKind::Thin:
     default:
     {
@@ -297,11 +329,14 @@ RandomMask randomMask(std::uint64_t seed, RandomMaskKind kind)
     }
   }
 
+  ReconstructionOptions options;
+  if (kind == RandomMaskKind::ThresholdedMri && integer(0, 1))
+    options.capPlacement = CapPlacement::AtSlice;
   std::ostringstream description;
   description << "seed " << seed << ", " << kindName(kind) << ", size " << nx << " x " << ny << " x " << nz
               << ", spacing " << spacing[0] << " x " << spacing[1] << " x " << spacing[2] << ", " << directionName
-              << " direction";
-  return { mask, description.str() };
+              << " direction" << (options.capPlacement == CapPlacement::AtSlice ? ", caps at the slice" : "");
+  return { mask, description.str(), options };
 }
 
 std::string maskAsCode(const MaskVolume* mask)

@@ -38,7 +38,10 @@ struct MaskMeshResult
   /** The stated volume tolerance: the mesh lies within half a voxel of the voxels' boundary (0.5
    *  level contours, caps half a slice beyond), so its volume differs from the voxels' by less than
    *  a shell a quarter of the largest spacing thick over the voxels' boundary faces. */
-  double volumeTolerance() const { return 0.25 * maxSpacing * voxelFaceArea; }
+  double volumeTolerance() const { return (capsAtSlice ? 0.5 : 0.25) * maxSpacing * voxelFaceArea; }
+  /** Meshed with CapPlacement::AtSlice: the end caps lie on the last contours, up to half a voxel
+   *  inside the voxels, so the shell of the tolerance is half a spacing thick. */
+  bool capsAtSlice = false;
   bool volumeWithinTolerance() const
   {
     return std::abs(validation.volume - voxelVolume) <= volumeTolerance();
@@ -58,17 +61,22 @@ enum class RandomMaskKind
   BlobsAndNoise,
   Touching,     ///< voxels placed to touch only at edges and corners (diagonal runs, checkerboards)
   Thin,         ///< one-slice-thick sheets and one-voxel rods
-  Any           ///< one of the above, by the seed
+  /** A smooth random field thresholded, as a grayscale MRI is: many thin, touching and holed
+   *  pieces, cut off flat at a random first and last slice, capped flat (AtSlice) half the time. */
+  ThresholdedMri,
+  Any           ///< one of Blobs .. Thin, by the seed
 };
 
 struct RandomMask
 {
   MaskVolume::Pointer mask;
-  std::string description; ///< size, spacing, direction and kind, to reproduce by hand
+  std::string description; ///< size, spacing, direction, kind and caps, to reproduce by hand
+  ReconstructionOptions options; ///< the cap placement drawn for the mask (the default otherwise)
 };
 
-/** A random mask, the same for the same seed and kind: size 1..20 per axis, isotropic, anisotropic
- *  or thick-slice spacing, identity, oblique or mirrored direction. */
+/** A random mask, the same for the same seed and kind: size 1..16 per axis (12..28 for
+ *  ThresholdedMri), isotropic, anisotropic or thick-slice spacing, identity, oblique, mirrored or
+ *  permuted direction. */
 RandomMask randomMask(std::uint64_t seed, RandomMaskKind kind);
 
 /** The mask as C++ source (a makeMask call with the set voxels listed): a reproducer to paste. */
