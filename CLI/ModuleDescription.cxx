@@ -1,7 +1,7 @@
 // Reads the Slicer Execution Model XML with VTK's expat-based XML utilities.
 #include "ModuleDescription.h"
 
-#include "SliceMeshTypes.h"
+#include "Core/SliceMeshTypes.h"
 
 #include <vtkSmartPointer.h>
 #include <vtkXMLDataElement.h>

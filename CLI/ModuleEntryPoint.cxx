@@ -10,8 +10,11 @@
 #include "ReturnParameters.h"
 #include "SegmentationArguments.h"
 #include "SliceMeshPipeline.h"
+#include "Core/ParallelFor.h"
 
 #include "itkObject.h"
+
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -25,14 +28,6 @@ namespace
 
 using namespace slicemesh;
 using namespace slicemesh::cli;
-
-/** Errors are one line on stderr (Slicer logs each line separately). */
-std::string oneLine(std::string text)
-{
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  std::replace(text.begin(), text.end(), '\r', ' ');
-  return text;
-}
 
 int fail(ExitCode code, const std::string& message)
 {
@@ -67,54 +62,54 @@ PipelineSettings settingsFrom(const ParsedArguments& arguments)
   }
 
   readSegmentationArguments(arguments, settings);
-  settings.undersampling.correspondenceDistance = arguments.number("correspondenceDistance");
-  settings.undersampling.bridgeNonOverlapping = arguments.flag("bridgeNonOverlapping");
-  settings.undersampling.maxSliceSpacingFactor = arguments.number("maxSliceSpacingFactor");
-  settings.undersampling.sectionOverlap = arguments.number("sectionOverlap");
-  settings.undersampling.refineWeakOverlap = arguments.flag("refineWeakOverlap");
+  settings.meshing.undersampling.correspondenceDistance = arguments.number("correspondenceDistance");
+  settings.meshing.undersampling.bridgeNonOverlapping = arguments.flag("bridgeNonOverlapping");
+  settings.meshing.undersampling.maxSliceSpacingFactor = arguments.number("maxSliceSpacingFactor");
+  settings.meshing.undersampling.sectionOverlap = arguments.number("sectionOverlap");
+  settings.meshing.undersampling.refineWeakOverlap = arguments.flag("refineWeakOverlap");
   const bool bridging =
-    settings.undersampling.bridgeNonOverlapping && settings.undersampling.correspondenceDistance > 0.0;
-  if (settings.undersampling.bridgeNonOverlapping && !bridging)
+    settings.meshing.undersampling.bridgeNonOverlapping && settings.meshing.undersampling.correspondenceDistance > 0.0;
+  if (settings.meshing.undersampling.bridgeNonOverlapping && !bridging)
   {
     std::cerr << "SliceMesh: warning: --bridgeNonOverlapping needs --correspondenceDistance > 0; nothing is bridged"
               << std::endl;
   }
   // Slicer passes the default too: only a changed value that nothing reads is worth a word.
-  if (!bridging && !settings.undersampling.refineWeakOverlap &&
-      settings.undersampling.sectionOverlap != UndersamplingOptions().sectionOverlap)
+  if (!bridging && !settings.meshing.undersampling.refineWeakOverlap &&
+      settings.meshing.undersampling.sectionOverlap != UndersamplingOptions().sectionOverlap)
   {
     std::cerr << "SliceMesh: warning: --sectionOverlap is used only with --bridgeNonOverlapping or "
                  "--refineWeakOverlap; it has no effect"
               << std::endl;
   }
   settings.minimumComponentVolume = arguments.number("minimumComponentVolume");
-  settings.reconstruction.capPlacement =
+  settings.meshing.reconstruction.capPlacement =
     arguments.text("capPlacement") == "AtSlice" ? CapPlacement::AtSlice : CapPlacement::HalfSliceBeyond;
-  settings.reconstruction.wallRowHeight = arguments.number("wallRowHeight");
-  settings.reconstruction.minAngleDegrees = arguments.number("minimumAngle");
-  settings.reconstruction.maxEdgeLength = arguments.number("maxEdgeLength");
-  settings.reconstruction.planarTiling = arguments.flag("planarTiling");
+  settings.meshing.reconstruction.wallRowHeight = arguments.number("wallRowHeight");
+  settings.meshing.reconstruction.minAngleDegrees = arguments.number("minimumAngle");
+  settings.meshing.reconstruction.maxEdgeLength = arguments.number("maxEdgeLength");
+  settings.meshing.reconstruction.planarTiling = arguments.flag("planarTiling");
   settings.coordinateSystem =
     arguments.text("coordinateSystem") == "RAS" ? CoordinateSystem::RAS : CoordinateSystem::LPS;
-  settings.contours.smoothingSigma = arguments.number("contourSmoothingSigma");
-  settings.contours.simplificationTolerance = arguments.number("contourSimplification");
-  settings.contours.pointSpacing = arguments.number("contourPointSpacing");
+  settings.contourSmoothingSigma = arguments.number("contourSmoothingSigma");
+  settings.meshing.contours.simplificationTolerance = arguments.number("contourSimplification");
+  settings.meshing.contours.pointSpacing = arguments.number("contourPointSpacing");
   const std::string& preparation = arguments.text("contourPreparation");
-  settings.preparation.mode = preparation == "Smoothed" ? ContourPreparation::Smoothed
-                              : preparation == "Traced" ? ContourPreparation::Traced
-                                                        : ContourPreparation::Automatic;
-  settings.preparation.smoothingIterations = static_cast<int>(arguments.integer("contourSmoothingIterations"));
-  settings.preparation.smoothingMaxShift = arguments.number("contourSmoothingMaxShift");
+  settings.meshing.contours.mode = preparation == "Smoothed" ? ContourPreparation::Smoothed
+                                   : preparation == "Traced" ? ContourPreparation::Traced
+                                                             : ContourPreparation::Automatic;
+  settings.meshing.contours.smoothingIterations = static_cast<int>(arguments.integer("contourSmoothingIterations"));
+  settings.meshing.contours.smoothingMaxShift = arguments.number("contourSmoothingMaxShift");
   const std::string& finish = arguments.text("surfaceFinish");
-  settings.finishing.finish = finish == "Tiled"      ? SurfaceFinish::Tiled
-                              : finish == "Smoothed" ? SurfaceFinish::Smoothed
-                                                     : SurfaceFinish::Remeshed;
-  settings.finishing.remeshing.targetEdgeLength = arguments.number("targetEdgeLength"); // 0: automatic
-  settings.finishing.smoothing.iterations = static_cast<int>(arguments.integer("surfaceSmoothingIterations"));
-  settings.finishing.smoothing.passBand = arguments.number("surfaceSmoothingPassBand");
+  settings.meshing.finishing.finish = finish == "Tiled"      ? SurfaceFinish::Tiled
+                                      : finish == "Smoothed" ? SurfaceFinish::Smoothed
+                                                             : SurfaceFinish::Remeshed;
+  settings.meshing.finishing.remeshing.targetEdgeLength = arguments.number("targetEdgeLength"); // 0: automatic
+  settings.meshing.finishing.smoothing.iterations = static_cast<int>(arguments.integer("surfaceSmoothingIterations"));
+  settings.meshing.finishing.smoothing.passBand = arguments.number("surfaceSmoothingPassBand");
   // The XML's range is inclusive (it sets a GUI slider); the pass band must lie strictly inside it
   // (smoothSurface's precondition), so the ends are a usage error here, before any work.
-  if (!(settings.finishing.smoothing.passBand > 0.0 && settings.finishing.smoothing.passBand < 1.0))
+  if (!(settings.meshing.finishing.smoothing.passBand > 0.0 && settings.meshing.finishing.smoothing.passBand < 1.0))
   {
     std::ostringstream message;
     message << "--surfaceSmoothingPassBand (Surface smoothing pass band): "
@@ -124,6 +119,7 @@ PipelineSettings settingsFrom(const ParsedArguments& arguments)
   }
   settings.reportFile = arguments.text("report");
   settings.snapshotFile = arguments.text("snapshot");
+  settings.threads = static_cast<unsigned int>(arguments.integer("threads"));
   return settings;
 }
 
@@ -204,7 +200,10 @@ int ModuleEntryPoint(int argc, char* argv[])
     PipelineResult result;
     try
     {
-      result = runPipeline(settingsFrom(arguments), progress);
+      const PipelineSettings settings = settingsFrom(arguments);
+      // The self-intersection test's threads (TBB) stay within --threads too.
+      const tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, threadCount(settings.threads));
+      result = runPipeline(settings, progress);
       progress.finish(true);
     }
     catch (const PipelineFailure& e)

@@ -1,6 +1,5 @@
 #include "QualityReport.h"
 
-#include "ContourResampling.h" // meanPointSpacing
 
 #include <algorithm>
 #include <cmath>
@@ -117,18 +116,6 @@ std::vector<std::pair<std::string, double>> StageTimes::seconds() const
   return result;
 }
 
-RunQuality measureRun(const TriangleMesh& finished, const TriangleMesh& tiling, const ContourStack& stack)
-{
-  RunQuality quality;
-  quality.shape = measureMeshQuality(finished);
-  quality.dirichlet = measureDirichletEnergy(tiling, stack);
-  quality.pointSpacing = meanPointSpacing(stack);
-  quality.sliceSpacing = stack.sliceSpacing > 0.0 ? stack.sliceSpacing
-                         : stack.slices.size() > 1 ? (stack.slices.back().z - stack.slices.front().z) / (stack.slices.size() - 1)
-                                                   : 0.0;
-  return quality;
-}
-
 RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshValidation& summed,
                            const TriangleMesh& allTriangles)
 {
@@ -147,6 +134,9 @@ RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshVal
       combined.requestedFinish = q.requestedFinish;
       combined.finish = q.finish;
       combined.targetEdgeLength = q.targetEdgeLength; // every label's mask has the volume's spacing
+      combined.contourPreparation = q.contourPreparation;
+      combined.contourPointSpacing = q.contourPointSpacing;
+      combined.contourSmoothingMaxShift = q.contourSmoothingMaxShift;
       combined.smoothingIterations = q.smoothingIterations;
       combined.smoothingPassBand = q.smoothingPassBand;
       combined.smoothingMaxDisplacement = q.smoothingMaxDisplacement;
@@ -236,6 +226,13 @@ void writeMeshBlocks(std::ostream& json, const std::string& indent, const MeshVa
        << q.piecesByFinish[1] << ", \"leftTiled\": " << q.piecesByFinish[2] << " },\n";
   number("verticesLeftUnsmoothed", static_cast<double>(q.unsmoothedVertices));
   json << indent << "  \"fallback\": " << (q.fallback.empty() ? "null" : jsonString(q.fallback)) << "\n";
+  json << indent << "},\n";
+  json << indent << "\"resolvedOptions\": {\n";
+  json << indent << "  \"contourPreparation\": " << jsonString(q.contourPreparation) << ",\n";
+  number("contourPointSpacingMm", q.contourPointSpacing);
+  number("contourSmoothingMaxShiftMm", q.contourSmoothingMaxShift);
+  number("wallRowHeightMm", q.wallRowHeight);
+  number("steinerSpacingMm", q.steinerSpacing, true);
   json << indent << "},\n";
   json << indent << "\"mesh\": {\n";
   number("vertices", static_cast<double>(v.vertices));

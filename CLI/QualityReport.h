@@ -1,13 +1,12 @@
-// What a run measured about its mesh: the one-line summary, the --report JSON file, the --snapshot
-// picture, and the contour preprocessing options they describe. Only wiring and formatting: the
-// measures are Logic's (MeshValidation, MeshQuality, DirichletEnergy).
+// What a run measured about its mesh: the one-line summary and the --report JSON file. Only
+// formatting: the measures are Logic's (MeshValidation, MeshQuality, DirichletEnergy).
 #ifndef QualityReport_h
 #define QualityReport_h
 
-#include "DirichletEnergy.h"
-#include "MeshQuality.h"
-#include "MeshValidation.h"
-#include "SliceMeshTypes.h"
+#include "Measures/DirichletEnergy.h"
+#include "Measures/MeshQuality.h"
+#include "Measures/MeshValidation.h"
+#include "Core/SliceMeshTypes.h"
 
 #include <chrono>
 #include <array>
@@ -17,14 +16,6 @@
 
 namespace slicemesh::cli
 {
-
-/** Contour preprocessing between extraction and tiling (all off by default). */
-struct ContourOptions
-{
-  double smoothingSigma = 0.0;          ///< in-plane Gaussian of the mask before contouring (mm)
-  double simplificationTolerance = 0.0; ///< Douglas-Peucker tolerance, crossing-free (mm)
-  double pointSpacing = 0.0;            ///< resample to this spacing along the contours (mm)
-};
 
 /** Wall-clock time per stage, in the order the stages started. */
 class StageTimes
@@ -55,15 +46,16 @@ struct RunQuality
   /** Connected pieces remeshed, smoothed only and left as tiled (FinishedSurface::piecesByFinish,
    *  indexed by SurfaceFinish); summed over labels. */
   std::array<std::size_t, 3> piecesByFinish{};
+  /** The automatic values as resolved for this mesh (MeshingOptions, ReconstructionStatistics). */
+  std::string contourPreparation;      ///< "Traced" or "Smoothed"
+  double contourPointSpacing = 0.0;    ///< resampling spacing (mm); 0: the traced points kept
+  double contourSmoothingMaxShift = 0.0; ///< mm, when Smoothed
+  double wallRowHeight = 0.0;          ///< mm
+  double steinerSpacing = 0.0;         ///< mm
   double pointSpacing = 0.0;       ///< mean in-plane distance between contour points (mm)
   double sliceSpacing = 0.0;       ///< mm
   std::vector<std::pair<std::string, double>> stageSeconds;
 };
-
-/** Measures a run in the stack frame: the shape of the mesh as written (`finished`), the Dirichlet
- *  energy of the tiling it was finished from (measureDirichletEnergy needs the tiling's vertices on
- *  the contours), and the contours' spacings. The finishing fields are left to the caller. */
-RunQuality measureRun(const TriangleMesh& finished, const TriangleMesh& tiling, const ContourStack& stack);
 
 /** The finishing part of the summary: "finish Remeshed (target edge 1.14 mm)"; when some pieces got
  *  less than asked, "finish Remeshed (target edge 1.14 mm; 3 of 2149 pieces 2 smoothed only, 1 left
@@ -77,7 +69,7 @@ std::string finishSummary(const RunQuality& quality);
  *  mm^2; stages Reading 0.01 s, ..." */
 std::string qualitySummary(const MeshValidation& validation, const RunQuality& quality);
 
-/** The figures of one label of a multi-label run (runMultiLabelPipeline), as the report lists it. */
+/** The figures of one label of a multi-label run (runPipeline), as the report lists it. */
 struct LabelReport
 {
   int label = 0;

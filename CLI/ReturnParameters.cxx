@@ -1,6 +1,6 @@
 #include "ReturnParameters.h"
 
-#include "SliceMeshTypes.h"
+#include "Core/SliceMeshTypes.h"
 
 #include <fstream>
 

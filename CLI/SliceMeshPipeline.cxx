@@ -1,32 +1,33 @@
 #include "SliceMeshPipeline.h"
 
-#include "ContourExtraction.h"
-#include "ContourResampling.h"
-#include "ContourSimplification.h"
-#include "ContourSmoothing.h"
-#include "SmallComponentRemoval.h"
+#include "ColorTable.h"
+#include "Core/ParallelFor.h"
+#include "LabelIndex.h"
+#include "MaskMeshing.h"
 #include "MeshSnapshot.h"
-#include "MultiLabelPipeline.h"
 #include "NiftiOrientation.h"
+#include "SmallComponentRemoval.h"
 #include "VolumeReader.h"
 
-#include <cerrno>
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
-#include <cmath>
-#include <cstdlib>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <functional>
+#include <iostream>
+#include <mutex>
+#include <set>
 #include <sstream>
 #include <unistd.h>
-#include <iostream>
 
 namespace slicemesh::cli
 {
-
 namespace
 {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
 
 enum Stage : std::size_t
 {
@@ -58,124 +59,233 @@ auto guarded(ExitCode code, Step&& step) -> decltype(step())
   }
 }
 
-std::size_t contourCount(const ContourStack& stack)
+/** Throws WriteFailed unless `folder` exists (or, with `create`, can be made) and a file can be
+ *  made in it: probed with a file of our own, since access() says yes to root on any folder. */
+void requireWritableFolder(const fs::path& folder, bool create, const std::string& what)
 {
-  std::size_t count = 0;
-  for (const Slice& slice : stack.slices)
+  if (create && !fs::is_directory(folder))
   {
-    count += slice.contours.size();
+    std::error_code error;
+    fs::create_directories(folder, error);
+    if (error)
+      throw PipelineFailure(WriteFailed, "cannot create the output folder '" + folder.string() + "': " + error.message());
   }
-  return count;
+  if (!fs::is_directory(folder))
+    throw PipelineFailure(WriteFailed, what + ": folder '" + folder.string() + "' does not exist");
+  std::string probe = (folder / ".SliceMesh-probe-XXXXXX").string();
+  const int descriptor = ::mkstemp(probe.data());
+  if (descriptor < 0)
+  {
+    const int error = errno;
+    throw PipelineFailure(WriteFailed,
+                          what + ": folder '" + folder.string() + "' is not writable (" + std::strerror(error) + ")");
+  }
+  ::close(descriptor);
+  ::unlink(probe.c_str());
+}
+
+/** Everything that can fail without reading the input, checked before any work so that such a
+ *  run writes nothing. */
+ColorTable checkBeforeWork(const PipelineSettings& settings)
+{
+  const fs::path output(settings.outputModel);
+  requireWritableFolder(output.has_parent_path() ? output.parent_path() : ".", false,
+                        "cannot write mesh '" + settings.outputModel + "'");
+  if (settings.multiLabel.enabled && !settings.multiLabel.outputDirectory.empty())
+    requireWritableFolder(settings.multiLabel.outputDirectory, true,
+                          "cannot write the label meshes into '" + settings.multiLabel.outputDirectory + "'");
+  std::string reason;
+  if (!settings.snapshotFile.empty() && !snapshotAvailable(&reason))
+    throw PipelineFailure(WriteFailed, "cannot render snapshot '" + settings.snapshotFile + "': " + reason);
+  if (settings.multiLabel.enabled && !settings.multiLabel.colorTable.empty())
+    return guarded(BadArguments, [&] { return ColorTable::read(settings.multiLabel.colorTable); });
+  return {};
+}
+
+/** One structure on its way through the run: the mask, or one label of a label map. */
+struct Structure
+{
+  LabelReport report;                              ///< label, name, file, figures, error
+  std::array<unsigned char, 4> rgba{ 128, 128, 128, 255 };
+  MaskVolume::Pointer mask;
+  MeshedContours meshing;
+  TriangleMesh physical;
+  bool live() const { return report.meshed(); } ///< neither failed nor dropped
+};
+
+std::string who(const Structure& s, bool perLabel)
+{
+  return perLabel ? "label " + std::to_string(s.report.label) + " (" + s.report.name + "): " : std::string();
+}
+
+/** The single mask of a one-mesh run, after --minimumComponentVolume. */
+Structure maskStructure(const ScalarVolume* volume, const PipelineSettings& settings)
+{
+  Structure s;
+  s.mask = guarded(EmptySegmentation, [&] { return segmentVolume(volume, settings.segmentation); });
+  if (settings.minimumComponentVolume > 0.0)
+  {
+    const SmallComponentRemoval removal =
+      guarded(MeshingFailed, [&] { return removeSmallComponents(s.mask, settings.minimumComponentVolume); });
+    if (removal.removedComponents == removal.components)
+    {
+      std::ostringstream message;
+      message << "every one of the " << removal.components << " connected components of the segmentation of '"
+              << settings.inputVolume << "' is smaller than the minimum component volume "
+              << settings.minimumComponentVolume << " mm^3 (the largest is " << removal.largestComponentVolume
+              << " mm^3)";
+      throw PipelineFailure(EmptySegmentation, message.str());
+    }
+  }
+  return s;
+}
+
+/** One structure per label asked for (every non-zero label by default), in increasing order, each a
+ *  mask cropped to the label's box; one pass over the volume finds them all. */
+std::vector<Structure> labelStructures(const ScalarVolume* volume, const PipelineSettings& settings,
+                                       const ColorTable& colors)
+{
+  const MultiLabelSettings& multi = settings.multiLabel;
+  std::vector<LabelExtent> extents =
+    guarded(EmptySegmentation, [&] { return indexLabels(volume); }); // messages name the volume below
+  if (!multi.labels.empty())
+  {
+    std::set<int> wanted(multi.labels.begin(), multi.labels.end());
+    std::vector<LabelExtent> chosen;
+    for (const LabelExtent& e : extents)
+      if (wanted.erase(e.label))
+        chosen.push_back(e);
+    if (!wanted.empty())
+    {
+      std::ostringstream message;
+      message << settings.inputVolume << ": no voxel has label";
+      for (int label : wanted)
+        message << " " << label;
+      message << " (" << extents.size() << " labels present)";
+      throw PipelineFailure(EmptySegmentation, message.str());
+    }
+    extents = chosen;
+  }
+  if (extents.empty())
+    throw PipelineFailure(EmptySegmentation, settings.inputVolume + ": every voxel is 0; nothing to mesh");
+  if (!settings.segmentation.refinement.seeds.empty())
+    std::cerr << "SliceMesh: warning: seed points are ignored when meshing every label separately" << std::endl;
+  MaskRefinementOptions refinement = settings.segmentation.refinement;
+  refinement.seeds.clear();
+
+  std::vector<Structure> structures(extents.size());
+  for (std::size_t n = 0; n < extents.size(); ++n)
+  {
+    Structure& s = structures[n];
+    const LabelColor entry = colors.entry(extents[n].label);
+    s.report.label = extents[n].label;
+    s.report.name = entry.name;
+    s.report.voxels = extents[n].voxels;
+    s.rgba = entry.rgba;
+    try
+    {
+      s.mask = cropLabelMask(volume, extents[n]);
+      if (refinement.any())
+        refineMask(s.mask, refinement);
+      if (settings.minimumComponentVolume > 0.0)
+      {
+        const SmallComponentRemoval removal = removeSmallComponents(s.mask, settings.minimumComponentVolume);
+        s.report.removedComponents = removal.removedComponents;
+        if (removal.removedComponents == removal.components)
+        {
+          // Specks only: dropped, not a failure (the option asks for exactly this).
+          s.report.dropped = true;
+          std::cerr << "SliceMesh: warning: label " << s.report.label << " (" << s.report.name << ") dropped: each of its "
+                    << removal.components
+                    << " connected components is smaller than the minimum component volume "
+                    << settings.minimumComponentVolume << " mm^3 (the largest is " << removal.largestComponentVolume
+                    << " mm^3)" << std::endl;
+        }
+      }
+    }
+    catch (const std::exception& e)
+    {
+      s.report.error = e.what();
+    }
+  }
+  return structures;
+}
+
+std::size_t contourPoints(const ContourStack& stack)
+{
+  std::size_t points = 0;
+  for (const Slice& slice : stack.slices)
+    for (const Polygon2& contour : slice.contours)
+      points += contour.size();
+  return points;
+}
+
+/** The run's figures of one finished structure, for the summary line and the report. */
+RunQuality runQualityOf(const MeshedContours& m)
+{
+  RunQuality quality;
+  quality.shape = m.measures.shape;
+  quality.dirichlet = m.measures.dirichlet;
+  quality.genus = m.measures.genus;
+  quality.pointSpacing = m.measures.pointSpacing;
+  quality.sliceSpacing = m.measures.sliceSpacing;
+  const ContourPreparationOptions& contours = m.options.contours;
+  quality.contourPreparation = contours.mode == ContourPreparation::Smoothed ? "Smoothed" : "Traced";
+  quality.contourPointSpacing = contours.pointSpacing;
+  quality.contourSmoothingMaxShift = contours.mode == ContourPreparation::Smoothed ? contours.smoothingMaxShift : 0.0;
+  quality.wallRowHeight = m.reconstruction.wallRowHeight;
+  quality.steinerSpacing = m.reconstruction.steinerSpacing;
+  const SurfaceFinishingOptions& finishing = m.options.finishing;
+  quality.requestedFinish = finishName(finishing.finish);
+  quality.finish = finishName(m.surface.finish);
+  quality.fallback = m.surface.fallback;
+  quality.smallPiecesAsTiled = m.surface.smallPiecesAsTiled;
+  quality.unsmoothedVertices = m.surface.unsmoothedVertices;
+  quality.piecesByFinish = m.surface.piecesByFinish;
+  if (finishing.finish == SurfaceFinish::Remeshed)
+    quality.targetEdgeLength = finishing.remeshing.targetEdgeLength;
+  if (finishing.finish != SurfaceFinish::Tiled)
+  {
+    quality.smoothingIterations = finishing.smoothing.iterations;
+    quality.smoothingPassBand = finishing.smoothing.passBand;
+    quality.smoothingMaxDisplacement = finishing.smoothing.maxDisplacement;
+  }
+  return quality;
+}
+
+void accumulate(MeshValidation& sum, const MeshValidation& v)
+{
+  sum.vertices += v.vertices;
+  sum.triangles += v.triangles;
+  sum.degenerateTriangles += v.degenerateTriangles;
+  sum.boundaryEdges += v.boundaryEdges;
+  sum.nonManifoldEdges += v.nonManifoldEdges;
+  sum.nonManifoldVertices += v.nonManifoldVertices;
+  sum.inconsistentEdges += v.inconsistentEdges;
+  sum.foldedEdges += v.foldedEdges;
+  sum.selfIntersections += v.selfIntersections;
+  sum.selfIntersectionChecked = sum.selfIntersectionChecked && v.selfIntersectionChecked;
+  sum.components += v.components;
+  sum.eulerCharacteristic += v.eulerCharacteristic;
+  sum.area += v.area;
+  sum.volume += v.volume;
+}
+
+/** "037_Hippocampus_L.vtp": the value zero-padded to sort in label order, then the safe name. */
+std::string labelFileName(const Structure& s, int width, const std::string& extension)
+{
+  char value[32];
+  std::snprintf(value, sizeof(value), "%0*d", width, s.report.label);
+  return std::string(value) + "_" + safeFileName(s.report.name) + extension;
 }
 
 } // namespace
 
-ContourPreparation resolvedPreparation(ContourPreparation mode, double pixelX, double pixelY, double sliceSpacing)
+std::string oneLine(std::string text)
 {
-  if (mode != ContourPreparation::Automatic)
-    return mode;
-  // Near-isotropic voxels: the traced contours of adjacent slices coincide along the voxel walls,
-  // which the tiling turns into well-shaped rows; smoothing breaks that coincidence and, measured
-  // on the benchmark's phantoms at 1 mm, costs more in angle quality and triangles than it gains
-  // in distance. Thick slices: smoothing and longer contour edges win on distance and triangle
-  // count, but lose on angles (6-13% of triangles under 30 degrees instead of 0.4-1.7%), which is
-  // why this is an option and Traced the default.
-  return sliceSpacing >= 2.0 * std::min(pixelX, pixelY) ? ContourPreparation::Smoothed : ContourPreparation::Traced;
-}
-
-double resolvedPointSpacing(const ContourOptions& contours, ContourPreparation resolved, double pixelX, double pixelY,
-                            double sliceSpacing)
-{
-  if (contours.pointSpacing > 0.0 || resolved != ContourPreparation::Smoothed)
-    return contours.pointSpacing;
-  return std::sqrt(std::min(pixelX, pixelY) * sliceSpacing);
-}
-
-ContourStack prepareContours(const ContourStack& traced, const ContourOptions& contours,
-                             const ContourPreparationOptions& preparation, const std::array<double, 3>& spacing)
-{
-  const ContourPreparation resolved = resolvedPreparation(preparation.mode, spacing[0], spacing[1], spacing[2]);
-  ContourStack result = traced;
-  if (resolved == ContourPreparation::Smoothed && preparation.smoothingIterations > 0)
-  {
-    ContourSmoothingOptions smoothing;
-    smoothing.iterations = preparation.smoothingIterations;
-    // 0.3 pixel: traced contours are at least 0.71 pixel apart (two voxels touching at a corner), so
-    // points moving at most 0.3 pixel each cannot make them meet.
-    smoothing.maxDisplacement =
-      preparation.smoothingMaxShift > 0.0 ? preparation.smoothingMaxShift : 0.3 * std::min(spacing[0], spacing[1]);
-    result = smoothContours(result, smoothing);
-  }
-  if (contours.simplificationTolerance > 0.0)
-    result = simplifyContours(result, contours.simplificationTolerance);
-  // Resampled contours keep their enclosed area: chords cut the corners of small structures.
-  const double pointSpacing = resolvedPointSpacing(contours, resolved, spacing[0], spacing[1], spacing[2]);
-  if (pointSpacing > 0.0)
-    result = resampleContours(result, pointSpacing, /*keepArea=*/true);
-  return result;
-}
-
-ContourStack maskContours(const MaskVolume* mask, const ContourOptions& contours,
-                          const ContourPreparationOptions& preparation)
-{
-  const auto spacing = mask->GetSpacing();
-  return prepareContours(extractContours(mask, contours.smoothingSigma), contours, preparation,
-                         { spacing[0], spacing[1], spacing[2] });
-}
-
-SurfaceFinishingOptions resolvedFinishing(const SurfaceFinishingOptions& finishing,
-                                          const std::array<double, 3>& spacing)
-{
-  // The library's finishing for this grid (automatic edge length, smoothing that moves no vertex
-  // farther than a fraction of a voxel), with the command line's choices on top.
-  SurfaceFinishingOptions resolved = finishingOptionsFor(spacing);
-  resolved.finish = finishing.finish;
-  resolved.smoothing.iterations = finishing.smoothing.iterations;
-  resolved.smoothing.passBand = finishing.smoothing.passBand;
-  if (finishing.smoothing.maxDisplacement > 0.0)
-    resolved.smoothing.maxDisplacement = finishing.smoothing.maxDisplacement;
-  resolved.remeshing.iterations = finishing.remeshing.iterations;
-  if (finishing.remeshing.targetEdgeLength > 0.0)
-    resolved.remeshing.targetEdgeLength = finishing.remeshing.targetEdgeLength;
-  return resolved;
-}
-
-FinishedSurface finishAndMeasure(const TriangleMesh& tiling, const MeshValidation& tilingValidation,
-                                 const ContourStack& stack, const SurfaceFinishingOptions& finishing,
-                                 const std::array<double, 3>& spacing, const std::string& who, RunQuality& quality)
-{
-  const SurfaceFinishingOptions options = resolvedFinishing(finishing, spacing);
-  FinishedSurface finished = finishSurface(tiling, tilingValidation, options);
-  quality = measureRun(finished.mesh, tiling, stack);
-  quality.genus = genusOf(finished.validation);
-  quality.requestedFinish = finishName(options.finish);
-  quality.finish = finishName(finished.finish);
-  quality.fallback = finished.fallback;
-  quality.smallPiecesAsTiled = finished.smallPiecesAsTiled;
-  quality.piecesByFinish = finished.piecesByFinish;
-  quality.unsmoothedVertices = finished.unsmoothedVertices;
-  if (options.finish == SurfaceFinish::Remeshed)
-    quality.targetEdgeLength = options.remeshing.targetEdgeLength;
-  if (options.finish != SurfaceFinish::Tiled)
-  {
-    quality.smoothingIterations = options.smoothing.iterations;
-    quality.smoothingPassBand = options.smoothing.passBand;
-    quality.smoothingMaxDisplacement = options.smoothing.maxDisplacement;
-  }
-  if (!finished.fallback.empty())
-  {
-    std::string line = who + "surface finishing: " + finished.fallback;
-    std::replace(line.begin(), line.end(), '\n', ' '); // one line: Slicer logs each line on its own
-    std::cerr << "SliceMesh: warning: " << line << std::endl;
-  }
-  return finished;
-}
-
-void requireSnapshotRenderer(const std::string& snapshotFile)
-{
-  std::string reason;
-  if (!snapshotFile.empty() && !snapshotAvailable(&reason))
-    throw PipelineFailure(WriteFailed, "cannot render snapshot '" + snapshotFile + "': " + reason);
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  std::replace(text.begin(), text.end(), '\r', ' ');
+  return text;
 }
 
 std::vector<ProgressStage> pipelineStages()
@@ -191,11 +301,12 @@ std::vector<ProgressStage> pipelineStages()
            { "Writing", "Writing the mesh", 0.5 } };
 }
 
-PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& progress)
+PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& progress,
+                           std::vector<LabelReport>* labels)
 {
-  if (settings.multiLabel.enabled)
-    return runMultiLabelPipeline(settings, progress);
-  const auto began = std::chrono::steady_clock::now();
+  const auto began = Clock::now();
+  const bool perLabel = settings.multiLabel.enabled;
+  const ColorTable colors = checkBeforeWork(settings);
   StageTimes times;
   auto startStage = [&](Stage stage)
   {
@@ -203,112 +314,205 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
     progress.start(stage);
   };
 
-  // Fail before the expensive work when the output could never be written.
-  const std::filesystem::path output(settings.outputModel);
-  const std::filesystem::path folder = output.has_parent_path() ? output.parent_path() : ".";
-  if (!std::filesystem::is_directory(folder))
-  {
-    throw PipelineFailure(WriteFailed, "cannot write mesh '" + settings.outputModel + "': folder '" +
-                                         folder.string() + "' does not exist");
-  }
-  // ... or cannot be written: probe with a file of our own (access() says yes to root on any folder).
-  {
-    std::string probe = (folder / ".SliceMesh-probe-XXXXXX").string();
-    const int descriptor = ::mkstemp(probe.data());
-    if (descriptor < 0)
-    {
-      const int error = errno;
-      throw PipelineFailure(WriteFailed, "cannot write mesh '" + settings.outputModel + "': folder '" +
-                                           folder.string() + "' is not writable (" + std::strerror(error) + ")");
-    }
-    ::close(descriptor);
-    ::unlink(probe.c_str());
-  }
-  // ... and a picture that cannot be rendered here fails the run now, not after the mesh is written.
-  requireSnapshotRenderer(settings.snapshotFile);
-
   startStage(Reading);
   const ScalarVolume::Pointer volume = guarded(UnreadableInput, [&] { return readVolume(settings.inputVolume); });
   if (const auto warning = niftiOrientationWarning(settings.inputVolume, volume))
     std::cerr << "SliceMesh: warning: " << *warning << std::endl;
 
   startStage(Segmentation);
-  const MaskVolume::Pointer mask =
-    guarded(EmptySegmentation, [&] { return segmentVolume(volume, settings.segmentation); });
-  if (settings.minimumComponentVolume > 0.0)
-  {
-    const SmallComponentRemoval removal =
-      guarded(MeshingFailed, [&] { return removeSmallComponents(mask, settings.minimumComponentVolume); });
-    if (removal.removedComponents == removal.components)
+  std::vector<Structure> structures;
+  std::vector<std::string> failures;
+  if (perLabel)
+    structures = labelStructures(volume, settings, colors);
+  else
+    structures.push_back(maskStructure(volume, settings));
+  for (const Structure& s : structures)
+    if (!s.report.error.empty())
     {
-      std::ostringstream message;
-      message << "every one of the " << removal.components << " connected components of the segmentation of '"
-              << settings.inputVolume << "' is smaller than the minimum component volume "
-              << settings.minimumComponentVolume << " mm^3 (the largest is " << removal.largestComponentVolume
-              << " mm^3)";
-      throw PipelineFailure(EmptySegmentation, message.str());
+      failures.push_back(who(s, true) + s.report.error);
+      std::cerr << "SliceMesh: error: " << failures.back() << std::endl;
     }
-  }
+
+  // Every structure through one stage, then the next: each stage is reported once, its progress
+  // structure by structure. Structures run side by side (each in its own slot, so the output does
+  // not depend on the threads); one structure alone gets the threads for its own pieces. In a
+  // one-mesh run a failure ends the run with the stage's exit code; in a multi-label run it ends
+  // only its label, reported on stderr in label order.
+  const unsigned int threads = threadCount(settings.threads);
+  const unsigned int outerThreads = structures.size() > 1 ? threads : 1;
+  std::mutex progressLock;
+  auto eachStructure = [&](ExitCode code, const std::function<void(Structure&, const std::function<void(double)>&)>& step)
+  {
+    const double count = static_cast<double>(structures.size());
+    std::size_t done = 0;
+    std::vector<std::string> errors(structures.size());
+    parallelFor(structures.size(), outerThreads,
+                [&](std::size_t n)
+                {
+                  Structure& s = structures[n];
+                  if (s.live())
+                  {
+                    const auto stepBegan = Clock::now();
+                    // Within-stage fractions only where one structure runs at a time: monotonic.
+                    std::function<void(double)> fraction;
+                    if (outerThreads == 1)
+                      fraction = [&progress, n, count](double f) { progress.update((static_cast<double>(n) + f) / count); };
+                    if (!perLabel)
+                      guarded(code, [&] { step(s, fraction); });
+                    else
+                    {
+                      try
+                      {
+                        step(s, fraction);
+                      }
+                      catch (const std::exception& e)
+                      {
+                        s.report.error = e.what();
+                        errors[n] = who(s, true) + e.what();
+                      }
+                    }
+                    s.report.seconds += std::chrono::duration<double>(Clock::now() - stepBegan).count();
+                  }
+                  const std::lock_guard<std::mutex> lock(progressLock);
+                  progress.update(static_cast<double>(++done) / count);
+                });
+    for (const std::string& error : errors)
+      if (!error.empty())
+      {
+        failures.push_back(error);
+        std::cerr << "SliceMesh: error: " << error << std::endl;
+      }
+  };
 
   startStage(Contours);
-  const ContourStack contours =
-    guarded(MeshingFailed, [&] { return maskContours(mask, settings.contours, settings.preparation); });
-  if (contourCount(contours) == 0)
-  {
-    throw PipelineFailure(EmptySegmentation, "the segmentation of '" + settings.inputVolume + "' has no contours");
-  }
-  const SliceFrame frame = guarded(MeshingFailed, [&] { return sliceFrameOf(volume); });
-
-  // Correspondence by the distance rule: bridging of distance-only pairs and sections in thick slabs
-  // (a copy of the contours when both are off). Overlapping contours are matched inside the tiling.
-  startStage(Correspondence);
+  eachStructure(MeshingFailed,
+                [&](Structure& s, const std::function<void(double)>&)
+                {
+                  s.meshing = startMaskMeshing(s.mask, settings.meshing, settings.contourSmoothingSigma);
+                  s.meshing.options.threads = structures.size() > 1 ? 1 : threads;
+                  runMeshingStage(MeshingStage::Preparation, s.meshing);
+                  if (!perLabel && contourPoints(s.meshing.stack) == 0)
+                    throw PipelineFailure(EmptySegmentation,
+                                          "the segmentation of '" + settings.inputVolume + "' has no contours");
+                });
   PipelineResult result;
-  const ContourStack stack = guarded(
-    MeshingFailed, [&] { return insertIntermediateSections(contours, settings.undersampling, &result.sections); });
-
-  startStage(Tiling);
-  ReconstructionOptions options = settings.reconstruction;
-  options.progress = [&progress](double fraction) { progress.update(fraction); };
-  const TriangleMesh stackMesh = guarded(MeshingFailed, [&] { return reconstructSurface(stack, options); });
-  if (stackMesh.triangles.empty())
+  startStage(Correspondence);
+  eachStructure(MeshingFailed,
+                [&](Structure& s, const std::function<void(double)>& fraction)
+                {
+                  runMeshingStage(MeshingStage::Correspondence, s.meshing, fraction);
+                  for (const std::string& note : s.meshing.sections.notes)
+                    result.sections.notes.push_back(who(s, perLabel) + note);
+                });
+  for (const auto& [stage, meshingStage] : { std::pair{ Tiling, MeshingStage::Tiling },
+                                             std::pair{ Validation, MeshingStage::Validation },
+                                             std::pair{ Finishing, MeshingStage::Finishing } })
   {
-    throw PipelineFailure(MeshingFailed, "the reconstruction of '" + settings.inputVolume + "' produced no triangles");
+    startStage(stage);
+    eachStructure(MeshingFailed, [&, meshingStage = meshingStage](Structure& s, const std::function<void(double)>& fraction)
+                  { runMeshingStage(meshingStage, s.meshing, fraction); });
   }
 
-  startStage(Validation);
-  const MeshValidation tilingValidation = guarded(MeshingFailed, [&] { return validateMesh(stackMesh); });
-
-  // From here on the mesh is the finished one: what is written, pictured and reported (only the
+  // From here on each mesh is the finished one: what is written, pictured and reported (only the
   // Dirichlet energy stays the tiling's).
-  startStage(Finishing);
-  const auto spacing = mask->GetSpacing();
-  const FinishedSurface finished = guarded(
-    MeshingFailed,
-    [&]
-    {
-      return finishAndMeasure(stackMesh, tilingValidation, stack, settings.finishing,
-                              { spacing[0], spacing[1], spacing[2] }, "", result.quality);
-    });
-  result.validation = finished.validation;
-
   startStage(Writing);
-  const TriangleMesh physical =
-    guarded(WriteFailed, [&] { return mapToPhysicalSpace(finished.mesh, frame, settings.coordinateSystem); });
-  guarded(WriteFailed, [&] { writeMesh(physical, settings.coordinateSystem, settings.outputModel); });
-  if (!settings.snapshotFile.empty())
-    guarded(WriteFailed, [&] { writeSnapshot(physical, settings.snapshotFile); });
+  TriangleMesh merged;
+  MeshAttributes mergedAttributes;
+  std::vector<LabelReport> reports;
+  result.validation.selfIntersectionChecked = true;
+  const fs::path output(settings.outputModel);
+  const int width = perLabel && !structures.empty() && structures.back().report.label >= 1000 ? 0 : 3;
+  for (Structure& s : structures)
+  {
+    if (s.live())
+    {
+      const FinishedSurface& surface = s.meshing.surface;
+      s.report.validation = surface.validation;
+      s.report.quality = runQualityOf(s.meshing);
+      s.report.contourPoints = contourPoints(s.meshing.stack);
+      if (!surface.fallback.empty())
+        std::cerr << "SliceMesh: warning: " << who(s, perLabel) << "surface finishing: " << oneLine(surface.fallback)
+                  << std::endl;
+      s.physical = guarded(WriteFailed, [&]
+                           { return mapToPhysicalSpace(surface.mesh, sliceFrameOf(s.mask), settings.coordinateSystem); });
+      accumulate(result.validation, surface.validation);
+      if (perLabel)
+      {
+        MeshAttributes attributes;
+        const std::array<unsigned char, 3> rgb{ s.rgba[0], s.rgba[1], s.rgba[2] };
+        attributes.cellLabels.assign(s.physical.triangles.size(), s.report.label);
+        attributes.cellColors.assign(s.physical.triangles.size(), rgb);
+        attributes.structures.push_back({ s.report.label, s.report.name, s.rgba });
+        if (!settings.multiLabel.outputDirectory.empty())
+        {
+          s.report.path = (fs::path(settings.multiLabel.outputDirectory) /
+                           labelFileName(s, width, output.extension().string())).string();
+          guarded(WriteFailed, [&] { writeMesh(s.physical, settings.coordinateSystem, s.report.path, attributes); });
+        }
+        mergedAttributes.cellLabels.insert(mergedAttributes.cellLabels.end(), attributes.cellLabels.begin(),
+                                           attributes.cellLabels.end());
+        mergedAttributes.cellColors.insert(mergedAttributes.cellColors.end(), attributes.cellColors.begin(),
+                                           attributes.cellColors.end());
+        mergedAttributes.structures.push_back(attributes.structures.front());
+      }
+      const auto offset = static_cast<std::int32_t>(merged.points.size());
+      merged.points.insert(merged.points.end(), s.physical.points.begin(), s.physical.points.end());
+      for (const Triangle& t : s.physical.triangles)
+        merged.triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+    }
+    reports.push_back(s.report);
+  }
+  if (merged.triangles.empty() && failures.empty())
+  {
+    std::ostringstream message;
+    message << "every label of '" << settings.inputVolume << "' is smaller than the minimum component volume "
+            << settings.minimumComponentVolume << " mm^3; nothing to mesh";
+    throw PipelineFailure(EmptySegmentation, message.str());
+  }
+  if (!merged.triangles.empty())
+    guarded(WriteFailed,
+            [&]
+            {
+              if (perLabel)
+                writeMesh(merged, settings.coordinateSystem, settings.outputModel, mergedAttributes);
+              else
+                writeMesh(merged, settings.coordinateSystem, settings.outputModel);
+            });
+  if (perLabel)
+    result.quality = combinedQuality(reports, result.validation, merged);
+  else
+  {
+    result.quality = structures.front().report.quality;
+    result.validation = structures.front().report.validation;
+  }
+  if (!settings.snapshotFile.empty() && !merged.triangles.empty())
+    guarded(WriteFailed,
+            [&]
+            {
+              if (perLabel)
+                writeSnapshot(merged, mergedAttributes.cellColors, settings.snapshotFile);
+              else
+                writeSnapshot(merged, settings.snapshotFile);
+            });
   progress.end();
 
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  result.seconds = std::chrono::duration<double>(Clock::now() - began).count();
   result.quality.stageSeconds = times.seconds();
   if (!settings.reportFile.empty())
-  {
     guarded(WriteFailed,
             [&]
             {
               writeQualityReport(settings.reportFile, settings.inputVolume, settings.outputModel, result.validation,
-                                 result.quality, result.seconds);
+                                 result.quality, result.seconds, perLabel ? reports : std::vector<LabelReport>{});
             });
+  if (labels)
+    labels->insert(labels->end(), reports.begin(), reports.end());
+  if (!failures.empty())
+  {
+    std::ostringstream message;
+    message << failures.size() << " of " << structures.size() << " labels failed; the others were written. First: "
+            << failures.front();
+    throw PipelineFailure(MeshingFailed, message.str());
   }
   return result;
 }

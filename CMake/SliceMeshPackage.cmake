@@ -1,10 +1,10 @@
-# Installs SliceMesh's Logic library as a CMake package: headers in include/SliceMesh, the static
+# Installs SliceMesh's Logic library as a CMake package: headers in include/slicemesh/<Stage>/, the static
 # library in lib, and SliceMeshConfig.cmake + SliceMeshConfigVersion.cmake + the exported targets in
 # lib/cmake/SliceMesh, so another project can find_package(SliceMesh) and link SliceMesh::Logic.
 # Component "Development"; the CLI module (CLI/CMakeLists.txt) is component "Runtime".
 include(CMakePackageConfigHelpers)
 
-set(SLICEMESH_INCLUDE_INSTALL_DIR include/SliceMesh)
+set(SLICEMESH_INCLUDE_INSTALL_DIR include)
 set(SLICEMESH_PACKAGE_INSTALL_DIR lib/cmake/SliceMesh)
 
 set_target_properties(SliceMeshLogic PROPERTIES EXPORT_NAME Logic)
@@ -12,9 +12,20 @@ install(TARGETS SliceMeshLogic EXPORT SliceMeshTargets
   ARCHIVE DESTINATION lib COMPONENT Development
   LIBRARY DESTINATION lib COMPONENT Development
   INCLUDES DESTINATION ${SLICEMESH_INCLUDE_INSTALL_DIR})
-# Every Logic header is public (CGAL stays inside the .cxx files).
-file(GLOB SLICEMESH_LOGIC_HEADERS ${PROJECT_SOURCE_DIR}/Logic/*.h)
-install(FILES ${SLICEMESH_LOGIC_HEADERS} DESTINATION ${SLICEMESH_INCLUDE_INSTALL_DIR} COMPONENT Development)
+# The stages' public headers, by stage (CGAL stays inside the .cxx files). Headers internal to a
+# stage (its helpers and data structures) are not installed; no public header includes one.
+set(SLICEMESH_INTERNAL_HEADERS
+  Core/DisjointSets.h Core/NearestSegment.h
+  Contours/ContourCrossings.h
+  Correspondence/PolygonProximity.h Correspondence/MutualIntersections.h
+  Tiling/SlabTiling.h Tiling/MeshBuilder.h)
+file(GLOB SLICEMESH_LOGIC_HEADERS RELATIVE ${PROJECT_SOURCE_DIR}/Logic ${PROJECT_SOURCE_DIR}/Logic/*/*.h)
+list(REMOVE_ITEM SLICEMESH_LOGIC_HEADERS ${SLICEMESH_INTERNAL_HEADERS})
+foreach(header ${SLICEMESH_LOGIC_HEADERS})
+  get_filename_component(stage ${header} DIRECTORY)
+  install(FILES ${PROJECT_SOURCE_DIR}/Logic/${header} DESTINATION ${SLICEMESH_INCLUDE_INSTALL_DIR}/slicemesh/${stage}
+    COMPONENT Development)
+endforeach()
 install(EXPORT SliceMeshTargets NAMESPACE SliceMesh:: DESTINATION ${SLICEMESH_PACKAGE_INSTALL_DIR}
   COMPONENT Development)
 

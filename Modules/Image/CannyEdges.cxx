@@ -2,7 +2,7 @@
 #include "CannyEdges.h"
 
 #include "PerSliceFilter.h"
-#include "SliceMeshTypes.h"
+#include "Core/SliceMeshTypes.h"
 
 #include "itkCannyEdgeDetectionImageFilter.h"
 

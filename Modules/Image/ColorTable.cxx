@@ -1,7 +1,7 @@
 // Colour table parsing (Slicer, FreeSurfer, plain name lists) and generated colours.
 #include "ColorTable.h"
 
-#include "SliceMeshTypes.h"
+#include "Core/SliceMeshTypes.h"
 
 #include <cctype>
 #include <cmath>

@@ -2,7 +2,7 @@
 #ifndef ContourExtraction_h
 #define ContourExtraction_h
 
-#include "SliceMeshTypes.h"
+#include "Core/SliceMeshTypes.h"
 #include "VolumeReader.h"
 
 namespace slicemesh

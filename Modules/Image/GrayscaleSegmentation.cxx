@@ -2,7 +2,7 @@
 #include "GrayscaleSegmentation.h"
 
 #include "OtsuThresholds.h"
-#include "SliceMeshTypes.h"
+#include "Core/SliceMeshTypes.h"
 
 #include <algorithm>
 #include <cmath>

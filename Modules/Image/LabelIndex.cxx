@@ -1,7 +1,7 @@
 // Label bounding boxes in one raster pass; per-label cropping.
 #include "LabelIndex.h"
 
-#include "SliceMeshTypes.h"
+#include "Core/SliceMeshTypes.h"
 
 #include <algorithm>
 #include <cmath>

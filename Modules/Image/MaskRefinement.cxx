@@ -2,7 +2,7 @@
 #include "MaskRefinement.h"
 
 #include "HoleFilling.h"
-#include "SliceMeshTypes.h"
+#include "Core/SliceMeshTypes.h"
 #include "SmallRegionRemoval.h"
 
 namespace slicemesh

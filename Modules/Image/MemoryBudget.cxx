@@ -2,7 +2,7 @@
 // per check (cheap: a few small files).
 #include "MemoryBudget.h"
 
-#include "SliceMeshTypes.h"
+#include "Core/SliceMeshTypes.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // Multiple Otsu thresholds from ITK's histogram generator and calculator.
 #include "OtsuThresholds.h"
 
-#include "SliceMeshTypes.h"
+#include "Core/SliceMeshTypes.h"
 
 #include "itkOtsuMultipleThresholdsCalculator.h"
 #include "itkScalarImageToHistogramGenerator.h"

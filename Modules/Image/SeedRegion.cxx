@@ -1,7 +1,7 @@
 // Seeded region selection, per slice with propagation through the stack, or in 3D.
 #include "SeedRegion.h"
 
-#include "SliceMeshTypes.h"
+#include "Core/SliceMeshTypes.h"
 
 #include <sstream>
 

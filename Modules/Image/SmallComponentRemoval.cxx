@@ -1,7 +1,7 @@
 // Connected components of the mask (ITK, 26-connected), sized in voxels, small ones cleared.
 #include "SmallComponentRemoval.h"
 
-#include "SliceMeshTypes.h"
+#include "Core/SliceMeshTypes.h"
 
 #include "itkConnectedComponentImageFilter.h"
 

@@ -4,7 +4,7 @@
 
 #include "GrayscaleSegmentation.h"
 
-#include "SliceMeshTypes.h"
+#include "Core/SliceMeshTypes.h"
 
 #include "itkOtsuThresholdCalculator.h"
 #include "itkScalarImageToHistogramGenerator.h"

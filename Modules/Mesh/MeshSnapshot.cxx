@@ -1,6 +1,6 @@
 #include "MeshSnapshot.h"
 
-#include "MeshQuality.h"
+#include "Measures/MeshQuality.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>

@@ -3,7 +3,7 @@
 #ifndef MeshSnapshot_h
 #define MeshSnapshot_h
 
-#include "SliceMeshTypes.h"
+#include "Core/SliceMeshTypes.h"
 
 #include <array>
 #include <string>

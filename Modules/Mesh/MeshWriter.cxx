@@ -25,6 +25,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <iomanip>
 #include <limits>
 #include <unistd.h>
@@ -172,6 +173,16 @@ private:
   vtkNew<vtkCallbackCommand> Callback;
   std::string FirstMessage;
 };
+
+/** A VTK writer's message as a user reads it: without the "vtkXMLPolyDataWriter (0x55d7...): "
+ *  object prefix, and naming the output file rather than the temporary one written first. */
+std::string userMessage(std::string message, const std::string& temporary, const std::string& path)
+{
+  message = std::regex_replace(message, std::regex("^vtk[A-Za-z0-9]+ \\(0x[0-9a-fA-F]+\\): "), "");
+  for (std::size_t at = message.find(temporary); at != std::string::npos; at = message.find(temporary, at + path.size()))
+    message.replace(at, temporary.size(), path);
+  return message;
+}
 
 /** Runs a configured VTK writer (vtkWriter or vtkXMLWriter: both have Write() but share no base
  *  that declares it); returns an empty string on success, else why it failed. */
@@ -339,7 +350,7 @@ void writeMesh(const TriangleMesh& physicalMesh, CoordinateSystem system, const 
   if (!failure.empty())
   {
     fs::remove(temporary, ec);
-    throw Error("cannot write mesh '" + path + "': " + failure);
+    throw Error("cannot write mesh '" + path + "': " + userMessage(failure, temporary.string(), path));
   }
   if (std::rename(temporary.c_str(), target.c_str()) != 0)
   {

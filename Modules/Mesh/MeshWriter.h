@@ -2,7 +2,7 @@
 #ifndef MeshWriter_h
 #define MeshWriter_h
 
-#include "SliceMeshTypes.h"
+#include "Core/SliceMeshTypes.h"
 
 #include <array>
 #include <string>

@@ -1,9 +1,9 @@
 // The table-driven parser, in process, against the real embedded XML and small hand-written ones.
 #include "CommandLine.h"
-#include "IntermediateSections.h"
+#include "Sections/IntermediateSections.h"
 #include "ModuleXml.h"
-#include "SliceMeshTypes.h"
-#include "SurfaceFinishing.h"
+#include "Core/SliceMeshTypes.h"
+#include "Finishing/SurfaceFinishing.h"
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // --surfaceSmoothingIterations, --surfaceSmoothingPassBand): what each finish writes, on a sphere
 // whose true surface is known, and how bad values are refused.
 #include "CLITestSupport.h"
-#include "MeshValidation.h"
-#include "SurfaceRemeshing.h"
+#include "Measures/MeshValidation.h"
+#include "Finishing/SurfaceRemeshing.h"
 
 #include <gtest/gtest.h>
 
@@ -283,6 +283,56 @@ TEST(FinishingOptions, EveryLabelIsFinishedAndItsReportEntrySaysHow)
   expectValidClosedSphere(first, "label 1");
   const TriangleMesh tiled = meshSphere(folder, "tiled", "--label 1 --surfaceFinish Tiled");
   EXPECT_LT(meanDistanceToSphere(first), meanDistanceToSphere(tiled));
+}
+
+} // namespace
+} // namespace slicemesh::testing
+
+namespace slicemesh::testing
+{
+namespace
+{
+
+/** The number after "key": in a JSON text (the first one). */
+double jsonValue(const std::string& json, const std::string& key)
+{
+  const std::string marker = "\"" + key + "\": ";
+  const std::size_t at = json.find(marker);
+  if (at == std::string::npos)
+    return std::nan("");
+  return std::stod(json.substr(at + marker.size()));
+}
+
+TEST(AutomaticOptions, TheReportGivesEachAutomaticValueAsResolvedForTheGrid)
+{
+  // 1 x 1 x 2 mm voxels. Finishing: edge 1.1 sqrt(3 / (1 + 1/2 + 1/2)), bound 0.3 of the smallest side.
+  const fs::path folder = freshFolder("AutomaticOptions");
+  const fs::path input = sphereLabelMap(folder);
+  for (const std::string preparation : { "Traced", "Automatic" })
+  {
+    SCOPED_TRACE(preparation);
+    const fs::path report = folder / (preparation + ".json");
+    const RunResult r = runSliceMesh("--contourPreparation " + preparation + " --report " + quoted(report.string()) +
+                                     " " + quoted(input.string()) + " " + quoted((folder / "out.vtp").string()));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string json = fileText(report);
+    EXPECT_NEAR(jsonValue(json, "targetEdgeLengthMm"), 1.1 * std::sqrt(1.5), 1e-9) << json;
+    EXPECT_NEAR(jsonValue(json, "smoothingMaxDisplacementMm"), 0.3, 1e-8) << json;
+    EXPECT_GT(jsonValue(json, "wallRowHeightMm"), 0.0) << json;
+    EXPECT_EQ(jsonValue(json, "steinerSpacingMm"), jsonValue(json, "wallRowHeightMm")) << json;
+    if (preparation == "Traced")
+    {
+      EXPECT_NE(json.find("\"contourPreparation\": \"Traced\""), std::string::npos) << json;
+      EXPECT_EQ(jsonValue(json, "contourPointSpacingMm"), 0.0) << json; // the traced points are kept
+    }
+    else
+    {
+      // Slices twice as thick as the pixels: smoothed, resampled to sqrt(1 x 2) mm, points moved at most 0.3 mm.
+      EXPECT_NE(json.find("\"contourPreparation\": \"Smoothed\""), std::string::npos) << json;
+      EXPECT_NEAR(jsonValue(json, "contourPointSpacingMm"), std::sqrt(2.0), 1e-8) << json;
+      EXPECT_NEAR(jsonValue(json, "contourSmoothingMaxShiftMm"), 0.3, 1e-8) << json;
+    }
+  }
 }
 
 } // namespace

@@ -7,10 +7,10 @@
 //
 // Decoding: byte 0 picks the grid (nx, ny in 2..9, nz in 1..6 from its bits) and byte 1 the spacing
 // and cap placement; then one bit per voxel, row by row, slice by slice (missing bytes are 0).
-#include "MarchingSquares.h"
-#include "MeshValidation.h"
-#include "SurfaceFinishing.h"
-#include "SurfaceReconstruction.h"
+#include "Contours/MarchingSquares.h"
+#include "Measures/MeshValidation.h"
+#include "Finishing/SurfaceFinishing.h"
+#include "Tiling/SurfaceReconstruction.h"
 
 #include <array>
 #include <cstddef>

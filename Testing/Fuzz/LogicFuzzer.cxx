@@ -7,8 +7,8 @@
 // slice a byte for its contour count (0..3); per contour a byte for its point count (3..14), then
 // two bytes per point on a 0.25 mm grid of 16 x 16 mm, so coincident and collinear points,
 // touching and crossing contours are common.
-#include "MeshValidation.h"
-#include "SurfaceReconstruction.h"
+#include "Measures/MeshValidation.h"
+#include "Tiling/SurfaceReconstruction.h"
 
 #include <cstdint>
 #include <cstdlib>

@@ -6,9 +6,9 @@
 // Decoding: three bytes give the size (1..8 per axis), one the spacing and direction, the rest
 // are the voxels, one bit each (missing bytes are zero).
 #include "ContourExtraction.h"
-#include "MeshValidation.h"
+#include "Measures/MeshValidation.h"
 #include "MeshWriter.h"
-#include "SurfaceReconstruction.h"
+#include "Tiling/SurfaceReconstruction.h"
 
 #include <cstdint>
 #include <cstdlib>

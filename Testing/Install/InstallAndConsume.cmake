@@ -14,11 +14,19 @@ endfunction()
 
 # The whole install, as a user runs it (components: Runtime = the CLI module, Development = the library).
 run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
-foreach(file ${CLI_DIR}/SliceMesh ${CLI_DIR}/SliceMesh.xml include/SliceMesh/SurfaceReconstruction.h
+foreach(file ${CLI_DIR}/SliceMesh ${CLI_DIR}/SliceMesh.xml include/slicemesh/Meshing/MeshContours.h
+             include/slicemesh/Tiling/SurfaceReconstruction.h include/slicemesh/Core/SliceMeshTypes.h
              lib/libSliceMeshLogic.a lib/cmake/SliceMesh/SliceMeshConfig.cmake
              lib/cmake/SliceMesh/SliceMeshConfigVersion.cmake lib/cmake/SliceMesh/SliceMeshTargets.cmake)
   if(NOT EXISTS ${prefix}/${file})
     message(FATAL_ERROR "not installed: ${prefix}/${file}")
+  endif()
+endforeach()
+# Headers internal to a stage stay out; none is flat in include/.
+foreach(file include/slicemesh/Tiling/SlabTiling.h include/slicemesh/Core/DisjointSets.h include/SliceMesh
+             include/MeshValidation.h)
+  if(EXISTS ${prefix}/${file})
+    message(FATAL_ERROR "installed but internal or flat: ${prefix}/${file}")
   endif()
 endforeach()
 

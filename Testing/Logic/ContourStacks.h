@@ -2,7 +2,7 @@
 #ifndef ContourStacks_h
 #define ContourStacks_h
 
-#include "SliceMeshTypes.h"
+#include "Core/SliceMeshTypes.h"
 
 #include <cmath>
 #include <functional>

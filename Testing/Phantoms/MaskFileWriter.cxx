@@ -1,6 +1,6 @@
 #include "MaskFileWriter.h"
 
-#include "SliceMeshTypes.h"
+#include "Core/SliceMeshTypes.h"
 
 #include "itkImageFileWriter.h"
 

@@ -4,7 +4,7 @@
 #define PhantomGrid_h
 
 #include "Phantom.h"
-#include "SliceMeshTypes.h"
+#include "Core/SliceMeshTypes.h"
 #include "VolumeReader.h"
 
 #include <array>

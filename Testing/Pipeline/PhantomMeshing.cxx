@@ -1,6 +1,6 @@
 #include "PhantomMeshing.h"
 
-#include "ContourExtraction.h"
+#include "MaskMeshing.h"
 
 #include <Eigen/Geometry>
 
@@ -21,22 +21,18 @@ PhantomMeshResult meshPhantom(const Phantom& phantom, const std::array<double, 3
     inside += *it != 0;
   result.voxelVolume = inside * spacing[0] * spacing[1] * spacing[2];
 
-  // The CLI's order: contours -> intermediate sections (only where the options ask) -> reconstruction.
-  const ContourStack stack = insertIntermediateSections(extractContours(mask), undersampling, &result.sections);
-  const TriangleMesh stackMesh = reconstructSurface(stack, options, &result.statistics);
-  result.mesh = mapToPhysicalSpace(stackMesh, sliceFrameOf(mask), CoordinateSystem::LPS);
-  result.validation = validateMesh(result.mesh);
-  if (finish != SurfaceFinish::Tiled)
-  {
-    // Physical space is the stack frame moved rigidly: the finishing does not see the difference.
-    SurfaceFinishingOptions finishing = finishingOptionsFor(spacing);
-    finishing.finish = finish;
-    FinishedSurface finished = finishSurface(result.mesh, result.validation, finishing);
-    result.mesh = std::move(finished.mesh);
-    result.validation = finished.validation;
-    result.finish = finished.finish;
-    result.fallback = finished.fallback;
-  }
+  // The one meshing path, as the CLI runs it (meshMask), with these options.
+  MeshingOptions meshing;
+  meshing.reconstruction = options;
+  meshing.undersampling = undersampling;
+  meshing.finishing.finish = finish;
+  MeshedMask meshed = meshMask(mask, meshing);
+  result.sections = meshed.meshing.sections;
+  result.statistics = meshed.meshing.reconstruction;
+  result.finish = meshed.meshing.surface.finish;
+  result.fallback = meshed.meshing.surface.fallback;
+  result.mesh = std::move(meshed.physical);
+  result.validation = validateMesh(result.mesh); // in physical space: the mapping kept it valid and outward
 
   result.lower = result.upper = result.mesh.points.front();
   for (const Point3& p : result.mesh.points)

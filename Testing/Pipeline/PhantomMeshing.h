@@ -3,13 +3,13 @@
 #ifndef PhantomMeshing_h
 #define PhantomMeshing_h
 
-#include "IntermediateSections.h"
-#include "MeshValidation.h"
+#include "Sections/IntermediateSections.h"
+#include "Measures/MeshValidation.h"
 #include "MeshWriter.h"
 #include "Phantom.h"
 #include "PhantomGrid.h"
-#include "SurfaceFinishing.h"
-#include "SurfaceReconstruction.h"
+#include "Finishing/SurfaceFinishing.h"
+#include "Tiling/SurfaceReconstruction.h"
 
 namespace slicemesh::testing
 {
@@ -31,8 +31,9 @@ struct PhantomMeshResult
   Point3 lower, upper;             ///< the mesh's bounding box
 };
 
-/** `finish`: the finishing stage after the tiling (SurfaceFinishing.h) at the automatic edge length
- *  of the grid, as the CLI runs it by default with Remeshed; Tiled measures the tiling itself. */
+/** The phantom rasterized and meshed through the one meshing path (meshMask) with the contours as
+ *  traced, these tiling and correspondence options, and `finish` at the grid's automatic values (as
+ *  the CLI runs it by default with Remeshed; Tiled measures the tiling itself). */
 PhantomMeshResult meshPhantom(const Phantom& phantom, const std::array<double, 3>& spacing,
                               const Matrix3& direction = Matrix3::Identity(),
                               const ReconstructionOptions& options = {},

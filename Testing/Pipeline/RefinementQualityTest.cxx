@@ -11,10 +11,10 @@
 #include "Box.h"
 #include "CappedCylinder.h"
 #include "Ellipsoid.h"
-#include "MeshQuality.h"
+#include "Measures/MeshQuality.h"
 #include "ContourExtraction.h"
 #include "PhantomMeshing.h"
-#include "SliceMeshPipeline.h"
+#include "MaskMeshing.h"
 #include "Sphere.h"
 #include "Torus.h"
 
@@ -125,7 +125,7 @@ TEST(RefinementQuality, GuardOnTodaysFigures)
     }
 }
 
-// The contour preparation of the CLI (SliceMeshPipeline.h): the Smoothed path, which the default
+// The contour preparation of the meshing path (ContourPreparation.h): the Smoothed path, which the default
 // (Automatic) takes at thick slices, on the phantoms and on random masks.
 namespace
 {
@@ -137,13 +137,13 @@ struct PreparedMesh
   double meanDistance = 0.0; ///< over vertices, to the exact surface (phantoms only)
 };
 
-PreparedMesh meshPrepared(const MaskVolume* mask, cli::ContourPreparation mode, const Phantom* phantom = nullptr)
+PreparedMesh meshPrepared(const MaskVolume* mask, ContourPreparation mode, const Phantom* phantom = nullptr)
 {
-  cli::ContourPreparationOptions preparation;
-  preparation.mode = mode;
-  const ContourStack stack = cli::maskContours(mask, cli::ContourOptions{}, preparation);
+  MeshingOptions options;
+  options.contours.mode = mode;
+  options.finishing.finish = SurfaceFinish::Tiled; // the tiling of the prepared contours
   PreparedMesh result;
-  result.mesh = mapToPhysicalSpace(reconstructSurface(stack), sliceFrameOf(mask), CoordinateSystem::LPS);
+  result.mesh = meshMask(mask, options).physical;
   result.validation = validateMesh(result.mesh);
   if (phantom && !result.mesh.points.empty())
   {
@@ -158,15 +158,22 @@ PreparedMesh meshPrepared(const MaskVolume* mask, cli::ContourPreparation mode, 
 
 TEST(ContourPreparation, AutomaticSmoothsThickSlicesOnly)
 {
-  EXPECT_EQ(cli::resolvedPreparation(cli::ContourPreparation::Automatic, 0.8, 0.8, 3.0), cli::ContourPreparation::Smoothed);
-  EXPECT_EQ(cli::resolvedPreparation(cli::ContourPreparation::Automatic, 1.0, 1.0, 1.0), cli::ContourPreparation::Traced);
-  EXPECT_EQ(cli::resolvedPreparation(cli::ContourPreparation::Traced, 0.8, 0.8, 3.0), cli::ContourPreparation::Traced);
-  // Automatic spacing: the geometric mean of pixel and slice for smoothed contours; an explicit one wins.
-  cli::ContourOptions contours;
-  EXPECT_NEAR(cli::resolvedPointSpacing(contours, cli::ContourPreparation::Smoothed, 0.8, 0.8, 3.0), std::sqrt(2.4), 1e-12);
-  EXPECT_EQ(cli::resolvedPointSpacing(contours, cli::ContourPreparation::Traced, 0.8, 0.8, 3.0), 0.0);
-  contours.pointSpacing = 0.7;
-  EXPECT_EQ(cli::resolvedPointSpacing(contours, cli::ContourPreparation::Smoothed, 0.8, 0.8, 3.0), 0.7);
+  auto resolved = [](ContourPreparation mode, double pointSpacing, std::array<double, 3> spacing)
+  {
+    ContourPreparationOptions options;
+    options.mode = mode;
+    options.pointSpacing = pointSpacing;
+    return resolvedContourPreparation(options, spacing);
+  };
+  EXPECT_EQ(resolved(ContourPreparation::Automatic, 0.0, { 0.8, 0.8, 3.0 }).mode, ContourPreparation::Smoothed);
+  EXPECT_EQ(resolved(ContourPreparation::Automatic, 0.0, { 1.0, 1.0, 1.0 }).mode, ContourPreparation::Traced);
+  EXPECT_EQ(resolved(ContourPreparation::Traced, 0.0, { 0.8, 0.8, 3.0 }).mode, ContourPreparation::Traced);
+  // Automatic spacing: the geometric mean of pixel and slice for smoothed contours; an explicit one
+  // wins; traced contours keep their points. The shift bound: 0.3 of the smaller pixel side.
+  EXPECT_NEAR(resolved(ContourPreparation::Smoothed, 0.0, { 0.8, 0.8, 3.0 }).pointSpacing, std::sqrt(2.4), 1e-12);
+  EXPECT_NEAR(resolved(ContourPreparation::Smoothed, 0.0, { 0.8, 0.7, 3.0 }).smoothingMaxShift, 0.21, 1e-12);
+  EXPECT_EQ(resolved(ContourPreparation::Traced, 0.0, { 0.8, 0.8, 3.0 }).pointSpacing, 0.0);
+  EXPECT_EQ(resolved(ContourPreparation::Smoothed, 0.7, { 0.8, 0.8, 3.0 }).pointSpacing, 0.7);
 }
 
 // Smoothed contours on the phantoms, at both grids: the mesh stays valid, its vertices come closer
@@ -186,8 +193,8 @@ TEST(ContourPreparation, SmoothedContoursAreValidAndCloserOnThePhantoms)
     {
       SCOPED_TRACE(std::string(name) + " " + grid.name);
       const MaskVolume::Pointer mask = rasterizePhantom(*phantom, gridAround(*phantom, grid.spacing, 2));
-      const PreparedMesh smoothed = meshPrepared(mask, cli::ContourPreparation::Smoothed, phantom.get());
-      const PreparedMesh traced = meshPrepared(mask, cli::ContourPreparation::Traced, phantom.get());
+      const PreparedMesh smoothed = meshPrepared(mask, ContourPreparation::Smoothed, phantom.get());
+      const PreparedMesh traced = meshPrepared(mask, ContourPreparation::Traced, phantom.get());
       std::printf("%-6s %-13s mean distance traced %.3f smoothed %.3f mm; triangles %zu -> %zu; volume %+.2f%% -> %+.2f%%\n",
                   name, grid.name, traced.meanDistance, smoothed.meanDistance, traced.mesh.triangles.size(),
                   smoothed.mesh.triangles.size(), 100.0 * (std::abs(traced.validation.volume) / phantom->volume() - 1.0),
@@ -232,7 +239,7 @@ TEST(ContourPreparation, SmoothedContoursOfRandomMasksGiveValidMeshes)
             inside = true;
           mask->SetPixel({ { i, j, k } }, inside ? 1 : 0);
         }
-    const PreparedMesh result = meshPrepared(mask, cli::ContourPreparation::Smoothed);
+    const PreparedMesh result = meshPrepared(mask, ContourPreparation::Smoothed);
     if (result.mesh.triangles.empty())
       continue;
     ++meshed;

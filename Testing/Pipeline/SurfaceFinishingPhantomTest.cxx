@@ -6,7 +6,7 @@
 #include "CappedCylinder.h"
 #include "PhantomMeshing.h"
 #include "Sphere.h"
-#include "SurfaceFinishing.h"
+#include "Finishing/SurfaceFinishing.h"
 #include "Torus.h"
 #include "TubeTree.h"
 

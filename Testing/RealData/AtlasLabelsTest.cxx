@@ -6,8 +6,8 @@
 #include "ComponentLabeling.h"
 #include "ContourExtraction.h"
 #include "LabelIndex.h"
-#include "MultiLabelPipeline.h"
-#include "SurfaceFinishing.h"
+#include "SliceMeshPipeline.h"
+#include "Finishing/SurfaceFinishing.h"
 
 #include <gtest/gtest.h>
 
@@ -71,7 +71,7 @@ LabelFigures meshLabel(const ScalarVolume* labelMap, const LabelExtent& extent)
   figures.cavities6 = enclosedCavities(mask, BackgroundConnectivity::Faces6);
   figures.cavities26 = enclosedCavities(mask, BackgroundConnectivity::Corners26);
   const auto began = std::chrono::steady_clock::now();
-  figures.mesh = meshMask(mask);
+  figures.mesh = tiledMask(mask);
   figures.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   for (const double volume : componentVolumes(figures.mesh.physical))
     figures.innerSurfaces += volume < 0.0;
@@ -226,8 +226,8 @@ TEST(AtlasLabels, AALIntoAFolderOfNamedColouredMeshes)
   settings.multiLabel.outputDirectory = folder.string();
   settings.multiLabel.colorTable = mricronTemplates + "aal.nii.txt";
   cli::ProgressReporter progress(cli::pipelineStages(), nullptr, nullptr);
-  std::vector<cli::LabelMeshOutcome> outcomes;
-  const cli::PipelineResult result = cli::runMultiLabelPipeline(settings, progress, &outcomes);
+  std::vector<cli::LabelReport> outcomes;
+  const cli::PipelineResult result = cli::runPipeline(settings, progress, &outcomes);
   EXPECT_TRUE(result.validation.valid());
   ASSERT_EQ(outcomes.size(), 3u);
   EXPECT_EQ(outcomes[0].name, "Hippocampus_L");
@@ -285,7 +285,7 @@ TEST(AtlasLabels, CavityRuleAgreesWithTheMeshAroundEveryEdgeAcrossTheSlices)
       for (const long k : { 2L, 3L })
         for (const long i : { 4L, 5L })
           mask->SetPixel({ { i, j, k } }, (pattern >> bit++) & 1 ? 0 : 1);
-    const MaskMesh mesh = meshMask(mask);
+    const MaskMesh mesh = tiledMask(mask);
     ASSERT_TRUE(mesh.validation.valid()) << "pattern " << pattern << ": " << mesh.validation.summary();
     std::size_t inner = 0;
     for (const double volume : componentVolumes(mesh.physical))

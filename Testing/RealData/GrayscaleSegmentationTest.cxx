@@ -190,7 +190,7 @@ TEST(Colin27, VentriclesFromTheT1AgainstTheReferenceMask)
 
   // The mesh of the segmentation against the reference's boundary: signed distance map of the reference
   // mask (mm), read at the mesh vertices (nearest voxel).
-  const MaskMesh mesh = meshMask(ventricles);
+  const MaskMesh mesh = tiledMask(ventricles);
   auto reference = MaskVolume::New();
   reference->CopyInformation(referenceMask);
   reference->SetRegions(referenceMask->GetBufferedRegion());

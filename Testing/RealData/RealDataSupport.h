@@ -2,9 +2,9 @@
 #ifndef RealDataSupport_h
 #define RealDataSupport_h
 
-#include "MeshValidation.h"
+#include "Measures/MeshValidation.h"
 #include "MeshWriter.h"
-#include "SurfaceReconstruction.h"
+#include "Tiling/SurfaceReconstruction.h"
 #include "VolumeReader.h"
 
 #include <array>
@@ -38,8 +38,9 @@ struct MaskMesh
   double voxelVolume = 0.0;
 };
 
-/** Contours -> reconstruction -> validation -> physical space, and the boxes to compare. */
-MaskMesh meshMask(const MaskVolume* mask, const ReconstructionOptions& options = {});
+/** The tiling by the one meshing path (meshMask, finish Tiled), its validation, physical space, and
+ *  the boxes to compare. */
+MaskMesh tiledMask(const MaskVolume* mask, const ReconstructionOptions& options = {});
 
 /** Which background voxels a cavity count takes as neighbours. */
 enum class BackgroundConnectivity

@@ -3,10 +3,10 @@
 // and volumes; asserts nothing (speed belongs to benchmarks). Not built by default:
 //   make FinishingTiming && Testing/Reliability/FinishingTiming [sx sy sz]   (spacing in mm, 1 1 1)
 #include "ContourExtraction.h"
-#include "MeshQuality.h"
+#include "Measures/MeshQuality.h"
 #include "MeshWriter.h"
 #include "ReliabilitySupport.h"
-#include "SurfaceFinishing.h"
+#include "Finishing/SurfaceFinishing.h"
 
 #include <chrono>
 #include <cstdio>

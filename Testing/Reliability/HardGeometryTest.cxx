@@ -10,7 +10,7 @@
 // never joined, at such contacts, and stays 2-manifold.
 #include "ReliabilitySupport.h"
 
-#include "SurfaceReconstruction.h"
+#include "Tiling/SurfaceReconstruction.h"
 
 #include <gtest/gtest.h>
 
@@ -24,7 +24,7 @@ namespace
 /** The checks every case makes: no exception, a valid mesh, the volume within tolerance. */
 void expectValid(const MaskVolume* mask, std::size_t expectedComponents = 0)
 {
-  const MaskMeshResult result = meshMask(mask);
+  const MaskMeshResult result = checkedMesh(mask);
   EXPECT_EQ(result.problem(), "") << maskAsCode(mask);
   if (expectedComponents)
     EXPECT_EQ(result.validation.components, expectedComponents);
@@ -117,7 +117,7 @@ TEST(HardGeometry, ThousandsOfOneVoxelSpecksAreEachClosed)
   // 13^3 = 2197 isolated voxels.
   const MaskVolume::Pointer mask = makeMask({ 40, 40, 40 }, { 1, 1, 1 }, [](long i, long j, long k)
                                             { return i % 3 == 1 && j % 3 == 1 && k % 3 == 1; });
-  const MaskMeshResult result = meshMask(mask);
+  const MaskMeshResult result = checkedMesh(mask);
   EXPECT_EQ(result.problem(), "");
   EXPECT_EQ(result.validation.components, 2197u);
 }

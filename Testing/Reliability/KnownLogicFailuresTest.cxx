@@ -21,7 +21,7 @@ void expectValidMesh(std::array<std::size_t, 3> size, std::array<double, 3> spac
   MaskVolume::Pointer mask = makeMask(size, spacing);
   for (const auto& v : voxels)
     mask->SetPixel({ { v[0], v[1], v[2] } }, 1);
-  const MaskMeshResult result = meshMask(mask);
+  const MaskMeshResult result = checkedMesh(mask);
   EXPECT_EQ(result.problem(), "");
 }
 
@@ -81,7 +81,7 @@ TEST(KnownLogicFailures, Seeds2511And2651RowPointsOnAContinuedContourEdge)
   for (const std::uint64_t seed : { 2511u, 2651u })
   {
     const RandomMask random = randomMask(seed, RandomMaskKind::Noise);
-    const MaskMeshResult result = meshMask(random.mask);
+    const MaskMeshResult result = checkedMesh(random.mask);
     EXPECT_EQ(result.problem(), "") << random.description;
     EXPECT_EQ(result.validation.foldedEdges, 0u) << random.description;
   }

@@ -28,7 +28,7 @@ int main(int argc, char* argv[])
     return 0;
   }
   auto fails = [&] {
-    const MaskMeshResult r = meshMask(mask);
+    const MaskMeshResult r = checkedMesh(mask);
     return r.contours > 0 && !r.problem().empty();
   };
   if (!fails())
@@ -59,7 +59,7 @@ int main(int argc, char* argv[])
           voxel[v] = 1;
       }
   }
-  const MaskMeshResult r = meshMask(mask);
+  const MaskMeshResult r = checkedMesh(mask);
   std::cout << r.problem() << "\n" << maskAsCode(mask) << "\n";
   return 0;
 }

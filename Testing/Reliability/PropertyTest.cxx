@@ -63,7 +63,7 @@ void runProperty(RandomMaskKind kind, std::uint64_t firstSeed, std::uint64_t def
       ++figures.knownFailures;
       continue;
     }
-    const MaskMeshResult result = meshMask(random.mask, random.options);
+    const MaskMeshResult result = checkedMesh(random.mask, random.options);
     if (result.contours == 0)
     {
       ++figures.empty; // nothing to mesh: reconstructSurface is expected to say so

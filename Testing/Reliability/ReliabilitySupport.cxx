@@ -60,10 +60,10 @@ std::string MaskMeshResult::problem() const
   return text.str();
 }
 
-MaskMeshResult meshMask(const MaskVolume* mask, const ReconstructionOptions& options)
+MaskMeshResult checkedMesh(const MaskVolume* mask, const MeshingOptions& options)
 {
   MaskMeshResult result;
-  result.capsAtSlice = options.capPlacement == CapPlacement::AtSlice;
+  result.capsAtSlice = options.reconstruction.capPlacement == CapPlacement::AtSlice;
   const auto size = mask->GetLargestPossibleRegion().GetSize();
   const auto spacing = mask->GetSpacing();
   result.maxSpacing = std::max({ spacing[0], spacing[1], spacing[2] });
@@ -94,11 +94,14 @@ MaskMeshResult meshMask(const MaskVolume* mask, const ReconstructionOptions& opt
   result.voxelVolume = static_cast<double>(voxels) * spacing[0] * spacing[1] * spacing[2];
   try
   {
-    const ContourStack stack = extractContours(mask);
-    for (const Slice& slice : stack.slices)
+    result.meshing = startMaskMeshing(mask, options);
+    runMeshingStage(MeshingStage::Preparation, result.meshing);
+    for (const Slice& slice : result.meshing.stack.slices)
       result.contours += slice.contours.size();
-    const TriangleMesh stackMesh = reconstructSurface(stack, options);
-    result.mesh = mapToPhysicalSpace(stackMesh, sliceFrameOf(mask), CoordinateSystem::LPS);
+    for (MeshingStage stage : { MeshingStage::Correspondence, MeshingStage::Tiling, MeshingStage::Validation,
+                                MeshingStage::Finishing })
+      runMeshingStage(stage, result.meshing);
+    result.mesh = mapToPhysicalSpace(result.meshing.surface.mesh, sliceFrameOf(mask), CoordinateSystem::LPS);
     result.validation = validateMesh(result.mesh);
   }
   catch (const std::exception& e)
@@ -106,6 +109,14 @@ MaskMeshResult meshMask(const MaskVolume* mask, const ReconstructionOptions& opt
     result.error = e.what();
   }
   return result;
+}
+
+MaskMeshResult checkedMesh(const MaskVolume* mask, const ReconstructionOptions& options)
+{
+  MeshingOptions tiling;
+  tiling.reconstruction = options;
+  tiling.finishing.finish = SurfaceFinish::Tiled;
+  return checkedMesh(mask, tiling);
 }
 
 namespace

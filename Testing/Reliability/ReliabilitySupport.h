@@ -3,8 +3,9 @@
 #ifndef ReliabilitySupport_h
 #define ReliabilitySupport_h
 
-#include "MeshValidation.h"
-#include "SurfaceReconstruction.h"
+#include "MaskMeshing.h"
+#include "Measures/MeshValidation.h"
+#include "Tiling/SurfaceReconstruction.h"
 #include "VolumeReader.h"
 
 #include <array>
@@ -27,8 +28,9 @@ MaskVolume::Pointer makeMask(std::array<std::size_t, 3> size, std::array<double,
 
 struct MaskMeshResult
 {
-  std::string error;         ///< what reconstructSurface or validateMesh threw, else empty
-  TriangleMesh mesh;         ///< physical (LPS) millimetres
+  std::string error;         ///< what the meshing path threw, else empty
+  MeshedContours meshing;    ///< the path's stages (stack frame): tiling, its validation, finished surface
+  TriangleMesh mesh;         ///< the surface written: physical (LPS) millimetres
   MeshValidation validation; ///< of the physical mesh
   double voxelVolume = 0.0;  ///< number of mask voxels times the voxel volume (mm^3)
   double voxelFaceArea = 0.0; ///< area of the boundary faces of the voxels (mm^2)
@@ -50,8 +52,13 @@ struct MaskMeshResult
   std::string problem() const;
 };
 
-/** mask -> extractContours -> reconstructSurface -> mapToPhysicalSpace (LPS) -> validateMesh. */
-MaskMeshResult meshMask(const MaskVolume* mask, const ReconstructionOptions& options = {});
+/** The mask through the one meshing path (startMaskMeshing, every stage), mapped to physical space
+ *  (LPS) and validated there. */
+MaskMeshResult checkedMesh(const MaskVolume* mask, const MeshingOptions& options);
+
+/** The tiling alone (the traced contours, these tiling options, finish Tiled): what the property
+ *  tests check. */
+MaskMeshResult checkedMesh(const MaskVolume* mask, const ReconstructionOptions& options = {});
 
 /** Kinds of random label maps the property test draws from. */
 enum class RandomMaskKind

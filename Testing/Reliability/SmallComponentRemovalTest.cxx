@@ -41,7 +41,7 @@ TEST(SmallComponentRemoval, DropsThousandsOfSpecksAndKeepsTheStructure)
   EXPECT_EQ(countSet(mask), 216u);
   EXPECT_EQ(before - countSet(mask), removal.removedVoxels);
 
-  const MaskMeshResult result = meshMask(mask);
+  const MaskMeshResult result = checkedMesh(mask);
   EXPECT_EQ(result.problem(), "");
   EXPECT_EQ(result.validation.components, 1u);
 }

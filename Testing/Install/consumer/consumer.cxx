@@ -1,6 +1,5 @@
-// Two squares, one above the other: reconstructSurface must close them into a box.
-#include <MeshValidation.h>
-#include <SurfaceReconstruction.h>
+// Two squares, one above the other, through the installed library's one meshing path: a valid box.
+#include <slicemesh/Meshing/MeshContours.h>
 
 #include <cstdio>
 
@@ -11,8 +10,8 @@ int main()
   ContourStack stack;
   stack.slices = { Slice{ 0.0, { square } }, Slice{ 2.0, { square } } };
   stack.sliceSpacing = 2.0;
-  const TriangleMesh mesh = reconstructSurface(stack);
-  const MeshValidation validation = validateMesh(mesh);
+  const MeshedContours meshed = meshContours(stack, {}, { 1.0, 1.0, 2.0 });
+  const MeshValidation& validation = meshed.surface.validation;
   std::printf("%s\n", validation.summary().c_str());
   return validation.valid() && validation.closed() && validation.components == 1 ? 0 : 1;
 }

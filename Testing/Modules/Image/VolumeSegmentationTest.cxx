@@ -1,4 +1,4 @@
-#include "SliceMeshTypes.h"
+#include "Core/SliceMeshTypes.h"
 #include "TestVolumes.h"
 #include "VolumeSegmentation.h"
 

@@ -2,7 +2,7 @@
 #ifndef TestMeshes_h
 #define TestMeshes_h
 
-#include "SliceMeshTypes.h"
+#include "Core/SliceMeshTypes.h"
 
 namespace slicemesh::testing
 {

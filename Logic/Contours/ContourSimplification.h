@@ -1,0 +1,24 @@
+// Simplification of closed contours within a distance tolerance, without creating crossings.
+#ifndef ContourSimplification_h
+#define ContourSimplification_h
+
+#include "Core/SliceMeshTypes.h"
+
+namespace slicemesh
+{
+
+/** Simplifies every contour of one slice: keeps a subset of its points such that every dropped
+ *  point lies within `tolerance` (mm) of the edge that replaces it (Douglas-Peucker on the closed
+ *  contour, anchored at its first point and the point farthest from it). Then, as long as two kept
+ *  edges of the slice cross or touch (of one contour or of two), the dropped point farthest from
+ *  each such edge is put back (Saalfeld's topology-preserving repair): the result has no crossing
+ *  that the input did not have, and nesting is unchanged. Every contour keeps at least 3 points.
+ *  tolerance <= 0 returns the contours unchanged. */
+std::vector<Polygon2> simplifyContours(const std::vector<Polygon2>& contours, double tolerance);
+
+/** simplifyContours on every slice of the stack. */
+ContourStack simplifyContours(const ContourStack& stack, double tolerance);
+
+} // namespace slicemesh
+
+#endif

@@ -1,0 +1,82 @@
+// Runs independent pieces of work on several threads: structures, connected pieces, slabs. Results
+// go into slots chosen by index, never by finishing order, so the output does not depend on the
+// number of threads.
+#ifndef ParallelFor_h
+#define ParallelFor_h
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace slicemesh
+{
+
+/** The number of threads to use for `asked` (0: every core the machine reports; at least 1). */
+inline unsigned int threadCount(unsigned int asked)
+{
+  return asked > 0 ? asked : std::max(1u, std::thread::hardware_concurrency());
+}
+
+/** Calls body(i) for every i in [0, count), on up to threadCount(threads) threads (the calling one
+ *  included), each i exactly once, in no particular order. If calls throw, every i is still
+ *  attempted and the exception of the smallest such i is rethrown. */
+template <typename Body>
+void parallelFor(std::size_t count, unsigned int threads, Body&& body)
+{
+  const std::size_t workers = std::min<std::size_t>(threadCount(threads), count);
+  if (workers <= 1)
+  {
+    std::exception_ptr first;
+    for (std::size_t i = 0; i < count; ++i)
+      try
+      {
+        body(i);
+      }
+      catch (...)
+      {
+        if (!first)
+          first = std::current_exception();
+      }
+    if (first)
+      std::rethrow_exception(first);
+    return;
+  }
+  std::atomic<std::size_t> next{ 0 };
+  std::mutex failureLock;
+  std::size_t failedIndex = count;
+  std::exception_ptr failure;
+  auto work = [&]
+  {
+    for (std::size_t i = next++; i < count; i = next++)
+      try
+      {
+        body(i);
+      }
+      catch (...)
+      {
+        const std::lock_guard<std::mutex> lock(failureLock);
+        if (i < failedIndex)
+        {
+          failedIndex = i;
+          failure = std::current_exception();
+        }
+      }
+  };
+  std::vector<std::thread> helpers;
+  helpers.reserve(workers - 1);
+  for (std::size_t t = 1; t < workers; ++t)
+    helpers.emplace_back(work);
+  work();
+  for (std::thread& helper : helpers)
+    helper.join();
+  if (failure)
+    std::rethrow_exception(failure);
+}
+
+} // namespace slicemesh
+
+#endif

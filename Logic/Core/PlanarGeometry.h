@@ -1,0 +1,52 @@
+// Small exact-enough planar helpers shared by the Logic stages.
+#ifndef PlanarGeometry_h
+#define PlanarGeometry_h
+
+#include "Core/SliceMeshTypes.h"
+
+#include <cmath>
+
+namespace slicemesh
+{
+
+/** Twice the signed area of a closed polygon: positive when counter-clockwise. */
+double twiceSignedArea(const Polygon2& polygon);
+
+/** Length of a closed polygon's boundary, the closing edge included. */
+double perimeter(const Polygon2& polygon);
+
+/** Robust orientation of (a, b, c): +1 left turn, -1 right turn, 0 collinear (exact predicate). */
+int orientation(const Point2& a, const Point2& b, const Point2& c);
+
+/** Whether p is strictly inside the closed polygon (even-odd rule, exact predicates).
+ *  Points on the boundary count as outside. */
+bool isInside(const Polygon2& polygon, const Point2& p);
+
+/** Distance from p to the segment ab, and the parameter t of the closest point. */
+double distanceToSegment(const Point2& p, const Point2& a, const Point2& b, double* t = nullptr);
+
+inline double distance(const Point2& a, const Point2& b)
+{
+  return std::hypot(a.x - b.x, a.y - b.y);
+}
+
+struct Box2
+{
+  double xmin = 0.0, ymin = 0.0, xmax = -1.0, ymax = -1.0;
+  bool overlaps(const Box2& o, double margin = 0.0) const
+  {
+    return xmin <= o.xmax + margin && o.xmin <= xmax + margin && ymin <= o.ymax + margin && o.ymin <= ymax + margin;
+  }
+};
+
+Box2 boundingBox(const Polygon2& polygon);
+
+/** Appends the length of every edge of the closed contours to lengths. */
+void appendEdgeLengths(const std::vector<Polygon2>& contours, std::vector<double>& lengths);
+
+/** The median of the values (the upper one for an even count), or fallback when there are none. */
+double median(std::vector<double> values, double fallback);
+
+} // namespace slicemesh
+
+#endif

@@ -1,0 +1,72 @@
+// The finishing stage after the tiling: 3D smoothing and isotropic remeshing, kept only when the
+// result is still a valid surface of the same topology.
+#ifndef SurfaceFinishing_h
+#define SurfaceFinishing_h
+
+#include "Measures/MeshValidation.h"
+#include "Finishing/SurfaceRemeshing.h"
+#include "Finishing/SurfaceSmoothing.h"
+
+#include <array>
+#include <string>
+
+namespace slicemesh
+{
+
+/** How far the tiling is finished. */
+enum class SurfaceFinish
+{
+  Remeshed, ///< remeshed to the target edge length, then smoothed in 3D (the default)
+  Smoothed, ///< smoothed in 3D; the tiling's triangles kept
+  Tiled     ///< the tiling as it is (the paper's surface: contour vertices stay on their slices)
+};
+
+struct SurfaceFinishingOptions
+{
+  SurfaceFinish finish = SurfaceFinish::Remeshed;
+  SurfaceSmoothingOptions smoothing;
+  SurfaceRemeshingOptions remeshing;
+};
+
+struct FinishedSurface
+{
+  TriangleMesh mesh;
+  MeshValidation validation; ///< of `mesh`
+  /** What was applied: the least finished of the connected pieces (less than asked after a
+   *  fallback, however many of the pieces it concerns: `fallback` counts them). */
+  SurfaceFinish finish = SurfaceFinish::Tiled;
+  std::string fallback; ///< why less was applied than asked, and to how many pieces; empty when all of it was
+  /** Vertices left unsmoothed (where the remesh put them, or the tiling for a piece smoothed only)
+   *  because smoothing made triangles near them cross (two sheets a voxel or two apart). */
+  std::size_t unsmoothedVertices = 0;
+  /** Pieces whose tiling has under 100 triangles (specks of a few voxels): left as tiled, which
+   *  counts as finished (remeshing or smoothing a shape a couple of edges across only collapses it). */
+  std::size_t smallPiecesAsTiled = 0;
+  /** How many connected pieces got each finish, indexed by SurfaceFinish (specks, left as tiled,
+   *  count under Tiled). All zero when the tiling was not split (an invalid tiling, or Tiled asked). */
+  std::array<std::size_t, 3> piecesByFinish{};
+};
+
+/** The finishing the CLI applies to a mask of this voxel spacing (mm): edges of
+ *  automaticEdgeLength(spacing), and smoothing that moves no vertex farther than 0.3 of the smallest
+ *  voxel side (the staircase is about that deep; a sharp edge is rounded no more). */
+SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing);
+
+/** Finishes a tiling whose validation is given, one connected piece at a time: each piece is
+ *  remeshed and smoothed and gets its tiled volume back; where smoothing makes its triangles cross,
+ *  the vertices around them (growing rings, three tries) go back to their remeshed positions. A piece
+ *  is kept finished only if it is a valid surface of its tiled topology, facing the same way;
+ *  otherwise it is smoothed only (put back to the tiling where sheets cross, likewise), else left
+ *  as tiled. Pieces that cross each other once finished go
+ *  back to their tiled shape. `fallback` says how many pieces got less than asked, and why the first
+ *  did. An invalid tiling is returned as it is. Pieces are finished on up to `threads` threads (0:
+ *  every core); the result does not depend on the number. */
+FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& tilingValidation,
+                              const SurfaceFinishingOptions& options, unsigned int threads = 0);
+
+/** "Remeshed", "Smoothed", "Tiled". */
+const char* finishName(SurfaceFinish finish);
+
+} // namespace slicemesh
+
+#endif

@@ -1,0 +1,39 @@
+// Isotropic remeshing of a closed triangle mesh to a target edge length (CGAL).
+#ifndef SurfaceRemeshing_h
+#define SurfaceRemeshing_h
+
+#include "Core/SliceMeshTypes.h"
+
+#include <array>
+
+namespace slicemesh
+{
+
+struct SurfaceRemeshingOptions
+{
+  double targetEdgeLength = 1.0; ///< mm
+  int iterations = 3;            ///< rounds of split, collapse, flip, relax and project
+};
+
+/** Remeshes the surface with triangles whose edges are close to the target length: long edges
+ *  split, short ones collapsed, edges flipped towards valence 6, vertices relaxed tangentially and
+ *  projected back onto the input surface (Botsch and Kobbelt's method, as CGAL implements it in
+ *  Polygon_mesh_processing::isotropic_remeshing). The topology is kept. Throws Error if the mesh is
+ *  not a manifold surface CGAL can hold. */
+TriangleMesh remeshSurface(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options);
+
+/** The edge length at which an isotropic remesh has about as many triangles as flying edges makes on
+ *  a grid of this spacing (mm): sqrt(3 / (1/(sx sy) + 1/(sx sz) + 1/(sy sz))), the spacing itself
+ *  on an isotropic grid. Flying edges puts a vertex on every grid edge the surface crosses and makes
+ *  about two triangles per vertex: on a surface of area A whose normals point every way, about
+ *  A (1/(sx sy) + 1/(sx sz) + 1/(sy sz)) triangles. A remesh at edge length L has about 3 A / L^2. */
+double voxelFaceEdgeLength(const std::array<double, 3>& spacing);
+
+/** The default target edge length for a mask of this spacing: 1.1 voxelFaceEdgeLength, so that a
+ *  remeshed surface has fewer triangles than Slicer's flying edges on the same grid (about 0.8 of
+ *  them), with edges still short enough to follow the mask's detail. */
+double automaticEdgeLength(const std::array<double, 3>& spacing);
+
+} // namespace slicemesh
+
+#endif

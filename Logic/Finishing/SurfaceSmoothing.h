@@ -1,0 +1,40 @@
+// Non-shrinking smoothing of a closed triangle mesh (Taubin's lambda/mu filter on the umbrella
+// operator): takes the voxel staircase out of a surface traced from a mask, in 3D.
+#ifndef SurfaceSmoothing_h
+#define SurfaceSmoothing_h
+
+#include "Core/SliceMeshTypes.h"
+
+namespace slicemesh
+{
+
+struct SurfaceSmoothingOptions
+{
+  /** Number of lambda/mu step pairs; 0 leaves the mesh as it is. */
+  int iterations = 150;
+  /** Taubin's pass band k_PB = 1/lambda + 1/mu: mesh frequencies below it (the shape) pass, the
+   *  staircase of a mask (periods of a few edges) is damped. lambda is 0.5; mu follows from k_PB. */
+  double passBand = 0.01;
+  /** No vertex ends farther than this from where it started (mm; 0: unbounded), checked after every
+   *  step pair. The staircase of a mask is a fraction of a voxel deep, so a bound of that order
+   *  takes it out but keeps the filter from rounding a sharp edge over more than that. */
+  double maxDisplacement = 0.0;
+};
+
+/** Smooths every vertex of the mesh: `iterations` pairs of p += lambda * L(p) and p += mu * L(p),
+ *  where L(p) is the mean of p's neighbours minus p, each pair followed by the maxDisplacement
+ *  clamp; then gives every connected component its signed
+ *  volume back by one offset along the vertex normals (small structures, a few edges across, shrink
+ *  under the filter). A component that lost half its volume or more (a speck the filter collapses)
+ *  keeps its unsmoothed vertices instead. The connectivity is not changed.
+ *  G. Taubin, "A signal processing approach to fair surface design", SIGGRAPH 1995. */
+void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options);
+
+/** Moves every vertex of a closed, consistently oriented mesh along its vertex normal by one common
+ *  distance so that its signed volume becomes `volume` (a few Newton steps: the volume grows by the
+ *  area per unit of offset). For one connected piece; offsets large against the mesh's features fold it. */
+void offsetToVolume(TriangleMesh& mesh, double volume);
+
+} // namespace slicemesh
+
+#endif

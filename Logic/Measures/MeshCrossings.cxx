@@ -1,0 +1,95 @@
+#include "Measures/MeshCrossings.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/box_intersection_d.h>
+
+#include <algorithm>
+#include <set>
+
+namespace slicemesh
+{
+namespace
+{
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+/** A box tagged with its mesh and, for a triangle's box, the triangle. */
+using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::pair<std::size_t, std::size_t>>;
+
+Box triangleBox(const TriangleMesh& mesh, std::size_t meshIndex, std::size_t t)
+{
+  double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
+  for (std::int32_t v : mesh.triangles[t])
+  {
+    const Point3& p = mesh.points[static_cast<std::size_t>(v)];
+    const double c[3] = { p.x, p.y, p.z };
+    for (int a = 0; a < 3; ++a)
+    {
+      lo[a] = std::min(lo[a], c[a]);
+      hi[a] = std::max(hi[a], c[a]);
+    }
+  }
+  return Box(lo, hi, { meshIndex, t });
+}
+
+Kernel::Triangle_3 triangle(const TriangleMesh& mesh, std::size_t t)
+{
+  auto point = [&](int corner)
+  {
+    const Point3& p = mesh.points[static_cast<std::size_t>(mesh.triangles[t][corner])];
+    return Kernel::Point_3(p.x, p.y, p.z);
+  };
+  return { point(0), point(1), point(2) };
+}
+
+} // namespace
+
+std::vector<std::pair<std::size_t, std::size_t>> crossingMeshes(const std::vector<const TriangleMesh*>& meshes,
+                                                                std::size_t& trianglePairs)
+{
+  trianglePairs = 0;
+  // Meshes whose bounding boxes overlap another's: only their triangles can meet.
+  std::vector<Box> meshBoxes;
+  for (std::size_t m = 0; m < meshes.size(); ++m)
+  {
+    if (meshes[m]->triangles.empty())
+      continue;
+    double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
+    for (const Point3& p : meshes[m]->points)
+    {
+      const double c[3] = { p.x, p.y, p.z };
+      for (int a = 0; a < 3; ++a)
+      {
+        lo[a] = std::min(lo[a], c[a]);
+        hi[a] = std::max(hi[a], c[a]);
+      }
+    }
+    meshBoxes.emplace_back(lo, hi, std::pair<std::size_t, std::size_t>{ m, 0 });
+  }
+  std::vector<char> candidate(meshes.size(), 0);
+  CGAL::box_self_intersection_d(meshBoxes.begin(), meshBoxes.end(),
+                                [&](const Box& a, const Box& b)
+                                { candidate[a.info().first] = candidate[b.info().first] = 1; });
+
+  std::vector<Box> boxes;
+  for (std::size_t m = 0; m < meshes.size(); ++m)
+    if (candidate[m])
+      for (std::size_t t = 0; t < meshes[m]->triangles.size(); ++t)
+        boxes.push_back(triangleBox(*meshes[m], m, t));
+  std::set<std::pair<std::size_t, std::size_t>> crossing;
+  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(),
+                                [&](const Box& a, const Box& b)
+                                {
+                                  const auto [ma, ta] = a.info();
+                                  const auto [mb, tb] = b.info();
+                                  if (ma == mb)
+                                    return; // within one mesh: its own validation's concern
+                                  if (CGAL::do_intersect(triangle(*meshes[ma], ta), triangle(*meshes[mb], tb)))
+                                  {
+                                    ++trianglePairs;
+                                    crossing.insert({ std::min(ma, mb), std::max(ma, mb) });
+                                  }
+                                });
+  return { crossing.begin(), crossing.end() };
+}
+
+} // namespace slicemesh

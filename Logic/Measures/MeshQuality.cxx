@@ -1,0 +1,107 @@
+#include "Measures/MeshQuality.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace slicemesh
+{
+namespace
+{
+
+double length(const Point3& a, const Point3& b)
+{
+  return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
+}
+
+/** Smallest and largest angle (radians) and aspect ratio of triangle abc, from its edge lengths. */
+struct Shape
+{
+  double smallest = 0.0, largest = 0.0, aspect = std::numeric_limits<double>::infinity();
+};
+
+Shape shapeOf(const Point3& a, const Point3& b, const Point3& c)
+{
+  const double la = length(b, c), lb = length(c, a), lc = length(a, b);
+  // Heron's formula in its stable form (Kahan), lengths sorted x >= y >= z.
+  double x = la, y = lb, z = lc;
+  if (x < y)
+    std::swap(x, y);
+  if (y < z)
+    std::swap(y, z);
+  if (x < y)
+    std::swap(x, y);
+  const double product = (x + (y + z)) * (z - (x - y)) * (z + (x - y)) * (x + (y - z));
+  const double area = 0.25 * std::sqrt(std::max(0.0, product));
+  Shape shape;
+  if (!(area > 0.0))
+  {
+    shape.largest = M_PI;
+    return shape;
+  }
+  // Angles from sin = 2 area / (product of the two adjacent edges), the largest by the remainder.
+  const double angleX = std::atan2(4.0 * area, y * y + z * z - x * x); // opposite the longest edge
+  const double angleZ = std::asin(std::min(1.0, 2.0 * area / (x * y))); // opposite the shortest: acute
+  shape.smallest = angleZ;
+  shape.largest = angleX;
+  const double s = 0.5 * (x + y + z);
+  const double inradius = area / s;
+  const double circumradius = x * y * z / (4.0 * area);
+  shape.aspect = circumradius / (2.0 * inradius);
+  return shape;
+}
+
+} // namespace
+
+std::vector<double> triangleMinAngles(const TriangleMesh& mesh)
+{
+  std::vector<double> angles;
+  angles.reserve(mesh.triangles.size());
+  for (const Triangle& t : mesh.triangles)
+    angles.push_back(shapeOf(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]).smallest * 180.0 / M_PI);
+  return angles;
+}
+
+MeshQuality measureMeshQuality(const TriangleMesh& mesh)
+{
+  MeshQuality q;
+  q.triangles = mesh.triangles.size();
+  if (mesh.triangles.empty())
+    return q;
+  std::vector<double> aspects;
+  aspects.reserve(mesh.triangles.size());
+  double smallest = M_PI, largest = 0.0, aspectSum = 0.0;
+  std::size_t below30 = 0, below10 = 0;
+  for (const Triangle& t : mesh.triangles)
+  {
+    const Shape shape = shapeOf(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+    const double degrees = shape.smallest * 180.0 / M_PI;
+    smallest = std::min(smallest, shape.smallest);
+    largest = std::max(largest, shape.largest);
+    below30 += degrees < 30.0;
+    below10 += degrees < 10.0;
+    aspects.push_back(shape.aspect);
+    aspectSum += shape.aspect;
+  }
+  const double n = static_cast<double>(mesh.triangles.size());
+  q.minAngleDegrees = smallest * 180.0 / M_PI;
+  q.maxAngleDegrees = largest * 180.0 / M_PI;
+  q.fractionBelow30 = below30 / n;
+  q.fractionBelow10 = below10 / n;
+  q.meanAspectRatio = aspectSum / n;
+  std::sort(aspects.begin(), aspects.end());
+  q.medianAspectRatio = aspects[aspects.size() / 2];
+  q.p95AspectRatio = aspects[std::min(aspects.size() - 1, static_cast<std::size_t>(0.95 * n))];
+  q.maxAspectRatio = aspects.back();
+  return q;
+}
+
+long genusOf(const MeshValidation& validation)
+{
+  if (!validation.closed() || !validation.manifold() || validation.triangles == 0)
+    return -1;
+  const long twiceGenus = 2 * static_cast<long>(validation.components) - validation.eulerCharacteristic;
+  return twiceGenus >= 0 && twiceGenus % 2 == 0 ? twiceGenus / 2 : -1;
+}
+
+} // namespace slicemesh

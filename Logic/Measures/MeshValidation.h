@@ -1,0 +1,71 @@
+// Checks that a triangle mesh is a valid closed surface, and measures it.
+#ifndef MeshValidation_h
+#define MeshValidation_h
+
+#include "Core/SliceMeshTypes.h"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace slicemesh
+{
+
+struct MeshValidation
+{
+  std::size_t vertices = 0;
+  std::size_t triangles = 0;
+  std::size_t degenerateTriangles = 0;        ///< zero area or repeated vertex
+  std::size_t boundaryEdges = 0;              ///< edges with one triangle
+  std::size_t nonManifoldEdges = 0;           ///< edges with more than two triangles
+  std::size_t nonManifoldVertices = 0;        ///< vertices whose triangles form more than one fan
+  std::size_t inconsistentEdges = 0;          ///< edges used twice in the same direction
+  std::size_t foldedEdges = 0;                ///< edges whose two triangles fold onto each other (dihedral angle under 1 degree)
+  std::size_t selfIntersections = 0;          ///< pairs of triangles that intersect other than along shared simplices
+  bool selfIntersectionChecked = false;       ///< false when the mesh was not manifold enough to check
+  std::size_t components = 0;
+  long eulerCharacteristic = 0;               ///< V - E + F
+  double area = 0.0;                          ///< mm^2
+  double volume = 0.0;                        ///< signed enclosed volume, mm^3 (positive when outward)
+  double minAngleDegrees = 0.0;
+  double fractionAnglesBelow30 = 0.0;         ///< fraction of triangles with an angle under 30 degrees
+
+  bool closed() const { return boundaryEdges == 0; }
+  bool manifold() const { return nonManifoldEdges == 0 && nonManifoldVertices == 0; }
+  bool oriented() const { return inconsistentEdges == 0 && volume > 0.0; }
+  bool valid() const
+  {
+    return closed() && manifold() && oriented() && degenerateTriangles == 0 && selfIntersectionChecked &&
+           selfIntersections == 0;
+  }
+  /** One line such as "12840 triangles, closed, manifold, no self-intersections, volume 33400.1 mm^3". */
+  std::string summary() const;
+};
+
+/** Measures the mesh and checks it: boundary and non-manifold edges, non-manifold vertices,
+ *  consistent orientation, degenerate triangles and self-intersections (CGAL). Folds (two triangles
+ *  on one edge lying almost on top of each other) are counted but do not make a mesh invalid: no
+ *  triangles cross there, but a rotation or rounding of the coordinates may make them cross. */
+MeshValidation validateMesh(const TriangleMesh& mesh);
+
+/** validateMesh without the self-intersection test (selfIntersectionChecked false): the topology,
+ *  orientation and measures, in time linear in the triangles. */
+MeshValidation validateMeshTopology(const TriangleMesh& mesh);
+
+/** The validation of meshes laid side by side in one mesh without shared vertices, from theirs:
+ *  counts, area and volume summed, the smallest angle the smallest, the share of triangles under 30
+ *  degrees weighted by triangles; `crossingPairs` pairs of triangles of different meshes that
+ *  intersect are added to the self-intersections. */
+MeshValidation joinedValidation(const std::vector<MeshValidation>& parts, std::size_t crossingPairs);
+
+/** The signed volume the mesh encloses (mm^3): positive when its triangles wind counter-clockwise
+ *  seen from outside; a closed surface's, whatever the origin. */
+double signedVolume(const TriangleMesh& mesh);
+
+/** The pairs of triangles (indices into mesh.triangles) that intersect other than along shared
+ *  simplices, as validateMesh counts them; empty when the mesh is not manifold enough to check. */
+std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingPairs(const TriangleMesh& mesh);
+
+} // namespace slicemesh
+
+#endif

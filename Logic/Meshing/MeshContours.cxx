@@ -1,0 +1,97 @@
+#include "Meshing/MeshContours.h"
+
+#include "Contours/ContourResampling.h"
+
+#include <utility>
+
+namespace slicemesh
+{
+namespace
+{
+
+void measure(MeshedContours& meshing)
+{
+  MeshMeasures& m = meshing.measures;
+  const ContourStack& stack = meshing.stack;
+  m.shape = measureMeshQuality(meshing.surface.mesh);
+  m.dirichlet = measureDirichletEnergy(meshing.tiling, stack);
+  m.genus = genusOf(meshing.surface.validation);
+  m.pointSpacing = meanPointSpacing(stack);
+  m.sliceSpacing = stack.sliceSpacing > 0.0 ? stack.sliceSpacing
+                   : stack.slices.size() > 1
+                     ? (stack.slices.back().z - stack.slices.front().z) / static_cast<double>(stack.slices.size() - 1)
+                     : 0.0;
+}
+
+} // namespace
+
+const char* meshingStageName(MeshingStage stage)
+{
+  switch (stage)
+  {
+    case MeshingStage::Preparation: return "Preparation";
+    case MeshingStage::Correspondence: return "Correspondence";
+    case MeshingStage::Tiling: return "Tiling";
+    case MeshingStage::Validation: return "Validation";
+    case MeshingStage::Finishing: break;
+  }
+  return "Finishing";
+}
+
+MeshedContours startMeshing(ContourStack traced, const MeshingOptions& options, const std::array<double, 3>& spacing)
+{
+  MeshedContours meshing;
+  meshing.options = resolvedMeshingOptions(options, spacing);
+  meshing.stack = std::move(traced);
+  return meshing;
+}
+
+void runMeshingStage(MeshingStage stage, MeshedContours& meshing, const std::function<void(double)>& fraction)
+{
+  switch (stage)
+  {
+    case MeshingStage::Preparation:
+      meshing.stack = prepareContours(meshing.stack, meshing.options.contours);
+      break;
+    case MeshingStage::Correspondence:
+      // Overlapping contours are matched inside the tiling; this stage joins what only the distance
+      // rule matches, and thickens undersampled slabs (a copy of the stack when both are off).
+      meshing.stack = insertIntermediateSections(meshing.stack, meshing.options.undersampling, &meshing.sections);
+      break;
+    case MeshingStage::Tiling:
+    {
+      ReconstructionOptions options = meshing.options.reconstruction;
+      options.progress = fraction;
+      meshing.tiling = reconstructSurface(meshing.stack, options, &meshing.reconstruction);
+      if (meshing.tiling.triangles.empty())
+        throw Error("the reconstruction produced no triangles");
+      break;
+    }
+    case MeshingStage::Validation:
+      meshing.tilingValidation = validateMesh(meshing.tiling);
+      break;
+    case MeshingStage::Finishing:
+      meshing.surface =
+        finishSurface(meshing.tiling, meshing.tilingValidation, meshing.options.finishing, meshing.options.threads);
+      measure(meshing);
+      break;
+  }
+}
+
+MeshedContours meshContours(const ContourStack& traced, const MeshingOptions& options,
+                            const std::array<double, 3>& spacing,
+                            const std::function<void(MeshingStage, double)>& progress)
+{
+  MeshedContours meshing = startMeshing(traced, options, spacing);
+  for (MeshingStage stage : { MeshingStage::Preparation, MeshingStage::Correspondence, MeshingStage::Tiling,
+                              MeshingStage::Validation, MeshingStage::Finishing })
+  {
+    std::function<void(double)> fraction;
+    if (progress)
+      fraction = [&progress, stage](double f) { progress(stage, f); };
+    runMeshingStage(stage, meshing, fraction);
+  }
+  return meshing;
+}
+
+} // namespace slicemesh

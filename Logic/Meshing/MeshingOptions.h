@@ -1,0 +1,38 @@
+// Every option of the meshing path, and the one place where "0 = automatic" becomes a value.
+#ifndef MeshingOptions_h
+#define MeshingOptions_h
+
+#include "Contours/ContourPreparation.h"
+#include "Finishing/SurfaceFinishing.h"
+#include "Sections/IntermediateSections.h"
+#include "Tiling/SurfaceReconstruction.h"
+
+#include <array>
+
+namespace slicemesh
+{
+
+/** The options of meshContours, stage by stage. A 0 marked "automatic" is resolved from the grid by
+ *  resolvedMeshingOptions; the tiling's wall row height and Steiner spacing depend on the contours
+ *  themselves and are resolved by the tiling (ReconstructionStatistics reports the values used). */
+struct MeshingOptions
+{
+  ContourPreparationOptions contours;
+  UndersamplingOptions undersampling;  ///< correspondence by distance, bridging, sections (all off by default)
+  ReconstructionOptions reconstruction;
+  /** Remeshed and smoothed by default; a target edge length and a smoothing displacement bound of 0
+   *  are automatic (finishingOptionsFor the grid). */
+  SurfaceFinishingOptions finishing{ SurfaceFinish::Remeshed, {}, { 0.0 } };
+  /** Threads for the work inside one structure (its connected pieces, the self-intersection check);
+   *  0: every core. The mesh does not depend on it. */
+  unsigned int threads = 0;
+};
+
+/** The options with every automatic value replaced by its value for a grid of this spacing (x, y,
+ *  slice; mm): the contour preparation (resolvedContourPreparation) and the finishing
+ *  (finishingOptionsFor: the target edge length, the smoothing's displacement bound). */
+MeshingOptions resolvedMeshingOptions(const MeshingOptions& options, const std::array<double, 3>& spacing);
+
+} // namespace slicemesh
+
+#endif

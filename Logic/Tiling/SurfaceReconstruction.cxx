@@ -1,0 +1,176 @@
+#include "Tiling/SurfaceReconstruction.h"
+
+#include "Contours/ContourCrossings.h"
+#include "Contours/ContourNesting.h"
+#include "Correspondence/MutualIntersections.h"
+#include "Core/PlanarGeometry.h"
+#include "Tiling/SlabTiling.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace slicemesh
+{
+
+namespace
+{
+
+void checkStack(const ContourStack& stack)
+{
+  for (std::size_t k = 0; k < stack.slices.size(); ++k)
+  {
+    if (!std::isfinite(stack.slices[k].z))
+      throw Error("contour stack: slice " + std::to_string(k) + " has a non-finite height");
+    if (k > 0 && !(stack.slices[k].z > stack.slices[k - 1].z))
+      throw Error("contour stack: slice heights must increase strictly (slice " + std::to_string(k) + ")");
+  }
+  if (!(stack.sliceSpacing >= 0.0) || !std::isfinite(stack.sliceSpacing))
+    throw Error("contour stack: slice spacing must be zero (automatic) or positive, and finite");
+  if (stack.slices.size() == 1 && stack.sliceSpacing == 0.0)
+    throw Error("contour stack: a single slice needs its slice spacing (thickness) set");
+}
+
+bool onOneLine(const Polygon2& contour)
+{
+  for (std::size_t i = 2; i < contour.size(); ++i)
+    if (orientation(contour[0], contour[1], contour[i]) != 0)
+      return false;
+  return true;
+}
+
+/** Contours of a slice must be simple and apart (a mask's contours always are); crossing or touching
+ *  ones, which hand-made contours can have, have no inside to mesh. */
+void rejectCrossingContours(const PreparedSlice& slice)
+{
+  const auto crossings = contourCrossings(slice.contours);
+  if (crossings.empty())
+    return;
+  const ContourEdge& first = crossings.front().first;
+  const ContourEdge& second = crossings.front().second;
+  const Point2& where = slice.contours[first.contour][first.edge];
+  std::ostringstream message;
+  message << "contour stack: in the slice at z = " << slice.z << " mm, contour " << first.contour
+          << (first.contour == second.contour ? " crosses or touches itself" : " crosses or touches contour " +
+                                                                                  std::to_string(second.contour))
+          << " near (" << where.x << ", " << where.y << ")";
+  throw Error(message.str());
+}
+
+std::vector<PreparedSlice> prepareSlices(const ContourStack& stack, double tolerance)
+{
+  std::vector<PreparedSlice> slices(stack.slices.size());
+  for (std::size_t k = 0; k < stack.slices.size(); ++k)
+  {
+    slices[k].z = stack.slices[k].z;
+    for (const Polygon2& contour : stack.slices[k].contours)
+    {
+      // A contour on one line has nothing inside: dropped. A figure eight has no area either, yet
+      // is no sliver: it is kept for the crossing check, which rejects it.
+      Polygon2 cleaned = cleanContour(contour, tolerance, false);
+      if (!cleaned.empty() && !onOneLine(cleaned))
+        slices[k].contours.push_back(std::move(cleaned));
+    }
+    rejectCrossingContours(slices[k]);
+    slices[k].nesting = orientAndNest(slices[k].contours);
+  }
+  return slices;
+}
+
+double medianEdgeLength(const std::vector<PreparedSlice>& slices)
+{
+  std::vector<double> lengths;
+  for (const PreparedSlice& slice : slices)
+    appendEdgeLengths(slice.contours, lengths);
+  return median(std::move(lengths), 1.0);
+}
+
+} // namespace
+
+TriangleMesh reconstructSurface(const ContourStack& stack, const ReconstructionOptions& options,
+                                ReconstructionStatistics* statisticsOut)
+{
+  checkStack(stack);
+  ReconstructionStatistics statistics;
+  std::vector<PreparedSlice> slices = prepareSlices(stack, options.mergeTolerance);
+  const std::size_t n = slices.size();
+  bool anyContour = false;
+  for (const PreparedSlice& slice : slices)
+    anyContour = anyContour || !slice.contours.empty();
+  if (!anyContour)
+    throw Error("contour stack: no contour to mesh");
+
+  // Adjacent slices must meet only at common vertices: a forward pass carries split points up the
+  // stack, a backward pass carries them down along coincident walls.
+  for (std::size_t k = 0; k + 1 < n; ++k)
+    statistics.crossingPoints +=
+      insertMutualIntersections(slices[k].contours, slices[k + 1].contours, options.mergeTolerance);
+  for (std::size_t k = n - 1; k-- > 0;)
+    statistics.crossingPoints +=
+      insertMutualIntersections(slices[k].contours, slices[k + 1].contours, options.mergeTolerance);
+
+  MeshBuilder mesh;
+  for (PreparedSlice& slice : slices)
+    for (const Polygon2& contour : slice.contours)
+    {
+      slice.firstVertexId.push_back(static_cast<std::int32_t>(mesh.addPoint(contour[0].x, contour[0].y, slice.z)));
+      for (std::size_t i = 1; i < contour.size(); ++i)
+        mesh.addPoint(contour[i].x, contour[i].y, slice.z);
+    }
+
+  SlabLiftOptions liftOptions;
+  liftOptions.capPlacement = options.capPlacement;
+  liftOptions.minAngleDegrees = options.minAngleDegrees;
+  liftOptions.maxEdgeLength = options.maxEdgeLength;
+  liftOptions.surfaceMetricFlips = !options.planarTiling;
+  liftOptions.rowHeight = options.wallRowHeight > 0.0 ? options.wallRowHeight : medianEdgeLength(slices);
+  // The two automatic values that depend on the contours, not the grid: resolved here, reported.
+  statistics.wallRowHeight = liftOptions.rowHeight;
+  statistics.steinerSpacing = options.maxEdgeLength > 0.0 ? options.maxEdgeLength : liftOptions.rowHeight;
+
+  // Slab k lies between slice k-1 and slice k; slabs 0 and n lie beyond the ends and only cap.
+  auto zOf = [&](long k) {
+    if (k < 0)
+      return slices[0].z - (stack.sliceSpacing > 0.0 ? stack.sliceSpacing : slices[1].z - slices[0].z);
+    if (k >= static_cast<long>(n))
+      return slices[n - 1].z + (stack.sliceSpacing > 0.0 ? stack.sliceSpacing : slices[n - 1].z - slices[n - 2].z);
+    return slices[k].z;
+  };
+  auto sliceOf = [&](long k) -> const PreparedSlice* {
+    return k < 0 || k >= static_cast<long>(n) ? nullptr : &slices[k];
+  };
+  auto makeOverlay = [&](long k) {
+    return std::make_unique<SlabOverlay>(sliceOf(k - 1), sliceOf(k), zOf(k - 1), zOf(k), options.mergeTolerance);
+  };
+  // A contour is isolated when its region meets neither neighbour slice.
+  auto isolation = [](const std::vector<char>& below, const std::vector<char>& above) {
+    std::vector<char> isolated(below.size());
+    for (std::size_t c = 0; c < below.size(); ++c)
+      isolated[c] = !below[c] && !above[c];
+    return isolated;
+  };
+
+  std::unique_ptr<SlabOverlay> current = makeOverlay(0);
+  std::vector<char> lowerIsolated; // slice k-1, from slabs k-1 and k
+  for (long k = 0; k <= static_cast<long>(n); ++k)
+  {
+    std::unique_ptr<SlabOverlay> next = k < static_cast<long>(n) ? makeOverlay(k + 1) : nullptr;
+    std::vector<char> upperIsolated;
+    if (next)
+      upperIsolated = isolation(current->upperContinues(), next->lowerContinues());
+    liftOptions.lowerIsolated = &lowerIsolated;
+    liftOptions.upperIsolated = &upperIsolated;
+    current->lift(mesh, liftOptions, statistics);
+    ++statistics.slabs;
+    if (options.progress)
+      options.progress(static_cast<double>(k + 1) / static_cast<double>(n + 1));
+    lowerIsolated = upperIsolated;
+    current = std::move(next);
+  }
+
+  if (statisticsOut)
+    *statisticsOut = statistics;
+  return mesh.release();
+}
+
+} // namespace slicemesh

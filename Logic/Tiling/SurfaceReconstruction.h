@@ -1,0 +1,20 @@
+// The tiling (Documentation/Algorithm.md, steps 3-8): a stack of slice contours in, a closed triangle
+// surface out, every contour vertex on its slice.
+#ifndef SurfaceReconstruction_h
+#define SurfaceReconstruction_h
+
+#include "Tiling/TilingOptions.h"
+
+namespace slicemesh
+{
+
+/** Reconstructs the closed surface bounded by the contours of the stack.
+ *  Contours may come in any orientation; they are oriented and nested first.
+ *  Throws slicemesh::Error on input it cannot mesh. */
+TriangleMesh reconstructSurface(const ContourStack& stack,
+                                const ReconstructionOptions& options = {},
+                                ReconstructionStatistics* statistics = nullptr);
+
+} // namespace slicemesh
+
+#endif

@@ -1,0 +1,113 @@
+// The one meshing path: automatic options resolved from the grid in one place, the stages run one by
+// one giving what meshContours gives, and what each stage leaves behind.
+#include "ContourStacks.h"
+#include "Meshing/MeshContours.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace slicemesh::testing
+{
+namespace
+{
+
+/** A ball of radius 6 mm sliced every 1.5 mm: circles of 64 points. */
+ContourStack ballStack()
+{
+  ContourStack stack;
+  stack.sliceSpacing = 1.5;
+  for (double z = -5.25; z <= 5.3; z += 1.5)
+    stack.slices.push_back({ z, { circle(0.0, 0.0, std::sqrt(36.0 - z * z), 64) } });
+  return stack;
+}
+
+TEST(MeshingOptions, AutomaticValuesComeFromTheGrid)
+{
+  // 0.8 x 0.8 x 3 mm: the finishing's edge is 1.1 times the flying-edges-equivalent edge
+  // sqrt(3 / (1/0.64 + 2/2.4)) mm, its displacement bound 0.3 of the smallest side.
+  const MeshingOptions resolved = resolvedMeshingOptions({}, { 0.8, 0.8, 3.0 });
+  EXPECT_NEAR(resolved.finishing.remeshing.targetEdgeLength, 1.1 * std::sqrt(3.0 / (1.0 / 0.64 + 2.0 / 2.4)), 1e-12);
+  EXPECT_NEAR(resolved.finishing.smoothing.maxDisplacement, 0.24, 1e-12);
+  EXPECT_EQ(resolved.contours.mode, ContourPreparation::Traced); // the default is not automatic
+  EXPECT_EQ(resolved.contours.pointSpacing, 0.0);                // traced points are kept
+
+  MeshingOptions automatic;
+  automatic.contours.mode = ContourPreparation::Automatic;
+  const MeshingOptions thick = resolvedMeshingOptions(automatic, { 0.8, 0.8, 3.0 });
+  EXPECT_EQ(thick.contours.mode, ContourPreparation::Smoothed);
+  EXPECT_NEAR(thick.contours.pointSpacing, std::sqrt(0.8 * 3.0), 1e-12);
+  EXPECT_NEAR(thick.contours.smoothingMaxShift, 0.24, 1e-12);
+  EXPECT_EQ(resolvedMeshingOptions(automatic, { 1.0, 1.0, 1.0 }).contours.mode, ContourPreparation::Traced);
+
+  // Given values are kept.
+  MeshingOptions given;
+  given.finishing.remeshing.targetEdgeLength = 2.5;
+  given.finishing.smoothing.maxDisplacement = 0.1;
+  const MeshingOptions kept = resolvedMeshingOptions(given, { 1.0, 1.0, 1.0 });
+  EXPECT_EQ(kept.finishing.remeshing.targetEdgeLength, 2.5);
+  EXPECT_EQ(kept.finishing.smoothing.maxDisplacement, 0.1);
+}
+
+TEST(MeshContours, StageByStageIsMeshContours)
+{
+  const ContourStack stack = ballStack();
+  const std::array<double, 3> spacing{ 0.5, 0.5, 1.5 };
+  std::vector<MeshingStage> heard;
+  const MeshedContours whole = meshContours(stack, {}, spacing,
+                                            [&](MeshingStage stage, double fraction)
+                                            {
+                                              EXPECT_GE(fraction, 0.0);
+                                              EXPECT_LE(fraction, 1.0);
+                                              if (heard.empty() || heard.back() != stage)
+                                                heard.push_back(stage);
+                                            });
+  EXPECT_EQ(heard, std::vector<MeshingStage>{ MeshingStage::Tiling }); // the stage that reports its fraction
+
+  MeshedContours byStage = startMeshing(stack, {}, spacing);
+  runMeshingStage(MeshingStage::Preparation, byStage);
+  runMeshingStage(MeshingStage::Correspondence, byStage);
+  runMeshingStage(MeshingStage::Tiling, byStage);
+  EXPECT_FALSE(byStage.tiling.triangles.empty());
+  EXPECT_TRUE(byStage.surface.mesh.triangles.empty()); // not finished yet
+  runMeshingStage(MeshingStage::Validation, byStage);
+  EXPECT_TRUE(byStage.tilingValidation.valid()) << byStage.tilingValidation.summary();
+  runMeshingStage(MeshingStage::Finishing, byStage);
+  EXPECT_EQ(byStage.surface.mesh.points.size(), whole.surface.mesh.points.size());
+  EXPECT_EQ(byStage.surface.mesh.triangles, whole.surface.mesh.triangles);
+  for (std::size_t v = 0; v < whole.surface.mesh.points.size(); ++v)
+    ASSERT_EQ(byStage.surface.mesh.points[v].x, whole.surface.mesh.points[v].x);
+}
+
+TEST(MeshContours, TheFinishedBallIsValidCloseToTheSphereAndMeasured)
+{
+  const MeshedContours m = meshContours(ballStack(), {}, { 0.5, 0.5, 1.5 });
+  EXPECT_EQ(m.surface.finish, SurfaceFinish::Remeshed) << m.surface.fallback;
+  EXPECT_TRUE(m.surface.validation.valid()) << m.surface.validation.summary();
+  EXPECT_EQ(m.measures.genus, 0);
+  EXPECT_EQ(m.measures.sliceSpacing, 1.5);
+  EXPECT_GT(m.measures.dirichlet.energy, 0.0); // the tiling's
+  EXPECT_EQ(m.measures.shape.triangles, m.surface.mesh.triangles.size());
+  // The caps reach half a slice beyond the end contours (z = +-6 mm): every vertex within 0.35 mm of
+  // the sphere (a dome's rim, a quarter circle of half a slice over a 2.9 mm contour, stands farthest
+  // out), on average within 0.1 mm; the volume within 3% of the ball's.
+  double sum = 0.0;
+  for (const Point3& p : m.surface.mesh.points)
+  {
+    const double distance = std::abs(std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z) - 6.0);
+    EXPECT_LE(distance, 0.35);
+    sum += distance;
+  }
+  EXPECT_LT(sum / static_cast<double>(m.surface.mesh.points.size()), 0.1);
+  EXPECT_NEAR(m.surface.validation.volume, 4.0 / 3.0 * M_PI * 216.0, 0.03 * 4.0 / 3.0 * M_PI * 216.0);
+}
+
+TEST(MeshContours, NoContoursIsAnErrorNotAnEmptyMesh)
+{
+  ContourStack empty;
+  empty.slices = { { 0.0, {} }, { 1.0, {} } };
+  EXPECT_THROW(meshContours(empty, {}, { 1.0, 1.0, 1.0 }), Error);
+}
+
+} // namespace
+} // namespace slicemesh::testing
