@@ -16,6 +16,12 @@ def cell(value, numeric=False):
     return f"<td{' class=n' if numeric else ''}>{html.escape(str(value))}</td>"
 
 
+def duration(seconds):
+    if seconds >= 3600:
+        return f"{seconds / 3600:.1f} h"
+    return f"{seconds / 60:.1f} min" if seconds >= 60 else f"{seconds:.0f} s"
+
+
 def label_table(rows, columns):
     head = "".join(f"<th>{html.escape(c)}</th>" for c in columns)
     body = "".join("<tr>" + "".join(cell(r[c]) for c in columns) + "</tr>" for r in rows)
@@ -23,6 +29,7 @@ def label_table(rows, columns):
 
 
 def input_row(status, rows, here, columns):
+    columns = [c for c in columns if c not in ("subject", "session", "input", "exit_code")]
     folder = os.path.relpath(os.path.dirname(status["_path"]), here)
     picture = status["files"]["snapshot"]
     thumbnail = ""
@@ -62,7 +69,7 @@ def main(snakemake):
             statuses.append(dict(json.load(f), _path=path))
     here = os.path.dirname(snakemake.output.html)
     failed = sum(1 for s in statuses if s["exit_code"] != 0)
-    hours = sum(s["seconds"] for s in statuses) / 3600.0
+    busy = duration(sum(s["seconds"] for s in statuses))
     key = lambda s: (s["subject"], s["session"], os.path.basename(s["path"].rstrip("/")))
     body = "".join(input_row(s, by_input[key(s)], here, columns) for s in sorted(statuses, key=key))
     head = "".join(f"<th>{h}</th>" for h in ["snapshot", "subject", "session", "input", "exit code", "meshes",
@@ -71,7 +78,7 @@ def main(snakemake):
     page = f"""<!DOCTYPE html><html><head><meta charset="utf-8"><title>SliceMesh cohort</title>
 <style>{STYLE}</style></head><body><h1>SliceMesh cohort</h1>
 <p>{len(statuses)} inputs: {len(statuses) - failed} meshed (exit code 0), {failed} not;
-{len(table)} rows in <a href="cohort.tsv">cohort.tsv</a>; {hours:.2f} hours of mesh jobs.</p>
+{len(table)} rows in <a href="cohort.tsv">cohort.tsv</a>; the mesh jobs took {busy} together.</p>
 <table><tr>{head}</tr>{body}</table></body></html>
 """
     with open(snakemake.output.html, "w") as out:

@@ -3,6 +3,7 @@ error, seconds, the files written). A failed SliceMesh run is a result, not a fa
 job succeeds so that the cohort table lists the input and the other inputs go on."""
 import json
 import os
+import shlex
 import shutil
 import subprocess
 import sys
@@ -10,7 +11,9 @@ import time
 
 import slicemesh_options
 
-FILTER_TAG = "<filter-"  # Slicer's progress tags on stdout; left out of the log
+def is_progress_tag(line):
+    """Slicer's progress tags (<filter-...>, </filter-...>) on stdout: left out of the log."""
+    return line.startswith(("<filter-", "</filter-"))
 
 
 def error_line(stderr):
@@ -79,8 +82,8 @@ def main(snakemake):
     seconds = time.monotonic() - began
 
     with open(files["log"], "w") as log:
-        log.write(" ".join(command) + "\n")
-        log.writelines(line + "\n" for line in stdout.splitlines() if not line.startswith(FILTER_TAG))
+        log.write(shlex.join(command) + "\n")
+        log.writelines(line + "\n" for line in stdout.splitlines() if not is_progress_tag(line))
         log.write(stderr)
 
     def written(key):
@@ -94,6 +97,7 @@ def main(snakemake):
         options=options,
         threads=snakemake.threads,
         host=os.uname().nodename,
+        slurm_job=os.environ.get("SLURM_JOB_ID"),  # its log: logs/slurm/slicemesh-mesh-<id>.log
         command=command,
         files={key: written(key) for key in files},
     )
