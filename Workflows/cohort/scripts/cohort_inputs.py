@@ -55,7 +55,7 @@ def find_inputs(config):
     if bids_dir:
         paths = bids_paths(bids_dir, config.get("bids_files") or "*_dseg.nii*")
     else:
-        paths = glob.glob(pattern)
+        paths = glob.glob(pattern, recursive=True)
     wanted = {str(p).removeprefix("sub-") for p in config.get("participant_label") or []}
 
     inputs = {}
