@@ -20,7 +20,7 @@ def mesh_columns(block):
     return {
         "status": "ok" if mesh["valid"] else "invalid",
         "triangles": int(mesh["triangles"]),
-        "volume_ml": number(mesh["volumeMm3"] / 1000.0, 4),
+        "volume_ml": number(None if mesh["volumeMm3"] is None else mesh["volumeMm3"] / 1000.0, 4),
         "closed": "true" if mesh["closed"] else "false",
         "min_angle_deg": number(quality["minAngleDegrees"], 2),
         "percent_under_30_deg": number(quality["percentTrianglesBelow30Degrees"], 2),
