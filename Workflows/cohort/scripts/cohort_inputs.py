@@ -37,15 +37,36 @@ def bids_paths(root, files):
     return paths
 
 
+def glob_regex(pattern):
+    """The glob as a regular expression with one group per wildcard."""
+    out, i = "", 0
+    while i < len(pattern):
+        if pattern.startswith("**/", i):
+            out, i = out + "(?:(.*)/)?", i + 3  # any folders, none included
+        elif pattern.startswith("**", i):
+            out, i = out + "(.*)", i + 2
+        elif pattern[i] in "*?":
+            out, i = out + ("([^/]*)" if pattern[i] == "*" else "([^/])"), i + 1
+        elif pattern[i] == "[" and "]" in pattern[i + 2:]:
+            j = pattern.index("]", i + 2)
+            out, i = out + "([" + pattern[i + 1 : j].replace("!", "^", 1) + "])", j + 1
+        else:
+            out, i = out + re.escape(pattern[i]), i + 1
+    return out
+
+
 def glob_id(pattern, path):
-    """The part of path that the glob's wildcards matched: below its last wildcard-free folder."""
-    fixed = []
-    for part in pattern.split(os.sep):
-        if glob.has_magic(part):
-            break
-        fixed.append(part)
-    relative = os.path.relpath(path, os.sep.join(fixed) or os.sep)
-    return strip_extension(relative).replace(os.sep, "_")
+    """The folder and file names (extension dropped) in which the glob's wildcards matched,
+    joined by "_": "/data/*/labels.nrrd" gives p01 for /data/p01/labels.nrrd, "/data/ct/*" gives
+    p01 for /data/ct/p01.nii.gz."""
+    match = re.fullmatch(glob_regex(pattern), path)
+    spans = [match.span(g) for g in range(1, match.re.groups + 1) if match.group(g)] if match else []
+    stem, names, offset = strip_extension(path.rstrip("/")), [], 0
+    for name in stem.split("/"):
+        if name and any(a < offset + len(name) and b > offset for a, b in spans):
+            names.append(name)
+        offset += len(name) + 1
+    return "_".join(names) or os.path.basename(stem)
 
 
 def find_inputs(config):

@@ -6,10 +6,10 @@ import os
 import shlex
 import shutil
 import subprocess
-import sys
 import time
 
 import slicemesh_options
+
 
 def is_progress_tag(line):
     """Slicer's progress tags (<filter-...>, </filter-...>) on stdout: left out of the log."""
