@@ -35,7 +35,7 @@ def input_row(status, rows, here, columns):
     thumbnail = ""
     if picture:
         src = html.escape(os.path.join(folder, picture))
-        thumbnail = f'<a href="{src}"><img src="{src}" alt="snapshot"></a>'
+        thumbnail = f'<a href="{src}"><img src="{src}" alt="snapshot" loading="lazy"></a>'
     meshed = [r for r in rows if r["triangles"]]
     worst = "failed" if any(r["status"] == "failed" for r in rows) else (
         "invalid" if any(r["status"] == "invalid" for r in rows) else "")
