@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # ctest CohortWorkflowSlurm: the cohort workflow through its Slurm profile on a one-node Slurm
-# started on this machine (localhost-slurm.sh), the inputs found by a glob this time. Checks the
-# results (check_cohort.py), that every mesh job was a Slurm job that completed, and that a second
-# run finds nothing to do. Where Slurm cannot start, says why and checks a dry run instead.
+# started on this machine (localhost-slurm.sh), the inputs found by a glob this time. A first run
+# is interrupted and must leave no Slurm job behind; the next one must give the right results
+# (check_cohort.py) from Slurm jobs that completed; a third finds nothing to do. Where Slurm cannot
+# start, says why and checks a dry run instead.
 # Usage: cohort-slurm-test.sh SLICEMESH WORKFLOW_DIR WORK_DIR
 set -euo pipefail
 slicemesh=$(realpath "$1") workflow=$(realpath "$2") work=$3
@@ -32,7 +33,32 @@ if ! reason=$("$here/localhost-slurm.sh" start "$work/slurm" 2>&1 >/dev/null); t
 fi
 export SLURM_CONF="$work/slurm/slurm.conf"
 
+# Run 1 is interrupted (Ctrl-C) while its jobs are held in SliceMesh: the profile's scancel must
+# cancel every Slurm job it submitted.
+cat > held-slicemesh <<SH
+#!/bin/sh
+case "\$*" in *--help*) ;; *) touch "$work/held"; while :; do sleep 1; done ;; esac
+exec "$slicemesh" "\$@"
+SH
+chmod +x held-slicemesh
+set -m # its own process group, as Ctrl-C would interrupt it
+smk --config slicemesh="$work/held-slicemesh" >run0.log 2>&1 &
+run0=$!
+set +m
+for _ in $(seq 120); do [ -e held ] && break; sleep 0.5; done
+[ -e held ] || { cat run0.log; fail "no Slurm job started SliceMesh within 60 s"; }
+kill -INT -- -$run0
+wait $run0 && fail "the interrupted run exited with 0"
+submitted=$(sed -n "s/.*with external jobid '\([0-9]*\)'.*/\1/p" run0.log)
+[ -n "$submitted" ] || fail "the interrupted run submitted no job"
+for job in $submitted; do
+  state=$(scontrol show job -o "$job" | grep -o 'JobState=[A-Z_]*')
+  [ "$state" = JobState=CANCELLED ] || fail "Slurm job $job of the interrupted run: $state, not cancelled"
+done
+
+# Run 2 does the work.
 smk >run1.log 2>&1 || { cat run1.log; fail "the run through Slurm failed"; }
+grep -Eq '^mesh +4( |$)' run1.log || { cat run1.log; fail "the run after the interruption did not mesh the 4 inputs"; }
 snapshots=""
 command -v xvfb-run >/dev/null && snapshots=--snapshots
 python3 "$here/check_cohort.py" results bids/expected.json $snapshots || fail "the results are wrong (above)"
@@ -46,6 +72,6 @@ for job in $jobs; do
   [ -s "logs/slurm/slicemesh-mesh-$job.log" ] || fail "no Slurm log for job $job"
 done
 
-smk >run2.log 2>&1 || { cat run2.log; fail "the second run failed"; }
-grep -q "Nothing to be done" run2.log || { cat run2.log; fail "the second run found work to do"; }
-echo "CohortWorkflowSlurm: 4 mesh jobs ran as Slurm jobs $jobs; results checked; rerun did nothing"
+smk >run2.log 2>&1 || { cat run2.log; fail "the third run failed"; }
+grep -q "Nothing to be done" run2.log || { cat run2.log; fail "the third run found work to do"; }
+echo "CohortWorkflowSlurm: interrupted run's jobs $(echo $submitted) cancelled; 4 mesh jobs ran as Slurm jobs $jobs; results checked; rerun did nothing"
