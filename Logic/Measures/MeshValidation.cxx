@@ -10,10 +10,8 @@
 #include <array>
 #include <cmath>
 #include <iomanip>
-#include <map>
 #include <numeric>
 #include <sstream>
-#include <unordered_map>
 
 namespace slicemesh
 {
@@ -29,15 +27,12 @@ std::uint64_t directedKey(std::int32_t a, std::int32_t b)
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
 }
 
-double angleAt(const Point3& o, const Point3& p, const Point3& q)
+double squaredDistance(const Point3& a, const Point3& b)
 {
-  const double ux = p.x - o.x, uy = p.y - o.y, uz = p.z - o.z;
-  const double vx = q.x - o.x, vy = q.y - o.y, vz = q.z - o.z;
-  const double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
-  return std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), ux * vx + uy * vy + uz * vz);
+  const double dx = b.x - a.x, dy = b.y - a.y, dz = b.z - a.z;
+  return dx * dx + dy * dy + dz * dz;
 }
 
-/** Counts pairs of triangles that intersect other than along the vertices and edges they share. */
 /** The self-intersecting pairs by face index (faces are added in the order of mesh.triangles, so a
  *  face's index is its triangle's); `checked` false when CGAL cannot hold the mesh as a surface. */
 std::vector<std::pair<std::size_t, std::size_t>> intersectingPairs(const TriangleMesh& mesh, bool& checked)
@@ -90,98 +85,150 @@ std::string MeshValidation::summary() const
 
 MeshValidation validateMeshTopology(const TriangleMesh& mesh)
 {
+  // Linear in the triangles but for three sorts of their edges: no hash maps, no per-vertex
+  // allocation, no inverse trigonometry per triangle (the smallest angle is opposite the shortest
+  // edge; one arc cosine at the end).
   const double foldCosine = std::cos(M_PI / 180.0); // a dihedral angle under 1 degree
+  const double cos30 = std::cos(M_PI / 6.0);
   MeshValidation v;
-  v.triangles = mesh.triangles.size();
+  const std::size_t nTriangles = mesh.triangles.size();
+  v.triangles = nTriangles;
   const std::size_t nPoints = mesh.points.size();
   for (const Triangle& t : mesh.triangles)
     for (std::int32_t i : t)
       if (i < 0 || static_cast<std::size_t>(i) >= nPoints)
         throw Error("mesh: a triangle refers to a vertex that does not exist");
 
-  // Edges: directed uses tell orientation, undirected counts tell boundary and non-manifold edges
-  // (and each undirected edge's first triangle, whose normal a second one is compared with: folds).
-  std::unordered_map<std::uint64_t, int> directed;
-  struct EdgeUse
-  {
-    int count = 0;
-    std::size_t firstTriangle = 0;
-  };
-  std::unordered_map<std::uint64_t, EdgeUse> undirected;
-  std::vector<char> used(nPoints, 0);
-  DisjointSets pieces(nPoints);
-  double minAngle = M_PI;
+  // Per triangle: degeneracy, area, unit normal, smallest angle.
+  std::vector<std::array<double, 3>> normals(nTriangles);
+  double largestCosine = -1.0; // of the smallest angle of any triangle
   std::size_t below30 = 0;
-  std::vector<std::array<double, 3>> normals;
-  normals.reserve(mesh.triangles.size());
-  for (const Triangle& t : mesh.triangles)
+  for (std::size_t f = 0; f < nTriangles; ++f)
   {
-    const Point3& a = mesh.points[t[0]];
-    const Point3& b = mesh.points[t[1]];
-    const Point3& c = mesh.points[t[2]];
-    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
-    const double wx = c.x - a.x, wy = c.y - a.y, wz = c.z - a.z;
+    const Triangle& t = mesh.triangles[f];
+    const Point3* p[3] = { &mesh.points[t[0]], &mesh.points[t[1]], &mesh.points[t[2]] };
+    const double ux = p[1]->x - p[0]->x, uy = p[1]->y - p[0]->y, uz = p[1]->z - p[0]->z;
+    const double wx = p[2]->x - p[0]->x, wy = p[2]->y - p[0]->y, wz = p[2]->z - p[0]->z;
     const double cx = uy * wz - uz * wy, cy = uz * wx - ux * wz, cz = ux * wy - uy * wx;
     const double twiceArea = std::sqrt(cx * cx + cy * cy + cz * cz);
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || twiceArea == 0.0)
       ++v.degenerateTriangles;
-    normals.push_back(twiceArea > 0.0 ? std::array<double, 3>{ cx / twiceArea, cy / twiceArea, cz / twiceArea }
-                                      : std::array<double, 3>{ 0.0, 0.0, 0.0 });
+    normals[f] = twiceArea > 0.0 ? std::array<double, 3>{ cx / twiceArea, cy / twiceArea, cz / twiceArea }
+                                 : std::array<double, 3>{ 0.0, 0.0, 0.0 };
     v.area += 0.5 * twiceArea;
-    const double smallest = std::min({ angleAt(a, b, c), angleAt(b, c, a), angleAt(c, a, b) });
-    minAngle = std::min(minAngle, smallest);
-    if (smallest < M_PI / 6.0)
-      ++below30;
+    double cosine = 1.0; // no area: an angle of 0
+    if (twiceArea > 0.0)
+    {
+      // The corner opposite the shortest edge.
+      const double length2[3] = { squaredDistance(*p[1], *p[2]), squaredDistance(*p[2], *p[0]),
+                                  squaredDistance(*p[0], *p[1]) };
+      const int c = length2[0] <= length2[1] ? (length2[0] <= length2[2] ? 0 : 2) : (length2[1] <= length2[2] ? 1 : 2);
+      const Point3& o = *p[c];
+      const Point3& q = *p[(c + 1) % 3];
+      const Point3& r = *p[(c + 2) % 3];
+      const double ax = q.x - o.x, ay = q.y - o.y, az = q.z - o.z, bx = r.x - o.x, by = r.y - o.y, bz = r.z - o.z;
+      cosine = (ax * bx + ay * by + az * bz) / std::sqrt(length2[(c + 2) % 3] * length2[(c + 1) % 3]);
+    }
+    largestCosine = std::max(largestCosine, cosine);
+    below30 += cosine > cos30;
+  }
+
+  // Edges, sorted: directed uses tell orientation, undirected ones boundary and non-manifold edges
+  // (and each undirected edge's first triangle, whose normal a later one is compared with: folds).
+  std::vector<std::uint64_t> directed;
+  directed.reserve(3 * nTriangles);
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> undirected; // key, triangle
+  undirected.reserve(3 * nTriangles);
+  std::vector<char> used(nPoints, 0);
+  DisjointSets pieces(nPoints);
+  for (std::size_t f = 0; f < nTriangles; ++f)
+  {
+    const Triangle& t = mesh.triangles[f];
     for (int i = 0; i < 3; ++i)
     {
       const std::int32_t p = t[i], q = t[(i + 1) % 3];
-      ++directed[directedKey(p, q)];
-      EdgeUse& use = undirected[directedKey(std::min(p, q), std::max(p, q))];
-      if (++use.count == 1)
-        use.firstTriangle = normals.size() - 1;
-      else
-      { // unit normals nearly opposite: the triangles lie on top of each other
-        const std::array<double, 3>& m = normals[use.firstTriangle];
-        const std::array<double, 3>& n = normals.back();
-        if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -foldCosine)
-          ++v.foldedEdges;
-      }
+      directed.push_back(directedKey(p, q));
+      undirected.emplace_back(directedKey(std::min(p, q), std::max(p, q)), static_cast<std::uint32_t>(f));
       used[p] = 1;
       pieces.unite(p, q);
     }
   }
-  for (const auto& [key, count] : directed)
-    if (count > 1)
-      v.inconsistentEdges += count - 1;
-  for (const auto& [key, use] : undirected)
+  std::sort(directed.begin(), directed.end());
+  for (std::size_t i = 0; i < directed.size();)
   {
-    if (use.count == 1)
+    std::size_t j = i + 1;
+    while (j < directed.size() && directed[j] == directed[i])
+      ++j;
+    v.inconsistentEdges += j - i - 1;
+    i = j;
+  }
+  std::sort(undirected.begin(), undirected.end());
+  std::size_t edges = 0;
+  for (std::size_t i = 0; i < undirected.size();)
+  {
+    std::size_t j = i + 1;
+    const std::array<double, 3>& m = normals[undirected[i].second];
+    for (; j < undirected.size() && undirected[j].first == undirected[i].first; ++j)
+    { // unit normals nearly opposite: the triangles lie on top of each other
+      const std::array<double, 3>& n = normals[undirected[j].second];
+      if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -foldCosine)
+        ++v.foldedEdges;
+    }
+    ++edges;
+    if (j - i == 1)
       ++v.boundaryEdges;
-    else if (use.count > 2)
+    else if (j - i > 2)
       ++v.nonManifoldEdges;
+    i = j;
   }
 
-  // A vertex is manifold when its triangles form one fan: the edges opposite it form one connected link.
-  std::vector<std::vector<std::pair<std::int32_t, std::int32_t>>> links(nPoints);
+  // A vertex is manifold when its triangles form one fan: the edges opposite it form one connected
+  // link. Links gathered per vertex (counting sort), each checked with a small union-find.
+  std::vector<std::size_t> start(nPoints + 1, 0);
+  for (const Triangle& t : mesh.triangles)
+    for (std::int32_t i : t)
+      ++start[static_cast<std::size_t>(i) + 1];
+  for (std::size_t p = 0; p < nPoints; ++p)
+    start[p + 1] += start[p];
+  std::vector<std::pair<std::int32_t, std::int32_t>> links(start[nPoints]);
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
   for (const Triangle& t : mesh.triangles)
     for (int i = 0; i < 3; ++i)
-      links[t[i]].emplace_back(t[(i + 1) % 3], t[(i + 2) % 3]);
+      links[fill[static_cast<std::size_t>(t[i])]++] = { t[(i + 1) % 3], t[(i + 2) % 3] };
+  std::vector<std::int32_t> local;
+  std::vector<std::size_t> parent;
+  auto root = [&](std::size_t x)
+  {
+    while (parent[x] != x)
+      x = parent[x] = parent[parent[x]];
+    return x;
+  };
   for (std::size_t p = 0; p < nPoints; ++p)
   {
-    if (links[p].empty())
+    if (start[p] == start[p + 1])
       continue;
-    std::map<std::int32_t, std::size_t> local;
-    for (const auto& [a, b] : links[p])
+    local.clear();
+    auto index = [&](std::int32_t vertex)
     {
-      local.emplace(a, local.size());
-      local.emplace(b, local.size());
+      const auto at = std::find(local.begin(), local.end(), vertex);
+      if (at != local.end())
+        return static_cast<std::size_t>(at - local.begin());
+      local.push_back(vertex);
+      return local.size() - 1;
+    };
+    parent.clear();
+    for (std::size_t e = start[p]; e < start[p + 1]; ++e)
+    {
+      const std::size_t a = index(links[e].first), b = index(links[e].second);
+      while (parent.size() < local.size())
+        parent.push_back(parent.size());
+      const std::size_t ra = root(a), rb = root(b);
+      if (ra != rb)
+        parent[std::max(ra, rb)] = std::min(ra, rb);
     }
-    DisjointSets fan(local.size());
-    for (const auto& [a, b] : links[p])
-      fan.unite(local[a], local[b]);
     std::size_t fans = 0;
     for (std::size_t i = 0; i < local.size(); ++i)
-      fans += fan.find(i) == i;
+      fans += root(i) == i;
     if (fans > 1)
       ++v.nonManifoldVertices;
   }
@@ -196,10 +243,9 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
   v.vertices = usedCount;
   v.volume = signedVolume(mesh);
   v.eulerCharacteristic =
-    static_cast<long>(usedCount) - static_cast<long>(undirected.size()) + static_cast<long>(mesh.triangles.size());
-  v.minAngleDegrees = mesh.triangles.empty() ? 0.0 : minAngle * 180.0 / M_PI;
-  v.fractionAnglesBelow30 = mesh.triangles.empty() ? 0.0 : static_cast<double>(below30) / mesh.triangles.size();
-
+    static_cast<long>(usedCount) - static_cast<long>(edges) + static_cast<long>(nTriangles);
+  v.minAngleDegrees = nTriangles == 0 ? 0.0 : std::acos(std::clamp(largestCosine, -1.0, 1.0)) * 180.0 / M_PI;
+  v.fractionAnglesBelow30 = nTriangles == 0 ? 0.0 : static_cast<double>(below30) / static_cast<double>(nTriangles);
   return v;
 }
 

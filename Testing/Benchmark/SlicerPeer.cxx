@@ -3,6 +3,7 @@
 // segment), writes the merged surface. Prints "triangles <n> meshing <s>", meshing being the time
 // between the read volume and the merged surface (reading and writing excluded).
 // Usage: SlicerPeer <label map> <output.vtp>
+#include "ContourExtraction.h"
 #include "LabelIndex.h"
 #include "MeshWriter.h"
 #include "SlicerPipeline.h"

@@ -1,6 +1,7 @@
 // Whole runs of the executable on small generated volumes: label maps and a grayscale volume in,
 // meshes, summary, return parameters and progress out.
 #include "CLITestSupport.h"
+#include "ExitCodes.h"
 #include "ModuleDescription.h"
 #include "ModuleXml.h"
 
@@ -19,7 +20,6 @@ namespace slicemesh::testing
 namespace
 {
 
-constexpr int emptySegmentation = 4;
 
 /** Two boxes in a 16 x 16 x 10 label map with 1 x 1 x 2 mm voxels:
  *  label 1: i, j in [3, 9), k in [2, 6)  -> 6 x 6 x 8 mm = 288 mm^3 of voxels;
@@ -67,7 +67,7 @@ TEST(EndToEnd, LabelMapGivesAClosedMeshSummaryAndReturnParameters)
   const fs::path params = folder / "box.params";
   const RunResult r = runSliceMesh("--label 1 --returnparameterfile " + quoted(params.string()) + " " +
                                    quoted(twoBoxesLabelMap(folder).string()) + " " + quoted(output.string()));
-  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_EQ(r.exitCode, cli::Success) << r.err;
   EXPECT_EQ(r.err, "");
   EXPECT_GT(fs::file_size(output), 0u);
 
@@ -109,7 +109,7 @@ TEST(EndToEnd, ProgressCoversEveryStageMonotonicallyFromZeroToOne)
   const fs::path folder = freshFolder("e2e-progress");
   const RunResult r = runSliceMesh(quoted(twoBoxesLabelMap(folder).string()) + " " +
                                    quoted((folder / "boxes.vtp").string()));
-  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_EQ(r.exitCode, cli::Success) << r.err;
   const std::vector<std::string> stages = { "Reading",    "Segmentation", "Contours", "Correspondence",
                                               "Tiling",     "Validation",   "Finishing", "Writing" };
   EXPECT_EQ(stageNames(r.out, "filter-start"), stages);
@@ -136,7 +136,7 @@ TEST(EndToEnd, LabelSelectsOneStructure)
   const fs::path params = folder / "p.params";
   const RunResult r = runSliceMesh("-l 2 --returnparameterfile " + quoted(params.string()) + " " +
                                    quoted(twoBoxesLabelMap(folder).string()) + " " + quoted((folder / "b.stl").string()));
-  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_EQ(r.exitCode, cli::Success) << r.err;
   // expectedBoxVolume models the tiling; the default finish remeshes it and gives every piece its
   // tiled volume back (84.5 mm^3 against the model's 86.5).
   EXPECT_NEAR(std::stod(returnParameterMap(params).at("volume")), expectedBoxVolume(3, 4, 4, 2.0), 0.05 * 96.0);
@@ -149,7 +149,7 @@ TEST(EndToEnd, AbsentLabelIsAnEmptySegmentationAndLeavesTheOutputAlone)
   std::ofstream(output) << "precious";
   const RunResult r = runSliceMesh("--label 9 " + quoted(twoBoxesLabelMap(folder).string()) + " " +
                                    quoted(output.string()));
-  EXPECT_EQ(r.exitCode, emptySegmentation) << r.err;
+  EXPECT_EQ(r.exitCode, cli::EmptySegmentation) << r.err;
   EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
   EXPECT_EQ(fileText(output), "precious");
 }
@@ -167,7 +167,7 @@ TEST(EndToEnd, GrayscaleWithOtsuFindsTheBrightObject)
   const fs::path params = folder / "p.params";
   const RunResult r = runSliceMesh("--inputKind Grayscale --returnparameterfile " + quoted(params.string()) + " " +
                                    quoted(input.string()) + " " + quoted((folder / "box.ply").string()));
-  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_EQ(r.exitCode, cli::Success) << r.err;
   EXPECT_NEAR(std::stod(returnParameterMap(params).at("volume")), expectedBoxVolume(6, 6, 4, 2.0), 0.05 * 288.0);
 }
 
@@ -194,7 +194,7 @@ TEST(EndToEnd, RASOutputNegatesXAndYAndSaysSo)
   const fs::path input = twoBoxesLabelMap(folder);
   const fs::path lps = folder / "lps.obj";
   const fs::path ras = folder / "ras.obj";
-  ASSERT_EQ(runSliceMesh("-l 1 " + quoted(input.string()) + " " + quoted(lps.string())).exitCode, 0);
+  ASSERT_EQ(runSliceMesh("-l 1 " + quoted(input.string()) + " " + quoted(lps.string())).exitCode, cli::Success);
   ASSERT_EQ(runSliceMesh("-l 1 --coordinateSystem RAS " + quoted(input.string()) + " " + quoted(ras.string())).exitCode,
             0);
   EXPECT_NE(fileText(lps).find("SPACE=LPS"), std::string::npos);
@@ -215,8 +215,8 @@ TEST(EndToEnd, SameInputGivesTheSameFileBitForBit)
 {
   const fs::path folder = freshFolder("e2e-deterministic");
   const fs::path input = twoBoxesLabelMap(folder);
-  ASSERT_EQ(runSliceMesh(quoted(input.string()) + " " + quoted((folder / "a.obj").string())).exitCode, 0);
-  ASSERT_EQ(runSliceMesh(quoted(input.string()) + " " + quoted((folder / "b.obj").string())).exitCode, 0);
+  ASSERT_EQ(runSliceMesh(quoted(input.string()) + " " + quoted((folder / "a.obj").string())).exitCode, cli::Success);
+  ASSERT_EQ(runSliceMesh(quoted(input.string()) + " " + quoted((folder / "b.obj").string())).exitCode, cli::Success);
   EXPECT_EQ(fileText(folder / "a.obj"), fileText(folder / "b.obj"));
 }
 
@@ -259,7 +259,7 @@ TEST(EndToEnd, MultiLabelDropsComponentsUnderTheMinimumVolume)
   // Without the option every speck is meshed: 2 + 3 + 1 components, label 3 has a file.
   const RunResult all = runSliceMesh("--outputDirectory " + quoted((folder / "all").string()) + " " +
                                      quoted(input.string()) + " " + quoted((folder / "all.vtp").string()));
-  ASSERT_EQ(all.exitCode, 0) << all.err;
+  ASSERT_EQ(all.exitCode, cli::Success) << all.err;
   EXPECT_NE(linesOf(all.out).back().find("6 components"), std::string::npos) << linesOf(all.out).back();
   EXPECT_TRUE(fs::exists(folder / "all" / "003_Label_3.vtp"));
 
@@ -270,7 +270,7 @@ TEST(EndToEnd, MultiLabelDropsComponentsUnderTheMinimumVolume)
     runSliceMesh("--minimumComponentVolume 10 --report " + quoted(report.string()) + " --outputDirectory " +
                  quoted((folder / "kept").string()) + " " + quoted(input.string()) + " " +
                  quoted((folder / "kept.vtp").string()));
-  ASSERT_EQ(kept.exitCode, 0) << kept.err;
+  ASSERT_EQ(kept.exitCode, cli::Success) << kept.err;
   EXPECT_NE(linesOf(kept.out).back().find("2 components"), std::string::npos) << linesOf(kept.out).back();
   EXPECT_NE(kept.err.find("label 3 (Label_3) dropped"), std::string::npos) << kept.err;
   EXPECT_TRUE(fs::exists(folder / "kept" / "001_Label_1.vtp"));
@@ -288,7 +288,7 @@ TEST(EndToEnd, MultiLabelDropsComponentsUnderTheMinimumVolume)
   const RunResult none = runSliceMesh("--minimumComponentVolume 1000 --outputDirectory " +
                                       quoted((folder / "none").string()) + " " + quoted(input.string()) + " " +
                                       quoted(output.string()));
-  EXPECT_EQ(none.exitCode, emptySegmentation) << none.err;
+  EXPECT_EQ(none.exitCode, cli::EmptySegmentation) << none.err;
   EXPECT_FALSE(fs::exists(output));
   EXPECT_TRUE(fs::is_empty(folder / "none"));
 }
@@ -319,7 +319,7 @@ TEST(EndToEnd, MultiLabelSummaryAndReportCarryRealQuality)
                  });
   const RunResult r = runSliceMesh("--splitLabels --report " + quoted(report.string()) + " " + quoted(input.string()) +
                                    " " + quoted((folder / "labels.vtp").string()));
-  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_EQ(r.exitCode, cli::Success) << r.err;
   const std::string summary = linesOf(r.out).back();
   // Two solids: genus 0 each, angles of real triangles, 1 mm points on 2 mm slices.
   EXPECT_NE(summary.find("2 components"), std::string::npos) << summary;
@@ -385,7 +385,7 @@ TEST(EndToEnd, RefineWeakOverlapAndSectionOverlapReachTheSections)
     const fs::path params = folder / (name + ".params");
     const RunResult r = runSliceMesh(options + " --surfaceFinish Tiled --returnparameterfile " + quoted(params.string()) + " " +
                                      quoted(input.string()) + " " + quoted((folder / (name + ".vtp")).string()));
-    EXPECT_EQ(r.exitCode, 0) << name << ": " << r.err;
+    EXPECT_EQ(r.exitCode, cli::Success) << name << ": " << r.err;
     EXPECT_EQ(r.err, "") << name;
     std::map<std::string, std::string> values = returnParameterMap(params);
     EXPECT_EQ(values["closed"], "true") << name;
@@ -418,7 +418,7 @@ TEST(EndToEnd, MultiLabelAppliesTheCorrespondenceOptions)
     const fs::path params = folder / (name + ".params");
     const RunResult r = runSliceMesh("--splitLabels --surfaceFinish Tiled " + options + " --returnparameterfile " + quoted(params.string()) +
                                      " " + quoted(input.string()) + " " + quoted((folder / (name + ".vtp")).string()));
-    EXPECT_EQ(r.exitCode, 0) << name << ": " << r.err;
+    EXPECT_EQ(r.exitCode, cli::Success) << name << ": " << r.err;
     std::map<std::string, std::string> values = returnParameterMap(params);
     EXPECT_EQ(values["closed"], "true") << name;
     return std::stod(values["triangles"]);
@@ -431,7 +431,7 @@ TEST(EndToEnd, SectionOverlapWithoutAnyUseWarns)
   const fs::path folder = freshFolder("e2e-section-overlap-unused");
   const RunResult r = runSliceMesh("--label 1 --sectionOverlap 0.5 " + quoted(twoBoxesLabelMap(folder).string()) + " " +
                                    quoted((folder / "box.vtp").string()));
-  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.exitCode, cli::Success) << r.err;
   EXPECT_EQ(linesOf(r.err), std::vector<std::string>{ "SliceMesh: warning: --sectionOverlap is used only with "
                                                       "--bridgeNonOverlapping or --refineWeakOverlap; it has no effect" });
 }
@@ -446,7 +446,7 @@ TEST(EndToEnd, MultiLabelSnapshotShowsEveryLabel)
   const RunResult r =
     runCommand("xvfb-run -a " + quoted(SLICEMESH_EXECUTABLE) + " --splitLabels --snapshot " + quoted(png.string()) +
                " " + quoted(twoBoxesLabelMap(folder).string()) + " " + quoted((folder / "boxes.vtp").string()));
-  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_EQ(r.exitCode, cli::Success) << r.err;
   ASSERT_TRUE(fs::exists(png));
   // A PNG of the default size: the signature, then the IHDR chunk's big-endian width and height.
   const std::string bytes = fileText(png);
@@ -467,7 +467,7 @@ TEST(EndToEnd, MultiLabelSnapshotShowsEveryLabel)
   const RunResult noDisplay = runCommand("env -u DISPLAY " + quoted(SLICEMESH_EXECUTABLE) + " --splitLabels --snapshot " +
                                          quoted((folder / "no.png").string()) + " " +
                                          quoted((folder / "two-boxes.mha").string()) + " " + quoted(output.string()));
-  EXPECT_EQ(noDisplay.exitCode, 6) << noDisplay.err;
+  EXPECT_EQ(noDisplay.exitCode, cli::WriteFailed) << noDisplay.err;
   EXPECT_FALSE(fs::exists(output));
   EXPECT_FALSE(fs::exists(folder / "no.png"));
 }
@@ -490,7 +490,7 @@ TEST(EndToEnd, SnapshotWithoutDisplayFailsBeforeAnyWorkOnBothPaths)
     "SliceMesh: error: cannot render snapshot '" + png.string() + "': no X display (DISPLAY is not set); run under xvfb-run";
   for (const RunResult* r : { &single, &multi })
   {
-    EXPECT_EQ(r->exitCode, 6) << r->err;
+    EXPECT_EQ(r->exitCode, cli::WriteFailed) << r->err;
     EXPECT_EQ(linesOf(r->err), std::vector<std::string>{ expected });
     EXPECT_TRUE(stageNames(r->out, "filter-start").empty()) << r->out;
   }

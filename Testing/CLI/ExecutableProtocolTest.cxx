@@ -1,6 +1,7 @@
 // The executable's side of Slicer's protocol and its command-line behaviour, for everything that
 // happens before (or without) a successful reconstruction.
 #include "CLITestSupport.h"
+#include "ExitCodes.h"
 #include "ModuleDescription.h"
 #include "ModuleXml.h"
 
@@ -24,14 +25,11 @@ const cli::ModuleDescription& module()
 }
 
 /** Exit codes of ExitCodes.h, as the README documents them. */
-constexpr int badArguments = 2;
-constexpr int unreadableInput = 3;
-constexpr int writeFailed = 6;
 
 TEST(Executable, HelpMentionsEveryLongflagAndEveryIndexedArgument)
 {
   const RunResult r = runSliceMesh("--help");
-  EXPECT_EQ(r.exitCode, 0);
+  EXPECT_EQ(r.exitCode, cli::Success);
   for (const cli::ModuleParameter* p : module().parameters())
   {
     if (!p->longflag.empty())
@@ -94,7 +92,7 @@ TEST(Executable, AcceptsEveryParameterWithItsDefault)
     arguments += " --" + p->longflag + " " + quoted(p->defaultValue);
     if (!p->flag.empty())
     {
-      EXPECT_EQ(runSliceMesh("-" + p->flag + " " + quoted(p->defaultValue) + " --help").exitCode, 0) << p->flag;
+      EXPECT_EQ(runSliceMesh("-" + p->flag + " " + quoted(p->defaultValue) + " --help").exitCode, cli::Success) << p->flag;
     }
   }
   const fs::path output = folder / "out.vtp";
@@ -102,7 +100,7 @@ TEST(Executable, AcceptsEveryParameterWithItsDefault)
                                    quoted(output.string()));
   // Accepted: the run gets as far as reading the (missing) input, and the defaults Slicer passes
   // cause no warning: stderr holds only the error.
-  EXPECT_EQ(r.exitCode, unreadableInput) << r.err;
+  EXPECT_EQ(r.exitCode, cli::UnreadableInput) << r.err;
   EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
   // And the defaults the executable uses are the XML's.
   for (const cli::ModuleParameter* p : module().parameters())
@@ -119,7 +117,7 @@ TEST(Executable, AcceptsEveryParameterWithItsDefault)
 TEST(Executable, UnknownFlagIsAOneLineErrorWithItsOwnExitCode)
 {
   const RunResult r = runSliceMesh("--no-such-option in.nrrd out.vtp");
-  EXPECT_EQ(r.exitCode, badArguments);
+  EXPECT_EQ(r.exitCode, cli::BadArguments);
   EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
   EXPECT_NE(r.err.find("--no-such-option"), std::string::npos);
   EXPECT_EQ(r.out, "");
@@ -132,7 +130,7 @@ TEST(Executable, EnumerationValueOutsideItsElementsIsAnError)
     if (p->isEnumeration())
     {
       const RunResult r = runSliceMesh("--" + p->longflag + " NotAnElement in.nrrd out.vtp");
-      EXPECT_EQ(r.exitCode, badArguments) << p->name;
+      EXPECT_EQ(r.exitCode, cli::BadArguments) << p->name;
       EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
     }
   }
@@ -141,7 +139,7 @@ TEST(Executable, EnumerationValueOutsideItsElementsIsAnError)
 TEST(Executable, ValueOutsideItsConstraintsIsAnError)
 {
   const RunResult r = runSliceMesh("--wallRowHeight -1 in.nrrd out.vtp");
-  EXPECT_EQ(r.exitCode, badArguments);
+  EXPECT_EQ(r.exitCode, cli::BadArguments);
   EXPECT_NE(r.err.find("wallRowHeight"), std::string::npos);
 }
 
@@ -151,7 +149,7 @@ TEST(Executable, AcceptsAndIgnoresProcessInformationAddress)
   const RunResult r = runSliceMesh("--processinformationaddress 0x7ffd0000 " +
                                    quoted((folder / "missing.nrrd").string()) + " " +
                                    quoted((folder / "out.vtp").string()));
-  EXPECT_EQ(r.exitCode, unreadableInput) << r.err;
+  EXPECT_EQ(r.exitCode, cli::UnreadableInput) << r.err;
 }
 
 TEST(Executable, MissingInputFailsWithoutCreatingOutputOrReturnParameters)
@@ -161,7 +159,7 @@ TEST(Executable, MissingInputFailsWithoutCreatingOutputOrReturnParameters)
   const fs::path params = folder / "out.params";
   const RunResult r = runSliceMesh("--returnparameterfile " + quoted(params.string()) + " " +
                                    quoted((folder / "missing.nii.gz").string()) + " " + quoted(output.string()));
-  EXPECT_EQ(r.exitCode, unreadableInput);
+  EXPECT_EQ(r.exitCode, cli::UnreadableInput);
   EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
   EXPECT_NE(r.err.find("missing.nii.gz"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(output));
@@ -175,10 +173,10 @@ TEST(Executable, ExistingOutputIsUntouchedOnFailure)
   const fs::path output = folder / "out.vtp";
   std::ofstream(output) << "precious";
   EXPECT_EQ(runSliceMesh(quoted((folder / "missing.nrrd").string()) + " " + quoted(output.string())).exitCode,
-            unreadableInput);
+            cli::UnreadableInput);
   EXPECT_EQ(runSliceMesh("--label x " + quoted((folder / "missing.nrrd").string()) + " " + quoted(output.string()))
               .exitCode,
-            badArguments);
+            cli::BadArguments);
   EXPECT_EQ(fileText(output), "precious");
 }
 
@@ -187,7 +185,7 @@ TEST(Executable, MissingOutputFolderIsAWriteFailureBeforeAnyWork)
   const fs::path folder = freshFolder("no-output-folder");
   const RunResult r = runSliceMesh(quoted((folder / "missing.nrrd").string()) + " " +
                                    quoted((folder / "nowhere" / "out.vtp").string()));
-  EXPECT_EQ(r.exitCode, writeFailed);
+  EXPECT_EQ(r.exitCode, cli::WriteFailed);
   EXPECT_NE(r.err.find("nowhere"), std::string::npos) << r.err;
 }
 
@@ -208,7 +206,7 @@ TEST(Executable, ProgressOfAFailedRunIsMonotonicAndItsStageIsClosed)
 TEST(Executable, VersionMatchesTheXml)
 {
   const RunResult r = runSliceMesh("--version");
-  EXPECT_EQ(r.exitCode, 0);
+  EXPECT_EQ(r.exitCode, cli::Success);
   EXPECT_EQ(r.out, "SliceMesh " + module().version + "\n");
 }
 

@@ -2,6 +2,7 @@
 // following the Slicer Execution Model rules (SLICER_CLI.md section 1), checked with xmllint's
 // XPath so the check does not rely on the module's own parser.
 #include "CLITestSupport.h"
+#include "ExitCodes.h"
 #include "ModuleDescription.h"
 #include "ModuleXml.h"
 
@@ -21,7 +22,7 @@ std::string xpath(const std::string& expression)
 {
   const RunResult r =
     runCommand(quoted(XMLLINT_EXECUTABLE) + " --xpath " + quoted(expression) + " " + quoted(SLICEMESH_XML_SOURCE));
-  EXPECT_EQ(r.exitCode, 0) << expression << ": " << r.err;
+  EXPECT_EQ(r.exitCode, cli::Success) << expression << ": " << r.err;
   std::string value = r.out;
   while (!value.empty() && value.back() == '\n')
   {
@@ -33,27 +34,27 @@ std::string xpath(const std::string& expression)
 TEST(ModuleXml, SourceIsWellFormed)
 {
   const RunResult r = runCommand(quoted(XMLLINT_EXECUTABLE) + " --noout " + quoted(SLICEMESH_XML_SOURCE));
-  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.exitCode, cli::Success) << r.err;
   EXPECT_EQ(r.err, "");
 }
 
 TEST(ModuleXml, XmlFlagPrintsExactlyTheSourceAndIsWellFormed)
 {
   const RunResult r = runSliceMesh("--xml");
-  EXPECT_EQ(r.exitCode, 0);
+  EXPECT_EQ(r.exitCode, cli::Success);
   EXPECT_EQ(r.out.rfind("<?xml ", 0), 0u) << "Slicer rejects --xml output that does not start with <?xml";
   EXPECT_EQ(r.out, fileText(SLICEMESH_XML_SOURCE));
   EXPECT_EQ(r.err, "");
 
   const fs::path printed = freshFolder("xml") / "printed.xml";
   std::ofstream(printed) << r.out;
-  EXPECT_EQ(runCommand(quoted(XMLLINT_EXECUTABLE) + " --noout " + quoted(printed.string())).exitCode, 0);
+  EXPECT_EQ(runCommand(quoted(XMLLINT_EXECUTABLE) + " --noout " + quoted(printed.string())).exitCode, cli::Success);
 }
 
 TEST(ModuleXml, XmlFlagComesBeforeAnyOtherParsing)
 {
   const RunResult r = runSliceMesh("--xml --no-such-option");
-  EXPECT_EQ(r.exitCode, 0);
+  EXPECT_EQ(r.exitCode, cli::Success);
   EXPECT_EQ(r.out, fileText(SLICEMESH_XML_SOURCE));
 }
 

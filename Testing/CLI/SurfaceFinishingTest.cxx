@@ -2,6 +2,7 @@
 // --surfaceSmoothingIterations, --surfaceSmoothingPassBand): what each finish writes, on a sphere
 // whose true surface is known, and how bad values are refused.
 #include "CLITestSupport.h"
+#include "ExitCodes.h"
 #include "Measures/MeshValidation.h"
 #include "Finishing/SurfaceRemeshing.h"
 
@@ -24,7 +25,6 @@ namespace slicemesh::testing
 namespace
 {
 
-constexpr int badArguments = 2;
 
 /** A ball of radius 7 mm centred at (12, 12, 12) mm in a 24 x 24 x 12 label map of 1 x 1 x 2 mm
  *  voxels (value 1 where the voxel centre is inside). The output is in LPS millimetres of this
@@ -97,11 +97,11 @@ TriangleMesh meshSphere(const fs::path& folder, const std::string& name, const s
   const fs::path output = folder / (name + ".vtp");
   const RunResult r =
     runSliceMesh(options + " " + quoted(sphereLabelMap(folder).string()) + " " + quoted(output.string()));
-  EXPECT_EQ(r.exitCode, 0) << name << ": " << r.err;
+  EXPECT_EQ(r.exitCode, cli::Success) << name << ": " << r.err;
   EXPECT_EQ(r.err, "") << name << ": no warning (no fallback)";
   if (run)
     *run = r;
-  return r.exitCode == 0 ? readVtp(output) : TriangleMesh{};
+  return r.exitCode == cli::Success ? readVtp(output) : TriangleMesh{};
 }
 
 void expectValidClosedSphere(const TriangleMesh& mesh, const std::string& name)
@@ -233,7 +233,7 @@ TEST(FinishingOptions, BadValuesAreUsageErrorsThatWriteNothing)
   {
     const RunResult r = runSliceMesh(options + " --report " + quoted(report.string()) + " " + quoted(input.string()) +
                                      " " + quoted(output.string()));
-    EXPECT_EQ(r.exitCode, badArguments) << options << ": " << r.err;
+    EXPECT_EQ(r.exitCode, cli::BadArguments) << options << ": " << r.err;
     ASSERT_EQ(linesOf(r.err).size(), 1u) << options << ": " << r.err;
     EXPECT_EQ(r.err.rfind("SliceMesh: error: --", 0), 0u) << r.err;
     EXPECT_NE(r.err.find(options.substr(0, options.find(' '))), std::string::npos) << r.err;
@@ -263,7 +263,7 @@ TEST(FinishingOptions, EveryLabelIsFinishedAndItsReportEntrySaysHow)
   const RunResult r = runSliceMesh("--outputDirectory " + quoted((folder / "labels").string()) + " --report " +
                                    quoted(report.string()) + " " + quoted(input.string()) + " " +
                                    quoted((folder / "labels.vtp").string()));
-  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_EQ(r.exitCode, cli::Success) << r.err;
   EXPECT_EQ(r.err, "");
   const std::string json = fileText(report);
   // The whole run's block, then one per label: each Remeshed at the label mask's (the volume's) spacing.
@@ -314,7 +314,7 @@ TEST(AutomaticOptions, TheReportGivesEachAutomaticValueAsResolvedForTheGrid)
     const fs::path report = folder / (preparation + ".json");
     const RunResult r = runSliceMesh("--contourPreparation " + preparation + " --report " + quoted(report.string()) +
                                      " " + quoted(input.string()) + " " + quoted((folder / "out.vtp").string()));
-    ASSERT_EQ(r.exitCode, 0) << r.err;
+    ASSERT_EQ(r.exitCode, cli::Success) << r.err;
     const std::string json = fileText(report);
     EXPECT_NEAR(jsonValue(json, "targetEdgeLengthMm"), 1.1 * std::sqrt(1.5), 1e-9) << json;
     EXPECT_NEAR(jsonValue(json, "smoothingMaxDisplacementMm"), 0.3, 1e-8) << json;

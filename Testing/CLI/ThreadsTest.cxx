@@ -1,6 +1,7 @@
 // --threads: the same input gives the same files, byte for byte, on 1, 2 and 8 threads: one mesh of
 // a mask with several pieces, and one mesh per label.
 #include "CLITestSupport.h"
+#include "ExitCodes.h"
 
 #include <gtest/gtest.h>
 
@@ -52,7 +53,7 @@ TEST(Threads, TheFilesAreTheSameOnOneTwoAndEightThreads)
       const std::string labels = mode.empty() ? "" : "--outputDirectory " + quoted((out / "labels").string()) + " ";
       const RunResult r = runSliceMesh(mode + labels + "--threads " + std::to_string(threads) + " " +
                                        quoted(input.string()) + " " + quoted((out / "mesh.vtp").string()));
-      ASSERT_EQ(r.exitCode, 0) << r.err;
+      ASSERT_EQ(r.exitCode, cli::Success) << r.err;
       const std::string mesh = fileText(out / "mesh.vtp");
       ASSERT_GT(mesh.size(), 1000u);
       std::vector<std::string> perLabel;

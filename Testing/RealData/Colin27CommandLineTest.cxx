@@ -3,6 +3,7 @@
 // gives thousands of thin, touching, holed pieces with flat caps: the run that used to die inside
 // CGAL's isotropic remeshing (a null halfedge in its tangential relaxation).
 #include "CLITestSupport.h"
+#include "ExitCodes.h"
 #include "RealDataSupport.h"
 
 #include <gtest/gtest.h>
@@ -23,7 +24,7 @@ TEST(Colin27CommandLine, ThresholdedAt100InRasWithFlatCapsWritesAValidMesh)
   const RunResult run = runSliceMesh("--inputKind Grayscale --thresholdMethod Manual --threshold 100 "
                                      "--coordinateSystem RAS --capPlacement AtSlice --returnparameterfile " +
                                      quoted(results.string()) + " " + quoted(t1) + " " + quoted(mesh.string()));
-  ASSERT_EQ(run.exitCode, 0) << run.err;
+  ASSERT_EQ(run.exitCode, cli::Success) << run.err;
   ASSERT_TRUE(std::filesystem::exists(mesh));
   bool closed = false;
   double triangles = 0.0;
@@ -47,7 +48,7 @@ TEST(Colin27CommandLine, AThresholdAboveTheImageNamesItsIntensityRange)
   const std::filesystem::path mesh = folder / "brain.vtk";
   const RunResult run = runSliceMesh("--inputKind Grayscale --thresholdMethod Manual --threshold 300 " + quoted(t1) +
                                      " " + quoted(mesh.string()));
-  EXPECT_EQ(run.exitCode, 4);
+  EXPECT_EQ(run.exitCode, cli::EmptySegmentation);
   EXPECT_EQ(linesOf(run.err).size(), 1u) << run.err;
   std::smatch range;
   ASSERT_TRUE(std::regex_search(run.err, range, std::regex("intensities run from (-?[0-9.e+-]+) to (-?[0-9.e+-]+)")))

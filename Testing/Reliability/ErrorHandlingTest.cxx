@@ -2,6 +2,7 @@
 // documented exit code (README, "Exit codes"), no output and no temporary file left behind, and an
 // existing output file left untouched.
 #include "CLITestSupport.h"
+#include "ExitCodes.h"
 
 #include <gtest/gtest.h>
 
@@ -21,10 +22,6 @@ namespace slicemesh::testing
 namespace
 {
 
-constexpr int badArguments = 2;
-constexpr int unreadableInput = 3;
-constexpr int emptySegmentation = 4;
-constexpr int writeFailed = 6;
 
 const std::string precious = "an earlier mesh, to be kept";
 
@@ -103,7 +100,7 @@ fs::path niftiWithSpacing(const fs::path& folder, const std::string& name, int a
   const fs::path path = folder / name;
   const RunResult r = runCommand("gzip -dc " + quoted(SLICEMESH_DATA_DIR "/sample-labelmap.nii.gz") + " > " +
                                  quoted(path.string()));
-  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.exitCode, cli::Success) << r.err;
   std::string bytes = readBytes(path);
   std::memcpy(&bytes[80 + 4 * axis], &spacing, sizeof spacing); // NIfTI-1: float pixdim[8] at byte 76
   writeText(path, bytes);
@@ -113,7 +110,7 @@ fs::path niftiWithSpacing(const fs::path& folder, const std::string& name, int a
 TEST(ErrorHandling, MissingInput)
 {
   const Folders f = foldersFor("missing");
-  expectFailure(f.outputs, (f.inputs / "nothing-here.nii.gz").string(), unreadableInput, "no such file");
+  expectFailure(f.outputs, (f.inputs / "nothing-here.nii.gz").string(), cli::UnreadableInput, "no such file");
 }
 
 TEST(ErrorHandling, NotAnImage)
@@ -121,9 +118,9 @@ TEST(ErrorHandling, NotAnImage)
   const Folders f = foldersFor("not-an-image");
   writeText(f.inputs / "notes.nii", "this is not an image\n");
   writeText(f.inputs / "notes.txt", "this is not an image\n");
-  expectFailure(f.outputs, (f.inputs / "notes.nii").string(), unreadableInput, "not an image file");
-  expectFailure(f.outputs, (f.inputs / "notes.txt").string(), unreadableInput, "not an image file");
-  expectFailure(f.outputs, f.inputs.string(), unreadableInput, "DICOM"); // a folder without a series
+  expectFailure(f.outputs, (f.inputs / "notes.nii").string(), cli::UnreadableInput, "not an image file");
+  expectFailure(f.outputs, (f.inputs / "notes.txt").string(), cli::UnreadableInput, "not an image file");
+  expectFailure(f.outputs, f.inputs.string(), cli::UnreadableInput, "DICOM"); // a folder without a series
 }
 
 TEST(ErrorHandling, TruncatedOrCorruptFiles)
@@ -135,18 +132,18 @@ TEST(ErrorHandling, TruncatedOrCorruptFiles)
   std::string flipped = sample;
   flipped[flipped.size() / 2] = static_cast<char>(flipped[flipped.size() / 2] ^ 0x5a);
   writeText(f.inputs / "flipped.nii.gz", flipped);
-  expectFailure(f.outputs, (f.inputs / "half.nii.gz").string(), unreadableInput, "truncated");
-  expectFailure(f.outputs, (f.inputs / "head.nii.gz").string(), unreadableInput, "truncated");
-  expectFailure(f.outputs, (f.inputs / "flipped.nii.gz").string(), unreadableInput, "damaged");
+  expectFailure(f.outputs, (f.inputs / "half.nii.gz").string(), cli::UnreadableInput, "truncated");
+  expectFailure(f.outputs, (f.inputs / "head.nii.gz").string(), cli::UnreadableInput, "truncated");
+  expectFailure(f.outputs, (f.inputs / "flipped.nii.gz").string(), cli::UnreadableInput, "damaged");
 
   // Uncompressed files cut short: ITK alone reads them without complaint.
   const fs::path whole = niftiWithSpacing(f.inputs, "whole.nii", 0, 1.0f);
   const std::string nifti = readBytes(whole);
   fs::remove(whole);
   writeText(f.inputs / "cut.nii", nifti.substr(0, nifti.size() / 3));
-  expectFailure(f.outputs, (f.inputs / "cut.nii").string(), unreadableInput, "truncated");
+  expectFailure(f.outputs, (f.inputs / "cut.nii").string(), cli::UnreadableInput, "truncated");
   writeMetaImageWith(f.inputs / "cut.mha", "NDims = 3\nDimSize = 8 8 8\nElementSpacing = 1 1 1\n", 300);
-  expectFailure(f.outputs, (f.inputs / "cut.mha").string(), unreadableInput, "cannot read the voxels");
+  expectFailure(f.outputs, (f.inputs / "cut.mha").string(), cli::UnreadableInput, "cannot read the voxels");
 }
 
 TEST(ErrorHandling, TwoAndFourDimensionalImages)
@@ -154,8 +151,8 @@ TEST(ErrorHandling, TwoAndFourDimensionalImages)
   const Folders f = foldersFor("dimensions");
   writeMetaImageWith(f.inputs / "flat.mha", "NDims = 2\nDimSize = 8 8\nElementSpacing = 1 1\n", 64);
   writeMetaImageWith(f.inputs / "series.mha", "NDims = 4\nDimSize = 8 8 8 3\nElementSpacing = 1 1 1 1\n", 1536);
-  expectFailure(f.outputs, (f.inputs / "flat.mha").string(), unreadableInput, "a 2-D image; SliceMesh needs a 3-D volume");
-  expectFailure(f.outputs, (f.inputs / "series.mha").string(), unreadableInput, "a 4-D image; SliceMesh needs a 3-D volume");
+  expectFailure(f.outputs, (f.inputs / "flat.mha").string(), cli::UnreadableInput, "a 2-D image; SliceMesh needs a 3-D volume");
+  expectFailure(f.outputs, (f.inputs / "series.mha").string(), cli::UnreadableInput, "a 4-D image; SliceMesh needs a 3-D volume");
 }
 
 TEST(ErrorHandling, ZeroNegativeAndNonFiniteSpacing)
@@ -164,21 +161,21 @@ TEST(ErrorHandling, ZeroNegativeAndNonFiniteSpacing)
   writeMetaImageWith(f.inputs / "zero.mha", "NDims = 3\nDimSize = 8 8 8\nElementSpacing = 1 0 1\n", 512);
   writeMetaImageWith(f.inputs / "negative.mha", "NDims = 3\nDimSize = 8 8 8\nElementSpacing = 1 1 -2\n", 512);
   writeNrrd(f.inputs / "zero.nrrd", "(0,0,0) (0,1,0) (0,0,1)");
-  expectFailure(f.outputs, (f.inputs / "zero.mha").string(), unreadableInput, "spacing along axis 1 is 0");
-  expectFailure(f.outputs, (f.inputs / "negative.mha").string(), unreadableInput, "spacing along axis 2 is -2");
-  expectFailure(f.outputs, (f.inputs / "zero.nrrd").string(), unreadableInput, "spacing along axis 0 is 0");
+  expectFailure(f.outputs, (f.inputs / "zero.mha").string(), cli::UnreadableInput, "spacing along axis 1 is 0");
+  expectFailure(f.outputs, (f.inputs / "negative.mha").string(), cli::UnreadableInput, "spacing along axis 2 is -2");
+  expectFailure(f.outputs, (f.inputs / "zero.nrrd").string(), cli::UnreadableInput, "spacing along axis 0 is 0");
   // NIfTI carries the spacing as binary floats: NaN and infinity get through the format.
-  expectFailure(f.outputs, niftiWithSpacing(f.inputs, "nan.nii", 1, std::nanf("")).string(), unreadableInput,
+  expectFailure(f.outputs, niftiWithSpacing(f.inputs, "nan.nii", 1, std::nanf("")).string(), cli::UnreadableInput,
                 "spacing");
   expectFailure(f.outputs,
                 niftiWithSpacing(f.inputs, "inf.nii", 2, std::numeric_limits<float>::infinity()).string(),
-                unreadableInput, "spacing");
-  expectFailure(f.outputs, niftiWithSpacing(f.inputs, "zero.nii", 0, 0.0f).string(), unreadableInput, "spacing");
+                cli::UnreadableInput, "spacing");
+  expectFailure(f.outputs, niftiWithSpacing(f.inputs, "zero.nii", 0, 0.0f).string(), cli::UnreadableInput, "spacing");
   // Text formats that cannot even parse a non-finite spacing still fail on one line.
   writeNrrd(f.inputs / "nan.nrrd", "(nan,0,0) (0,1,0) (0,0,1)");
-  expectFailure(f.outputs, (f.inputs / "nan.nrrd").string(), unreadableInput, "nan.nrrd");
+  expectFailure(f.outputs, (f.inputs / "nan.nrrd").string(), cli::UnreadableInput, "nan.nrrd");
   writeMetaImageWith(f.inputs / "nan.mha", "NDims = 3\nDimSize = 8 8 8\nElementSpacing = 1 nan 1\n", 512);
-  expectFailure(f.outputs, (f.inputs / "nan.mha").string(), unreadableInput, "nan.mha");
+  expectFailure(f.outputs, (f.inputs / "nan.mha").string(), cli::UnreadableInput, "nan.mha");
 }
 
 TEST(ErrorHandling, SingularDirection)
@@ -187,8 +184,8 @@ TEST(ErrorHandling, SingularDirection)
   writeMetaImageWith(f.inputs / "singular.mha",
                      "NDims = 3\nDimSize = 8 8 8\nElementSpacing = 1 1 1\nTransformMatrix = 1 0 0 1 0 0 0 0 1\n", 512);
   writeNrrd(f.inputs / "singular.nrrd", "(1,0,0) (2,0,0) (0,0,1)");
-  expectFailure(f.outputs, (f.inputs / "singular.mha").string(), unreadableInput, "direction matrix is singular");
-  expectFailure(f.outputs, (f.inputs / "singular.nrrd").string(), unreadableInput, "direction matrix is singular");
+  expectFailure(f.outputs, (f.inputs / "singular.mha").string(), cli::UnreadableInput, "direction matrix is singular");
+  expectFailure(f.outputs, (f.inputs / "singular.nrrd").string(), cli::UnreadableInput, "direction matrix is singular");
 }
 
 TEST(ErrorHandling, EmptyMaskAndAbsentLabel)
@@ -197,8 +194,8 @@ TEST(ErrorHandling, EmptyMaskAndAbsentLabel)
   writeMetaImage(f.inputs / "zeros.mha", { 6, 6, 6 }, { 1, 1, 1 }, [](int, int, int) { return 0; });
   writeMetaImage(f.inputs / "labels.mha", { 8, 8, 8 }, { 1, 1, 1 },
                  [](int i, int, int k) -> unsigned char { return k > 1 && k < 6 ? (i < 4 ? 2 : 5) : 0; });
-  expectFailure(f.outputs, (f.inputs / "zeros.mha").string(), emptySegmentation, "nothing to mesh");
-  expectFailure(f.outputs, (f.inputs / "labels.mha").string(), emptySegmentation, "2", "--label 3");
+  expectFailure(f.outputs, (f.inputs / "zeros.mha").string(), cli::EmptySegmentation, "nothing to mesh");
+  expectFailure(f.outputs, (f.inputs / "labels.mha").string(), cli::EmptySegmentation, "2", "--label 3");
   const RunResult r = runSliceMesh("--label 3 " + quoted((f.inputs / "labels.mha").string()) + " " +
                                    quoted((f.outputs / "x.vtp").string()));
   EXPECT_NE(r.err.find("2"), std::string::npos) << r.err;
@@ -210,7 +207,7 @@ TEST(ErrorHandling, EverythingSmallerThanTheMinimumComponentVolume)
   const Folders f = foldersFor("specks");
   writeMetaImage(f.inputs / "specks.mha", { 12, 12, 12 }, { 1, 1, 1 },
                  [](int i, int j, int k) -> unsigned char { return i % 3 == 1 && j % 3 == 1 && k % 3 == 1; });
-  expectFailure(f.outputs, (f.inputs / "specks.mha").string(), emptySegmentation, "minimum component volume",
+  expectFailure(f.outputs, (f.inputs / "specks.mha").string(), cli::EmptySegmentation, "minimum component volume",
                 "--minimumComponentVolume 2");
   // With a minimum the specks go and the run succeeds on what is left.
   writeMetaImage(f.inputs / "block.mha", { 14, 14, 14 }, { 1, 1, 1 },
@@ -218,7 +215,7 @@ TEST(ErrorHandling, EverythingSmallerThanTheMinimumComponentVolume)
                  { return (i % 3 == 1 && j % 3 == 1 && k % 3 == 1) || (i >= 5 && i < 9 && j >= 5 && j < 9 && k >= 5 && k < 9); });
   const RunResult r = runSliceMesh("--minimumComponentVolume 2 " + quoted((f.inputs / "block.mha").string()) + " " +
                                    quoted((f.outputs / "block.vtp").string()));
-  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.exitCode, cli::Success) << r.err;
 }
 
 TEST(ErrorHandling, OutputFolderMissingOrNotWritable)
@@ -228,15 +225,25 @@ TEST(ErrorHandling, OutputFolderMissingOrNotWritable)
                  [](int i, int j, int k) -> unsigned char { return i > 1 && i < 4 && j > 1 && j < 4 && k > 1 && k < 4; });
   const std::string input = quoted((f.inputs / "box.mha").string());
   RunResult r = runSliceMesh(input + " " + quoted((f.outputs / "nowhere" / "out.vtp").string()));
-  EXPECT_EQ(r.exitCode, writeFailed);
+  EXPECT_EQ(r.exitCode, cli::WriteFailed);
   EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
   EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
 
   // /proc takes no new files, even from root.
   r = runSliceMesh(input + " /proc/slicemesh-out.vtp");
-  EXPECT_EQ(r.exitCode, writeFailed);
+  EXPECT_EQ(r.exitCode, cli::WriteFailed);
   EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
   EXPECT_NE(r.err.find("not writable"), std::string::npos) << r.err;
+
+  // One mesh per label into a folder nothing can be written to: refused before any work, in one line
+  // without a VTK object address or a temporary file name; the output model is not written either.
+  r = runSliceMesh("--outputDirectory /proc/slicemesh-labels " + input + " " + quoted((f.outputs / "merged.vtp").string()));
+  EXPECT_EQ(r.exitCode, cli::WriteFailed);
+  EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
+  EXPECT_EQ(r.err.find("0x"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("partial"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("<filter-start>"), std::string::npos) << "no stage may start: " << r.out;
+  EXPECT_FALSE(fs::exists(f.outputs / "merged.vtp"));
 
   if (::geteuid() != 0) // root writes into a read-only folder regardless
   {
@@ -246,7 +253,7 @@ TEST(ErrorHandling, OutputFolderMissingOrNotWritable)
     fs::permissions(locked, fs::perms::owner_read | fs::perms::owner_exec);
     r = runSliceMesh(input + " " + quoted((locked / "out.vtp").string()));
     fs::permissions(locked, fs::perms::owner_all);
-    EXPECT_EQ(r.exitCode, writeFailed) << r.err;
+    EXPECT_EQ(r.exitCode, cli::WriteFailed) << r.err;
     EXPECT_NE(r.err.find("not writable"), std::string::npos) << r.err;
     EXPECT_EQ(fileText(locked / "out.vtp"), precious);
   }
@@ -256,8 +263,8 @@ TEST(ErrorHandling, UnknownOutputExtension)
 {
   const Folders f = foldersFor("extension");
   writeMetaImage(f.inputs / "box.mha", { 6, 6, 6 }, { 1, 1, 1 }, [](int, int, int) { return 1; });
-  expectFailure(f.outputs, (f.inputs / "box.mha").string(), badArguments, ".vtp", "", "out.mesh");
-  expectFailure(f.outputs, (f.inputs / "box.mha").string(), badArguments, ".vtp", "", "out");
+  expectFailure(f.outputs, (f.inputs / "box.mha").string(), cli::BadArguments, ".vtp", "", "out.mesh");
+  expectFailure(f.outputs, (f.inputs / "box.mha").string(), cli::BadArguments, ".vtp", "", "out");
 }
 
 TEST(ErrorHandling, OutOfRangeAndMalformedParameters)
@@ -265,13 +272,13 @@ TEST(ErrorHandling, OutOfRangeAndMalformedParameters)
   const Folders f = foldersFor("parameters");
   writeMetaImage(f.inputs / "box.mha", { 6, 6, 6 }, { 1, 1, 1 }, [](int, int, int) { return 1; });
   const std::string input = (f.inputs / "box.mha").string();
-  expectFailure(f.outputs, input, badArguments, "wallRowHeight", "--wallRowHeight -1");
-  expectFailure(f.outputs, input, badArguments, "wallRowHeight", "--wallRowHeight 51");
-  expectFailure(f.outputs, input, badArguments, "wallRowHeight", "--wallRowHeight nan");
-  expectFailure(f.outputs, input, badArguments, "minimumComponentVolume", "--minimumComponentVolume -5");
-  expectFailure(f.outputs, input, badArguments, "label", "--label 1.5");
-  expectFailure(f.outputs, input, badArguments, "threshold", "--threshold abc");
-  expectFailure(f.outputs, input, badArguments, "inputKind", "--inputKind Mesh");
+  expectFailure(f.outputs, input, cli::BadArguments, "wallRowHeight", "--wallRowHeight -1");
+  expectFailure(f.outputs, input, cli::BadArguments, "wallRowHeight", "--wallRowHeight 51");
+  expectFailure(f.outputs, input, cli::BadArguments, "wallRowHeight", "--wallRowHeight nan");
+  expectFailure(f.outputs, input, cli::BadArguments, "minimumComponentVolume", "--minimumComponentVolume -5");
+  expectFailure(f.outputs, input, cli::BadArguments, "label", "--label 1.5");
+  expectFailure(f.outputs, input, cli::BadArguments, "threshold", "--threshold abc");
+  expectFailure(f.outputs, input, cli::BadArguments, "inputKind", "--inputKind Mesh");
 }
 
 TEST(ErrorHandling, VolumeLargerThanTheMemoryAvailableIsAClearError)
@@ -281,7 +288,7 @@ TEST(ErrorHandling, VolumeLargerThanTheMemoryAvailableIsAClearError)
   std::ofstream(out) << precious;
   const RunResult r = runCommand("SLICEMESH_MEMORY_LIMIT_MB=1 " + quoted(SLICEMESH_EXECUTABLE) + " " +
                                  quoted(SLICEMESH_DATA_DIR "/sample-labelmap.nii.gz") + " " + quoted(out.string()));
-  EXPECT_EQ(r.exitCode, unreadableInput);
+  EXPECT_EQ(r.exitCode, cli::UnreadableInput);
   ASSERT_EQ(linesOf(r.err).size(), 1u) << r.err;
   EXPECT_NE(r.err.find("of memory"), std::string::npos) << r.err;
   EXPECT_EQ(fileText(out), precious);
