@@ -253,24 +253,6 @@ RunQuality runQualityOf(const MeshedContours& m)
   return quality;
 }
 
-void accumulate(MeshValidation& sum, const MeshValidation& v)
-{
-  sum.vertices += v.vertices;
-  sum.triangles += v.triangles;
-  sum.degenerateTriangles += v.degenerateTriangles;
-  sum.boundaryEdges += v.boundaryEdges;
-  sum.nonManifoldEdges += v.nonManifoldEdges;
-  sum.nonManifoldVertices += v.nonManifoldVertices;
-  sum.inconsistentEdges += v.inconsistentEdges;
-  sum.foldedEdges += v.foldedEdges;
-  sum.selfIntersections += v.selfIntersections;
-  sum.selfIntersectionChecked = sum.selfIntersectionChecked && v.selfIntersectionChecked;
-  sum.components += v.components;
-  sum.eulerCharacteristic += v.eulerCharacteristic;
-  sum.area += v.area;
-  sum.volume += v.volume;
-}
-
 /** "037_Hippocampus_L.vtp": the value zero-padded to sort in label order, then the safe name. */
 std::string labelFileName(const Structure& s, int width, const std::string& extension)
 {
@@ -419,7 +401,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   TriangleMesh merged;
   MeshAttributes mergedAttributes;
   std::vector<LabelReport> reports;
-  result.validation.selfIntersectionChecked = true;
+  std::vector<MeshValidation> validations;
   const fs::path output(settings.outputModel);
   const int width = perLabel && !structures.empty() && structures.back().report.label >= 1000 ? 0 : 3;
   for (Structure& s : structures)
@@ -435,7 +417,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
                   << std::endl;
       s.physical = guarded(WriteFailed, [&]
                            { return mapToPhysicalSpace(surface.mesh, sliceFrameOf(s.mask), settings.coordinateSystem); });
-      accumulate(result.validation, surface.validation);
+      validations.push_back(surface.validation);
       if (perLabel)
       {
         MeshAttributes attributes;
@@ -478,6 +460,8 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
               else
                 writeMesh(merged, settings.coordinateSystem, settings.outputModel);
             });
+  // Neighbouring labels touch by design: each label's mesh is checked on its own, not against the others.
+  result.validation = joinedValidation(validations, 0);
   if (perLabel)
     result.quality = combinedQuality(reports, result.validation, merged);
   else
