@@ -221,14 +221,14 @@ int main(int argc, char* argv[])
   const std::string document = benchmarkDocument(table, ratios, sections);
   std::printf("%s", document.c_str());
   const std::string path = argc > 1 ? argv[1] : SLICEMESH_SOURCE_DIR "/Documentation/Benchmark.md";
-  // The scaling section is Utilities/scaling-benchmark.sh's: kept as it is.
+  // The scaling section (Utilities/scaling-benchmark.sh's) and what follows it (the profile) are kept.
   std::string scaling;
   {
     std::ifstream in(path);
     const std::string previous((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const std::size_t begin = previous.find("<!-- scaling"), end = previous.find("<!-- /scaling -->");
-    if (begin != std::string::npos && end != std::string::npos)
-      scaling = "\n" + previous.substr(begin, end - begin) + "<!-- /scaling -->\n";
+    const std::size_t begin = previous.find("<!-- scaling");
+    if (begin != std::string::npos)
+      scaling = "\n" + previous.substr(begin);
   }
   std::ofstream out(path);
   out << document << scaling;
