@@ -379,13 +379,12 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
                 });
   PipelineResult result;
   startStage(Correspondence);
-  eachStructure(MeshingFailed,
-                [&](Structure& s, const std::function<void(double)>& fraction)
-                {
-                  runMeshingStage(MeshingStage::Correspondence, s.meshing, fraction);
-                  for (const std::string& note : s.meshing.sections.notes)
-                    result.sections.notes.push_back(who(s, perLabel) + note);
-                });
+  eachStructure(MeshingFailed, [&](Structure& s, const std::function<void(double)>& fraction)
+                { runMeshingStage(MeshingStage::Correspondence, s.meshing, fraction); });
+  for (const Structure& s : structures) // in label order, after the structures ran side by side
+    if (s.live())
+      for (const std::string& note : s.meshing.sections.notes)
+        result.sections.notes.push_back(who(s, perLabel) + note);
   for (const auto& [stage, meshingStage] : { std::pair{ Tiling, MeshingStage::Tiling },
                                              std::pair{ Validation, MeshingStage::Validation },
                                              std::pair{ Finishing, MeshingStage::Finishing } })
