@@ -35,13 +35,15 @@ set -m # job control: run 1 gets its own process group, which Ctrl-C would inter
 smk --config slicemesh="$work/held-slicemesh" >run1.log 2>&1 &
 run1=$!
 set +m
+# Snakemake's own count of finished jobs, not the status files: a status file exists a moment before
+# snakemake has recorded its job as complete, and an interrupt in that moment leaves it "incomplete".
 for _ in $(seq 240); do
-  done_count=$( (find results -name '*_status.json' 2>/dev/null || true) | wc -l)
+  done_count=$(grep -c '^Finished job' run1.log || true)
   [ -e held ] && [ "$done_count" -eq 3 ] && break
   kill -0 $run1 2>/dev/null || { cat run1.log; fail "run 1 ended before sub-03 was held"; }
   sleep 0.5
 done
-[ -e held ] && [ "$done_count" -eq 3 ] || fail "run 1: sub-03 held: $([ -e held ] && echo yes || echo no), $done_count status files after 120 s"
+[ -e held ] && [ "$done_count" -eq 3 ] || fail "run 1: sub-03 held: $([ -e held ] && echo yes || echo no), $done_count jobs finished after 120 s"
 kill -INT -- -$run1
 wait $run1 && fail "run 1 was interrupted but exited with 0"
 [ ! -e results/sub-03/sub-03_T1w_status.json ] || fail "run 1 left a status file for the interrupted sub-03"
