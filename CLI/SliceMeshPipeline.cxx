@@ -5,6 +5,7 @@
 #include "LabelIndex.h"
 #include "MaskMeshing.h"
 #include "MeshSnapshot.h"
+#include "Measures/MeshComponents.h"
 #include "NiftiOrientation.h"
 #include "SmallComponentRemoval.h"
 #include "VolumeReader.h"
@@ -397,7 +398,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   // From here on each mesh is the finished one: what is written, pictured and reported (only the
   // Dirichlet energy stays the tiling's).
   startStage(Writing);
-  TriangleMesh merged;
+  std::vector<const TriangleMesh*> physicalMeshes; // merged into the output model, in label order
   MeshAttributes mergedAttributes;
   std::vector<LabelReport> reports;
   std::vector<MeshValidation> validations;
@@ -436,13 +437,11 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
                                            attributes.cellColors.end());
         mergedAttributes.structures.push_back(attributes.structures.front());
       }
-      const auto offset = static_cast<std::int32_t>(merged.points.size());
-      merged.points.insert(merged.points.end(), s.physical.points.begin(), s.physical.points.end());
-      for (const Triangle& t : s.physical.triangles)
-        merged.triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+      physicalMeshes.push_back(&s.physical);
     }
     reports.push_back(s.report);
   }
+  const TriangleMesh merged = joinMeshes(physicalMeshes);
   if (merged.triangles.empty() && failures.empty())
   {
     std::ostringstream message;

@@ -5,6 +5,7 @@
 // Usage: SlicerPeer <label map> <output.vtp>
 #include "ContourExtraction.h"
 #include "LabelIndex.h"
+#include "Measures/MeshComponents.h"
 #include "MeshWriter.h"
 #include "SlicerPipeline.h"
 #include "VolumeReader.h"
@@ -25,16 +26,16 @@ int main(int argc, char* argv[])
   {
     const ScalarVolume::Pointer volume = readVolume(argv[1]);
     const auto began = std::chrono::steady_clock::now();
-    TriangleMesh merged;
+    std::vector<TriangleMesh> surfaces;
     for (const LabelExtent& extent : indexLabels(volume))
     {
       const MaskVolume::Pointer mask = cropLabelMask(volume, extent);
-      const TriangleMesh physical = mapToPhysicalSpace(slicerSurface(mask), sliceFrameOf(mask), CoordinateSystem::LPS);
-      const auto offset = static_cast<std::int32_t>(merged.points.size());
-      merged.points.insert(merged.points.end(), physical.points.begin(), physical.points.end());
-      for (const Triangle& t : physical.triangles)
-        merged.triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+      surfaces.push_back(mapToPhysicalSpace(slicerSurface(mask), sliceFrameOf(mask), CoordinateSystem::LPS));
     }
+    std::vector<const TriangleMesh*> parts;
+    for (const TriangleMesh& surface : surfaces)
+      parts.push_back(&surface);
+    const TriangleMesh merged = joinMeshes(parts);
     const double meshing = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
     writeMesh(merged, CoordinateSystem::LPS, argv[2]);
     std::printf("triangles %zu meshing %.3f\n", merged.triangles.size(), meshing);
