@@ -1,6 +1,7 @@
 #include "Finishing/SurfaceFinishing.h"
 
 #include "Core/ParallelFor.h"
+#include "Measures/ComponentOrientation.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/MeshCrossings.h"
 
@@ -251,9 +252,17 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
           pieces[p] = keptAsTiled(tiledPieces[p], SurfaceFinish::Tiled, "it crossed another piece once finished");
   }
   std::vector<MeshValidation> validations;
+  std::vector<const TriangleMesh*> finishedPieces;
+  std::vector<double> volumes;
   for (const FinishedPiece& piece : pieces)
+  {
     validations.push_back(piece.validation);
-  const MeshValidation validation = joinedValidation(validations, crossingTriangles);
+    finishedPieces.push_back(&piece.mesh);
+    volumes.push_back(piece.validation.volume);
+  }
+  MeshValidation validation = joinedValidation(validations, crossingTriangles);
+  // Each piece faces as its tiled self did; whether that is right depends on which piece lies inside which.
+  validation.misorientedComponents = misorientedComponents(finishedPieces, volumes);
   std::vector<std::size_t> firstTriangle;
   TriangleMesh joined = joinPieces(pieces, firstTriangle);
   if (!validation.valid() || validation.components != tilingValidation.components ||

@@ -1,6 +1,7 @@
 #include "Measures/MeshValidation.h"
 
 #include "Core/DisjointSets.h"
+#include "Measures/ComponentOrientation.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -78,6 +79,11 @@ std::string MeshValidation::summary() const
     out << selfIntersections << " self-intersecting pairs";
   if (foldedEdges > 0)
     out << ", " << foldedEdges << " folded edges";
+  if (inconsistentEdges > 0)
+    out << ", " << inconsistentEdges << " edges wound against their neighbours";
+  if (misorientedComponents > 0)
+    out << ", " << misorientedComponents << (misorientedComponents == 1 ? " component" : " components")
+        << " facing the wrong way";
   out << ", " << components << (components == 1 ? " component" : " components") << ", volume " << std::fixed
       << std::setprecision(1) << volume << " mm^3";
   return out.str();
@@ -242,6 +248,8 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
     }
   v.vertices = usedCount;
   v.volume = signedVolume(mesh);
+  if (v.closed() && v.manifold() && v.inconsistentEdges == 0)
+    v.misorientedComponents = v.components == 1 ? (v.volume > 0.0 ? 0 : 1) : misorientedComponents(mesh);
   v.eulerCharacteristic =
     static_cast<long>(usedCount) - static_cast<long>(edges) + static_cast<long>(nTriangles);
   v.minAngleDegrees = nTriangles == 0 ? 0.0 : std::acos(std::clamp(largestCosine, -1.0, 1.0)) * 180.0 / M_PI;
@@ -272,6 +280,7 @@ MeshValidation joinedValidation(const std::vector<MeshValidation>& parts, std::s
     v.nonManifoldEdges += p.nonManifoldEdges;
     v.nonManifoldVertices += p.nonManifoldVertices;
     v.inconsistentEdges += p.inconsistentEdges;
+    v.misorientedComponents += p.misorientedComponents;
     v.foldedEdges += p.foldedEdges;
     v.selfIntersections += p.selfIntersections;
     v.selfIntersectionChecked = v.selfIntersectionChecked && p.selfIntersectionChecked;

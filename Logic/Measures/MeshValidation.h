@@ -20,6 +20,9 @@ struct MeshValidation
   std::size_t nonManifoldEdges = 0;           ///< edges with more than two triangles
   std::size_t nonManifoldVertices = 0;        ///< vertices whose triangles form more than one fan
   std::size_t inconsistentEdges = 0;          ///< edges used twice in the same direction
+  /** Components facing against their nesting: an outer surface facing in, or a cavity's wall facing
+   *  out (measured on closed, manifold, consistently wound meshes; else 0). */
+  std::size_t misorientedComponents = 0;
   std::size_t foldedEdges = 0;                ///< edges whose two triangles fold onto each other (dihedral angle under 1 degree)
   std::size_t selfIntersections = 0;          ///< pairs of triangles that intersect other than along shared simplices
   bool selfIntersectionChecked = false;       ///< false when the mesh was not manifold enough to check
@@ -32,7 +35,7 @@ struct MeshValidation
 
   bool closed() const { return boundaryEdges == 0; }
   bool manifold() const { return nonManifoldEdges == 0 && nonManifoldVertices == 0; }
-  bool oriented() const { return inconsistentEdges == 0 && volume > 0.0; }
+  bool oriented() const { return inconsistentEdges == 0 && misorientedComponents == 0 && volume > 0.0; }
   bool valid() const
   {
     return closed() && manifold() && oriented() && degenerateTriangles == 0 && selfIntersectionChecked &&
@@ -49,11 +52,13 @@ struct MeshValidation
 MeshValidation validateMesh(const TriangleMesh& mesh);
 
 /** validateMesh without the self-intersection test (selfIntersectionChecked false): the topology,
- *  orientation and measures, in time linear in the triangles. */
+ *  orientation and measures, in time linear in the triangles (and, for a mesh of several components
+ *  whose boxes nest, O(n log n) to tell which component lies inside which). */
 MeshValidation validateMeshTopology(const TriangleMesh& mesh);
 
 /** The validation of meshes laid side by side in one mesh without shared vertices, from theirs:
- *  counts, area and volume summed, the smallest angle the smallest, the share of triangles under 30
+ *  counts, area and volume summed (the misoriented components too: nesting between the meshes is
+ *  the caller's to check, see ComponentOrientation.h), the smallest angle the smallest, the share of triangles under 30
  *  degrees weighted by triangles; `crossingPairs` pairs of triangles of different meshes that
  *  intersect are added to the self-intersections. */
 MeshValidation joinedValidation(const std::vector<MeshValidation>& parts, std::size_t crossingPairs);

@@ -1,0 +1,130 @@
+#include "Measures/ComponentOrientation.h"
+
+#include "Measures/MeshComponents.h"
+#include "Measures/MeshValidation.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <memory>
+
+namespace slicemesh
+{
+namespace
+{
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using SideOf = CGAL::Side_of_triangle_mesh<SurfaceMesh, Kernel>;
+
+struct Box
+{
+  std::array<double, 3> low{ std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
+                             std::numeric_limits<double>::max() };
+  std::array<double, 3> high{ std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest(),
+                              std::numeric_limits<double>::lowest() };
+
+  /** Surfaces that do not cross nest only if their boxes do. */
+  bool contains(const Box& other) const
+  {
+    for (int a = 0; a < 3; ++a)
+      if (other.low[a] < low[a] || other.high[a] > high[a])
+        return false;
+    return true;
+  }
+};
+
+Box boxOf(const TriangleMesh& mesh)
+{
+  Box box;
+  for (const Triangle& t : mesh.triangles)
+    for (std::int32_t v : t)
+    {
+      const Point3& p = mesh.points[static_cast<std::size_t>(v)];
+      const std::array<double, 3> c{ p.x, p.y, p.z };
+      for (int a = 0; a < 3; ++a)
+      {
+        box.low[a] = std::min(box.low[a], c[a]);
+        box.high[a] = std::max(box.high[a], c[a]);
+      }
+    }
+  return box;
+}
+
+/** A component held for inside/outside queries (CGAL's ray parity over an AABB tree, which shoots
+ *  again when a ray grazes an edge). */
+struct Enclosure
+{
+  SurfaceMesh surface;
+  std::unique_ptr<SideOf> side;
+
+  explicit Enclosure(const TriangleMesh& mesh)
+  {
+    std::vector<SurfaceMesh::Vertex_index> handles;
+    handles.reserve(mesh.points.size());
+    for (const Point3& p : mesh.points)
+      handles.push_back(surface.add_vertex(Kernel::Point_3(p.x, p.y, p.z)));
+    for (const Triangle& t : mesh.triangles)
+      if (surface.add_face(handles[t[0]], handles[t[1]], handles[t[2]]) == SurfaceMesh::null_face())
+        throw Error("component orientation: a component is not a manifold surface");
+    side = std::make_unique<SideOf>(surface);
+  }
+
+  bool encloses(const Point3& p) const { return (*side)(Kernel::Point_3(p.x, p.y, p.z)) == CGAL::ON_BOUNDED_SIDE; }
+};
+
+} // namespace
+
+std::size_t misorientedComponents(const std::vector<const TriangleMesh*>& components, const std::vector<double>& volumes)
+{
+  const std::size_t n = components.size();
+  if (n == 1)
+    return volumes.front() > 0.0 ? 0 : 1;
+  std::vector<Box> boxes;
+  boxes.reserve(n);
+  for (const TriangleMesh* c : components)
+    boxes.push_back(boxOf(*c));
+  // Most components nest in none: the boxes rule them out before any tree is built.
+  std::vector<std::unique_ptr<Enclosure>> enclosures(n);
+  std::size_t misoriented = 0;
+  for (std::size_t a = 0; a < n; ++a)
+  {
+    const TriangleMesh& component = *components[a];
+    if (component.triangles.empty())
+      continue;
+    const Point3& probe = component.points[static_cast<std::size_t>(component.triangles.front()[0])];
+    std::size_t depth = 0;
+    for (std::size_t b = 0; b < n; ++b)
+    {
+      if (b == a || components[b]->triangles.empty() || !boxes[b].contains(boxes[a]))
+        continue;
+      if (!enclosures[b])
+        enclosures[b] = std::make_unique<Enclosure>(*components[b]);
+      depth += enclosures[b]->encloses(probe);
+    }
+    const bool outward = depth % 2 == 0;
+    misoriented += outward ? !(volumes[a] > 0.0) : !(volumes[a] < 0.0);
+  }
+  return misoriented;
+}
+
+std::size_t misorientedComponents(const TriangleMesh& mesh)
+{
+  const std::vector<TriangleMesh> components = splitIntoPieces(mesh);
+  if (components.empty())
+    return 0;
+  std::vector<const TriangleMesh*> pointers;
+  std::vector<double> volumes;
+  for (const TriangleMesh& c : components)
+  {
+    pointers.push_back(&c);
+    volumes.push_back(signedVolume(c));
+  }
+  return misorientedComponents(pointers, volumes);
+}
+
+} // namespace slicemesh
