@@ -61,6 +61,7 @@ void runMeshingStage(MeshingStage stage, MeshedContours& meshing, const std::fun
     case MeshingStage::Tiling:
     {
       ReconstructionOptions options = meshing.options.reconstruction;
+      options.threads = meshing.options.threads;
       options.progress = fraction;
       meshing.tiling = reconstructSurface(meshing.stack, options, &meshing.reconstruction);
       if (meshing.tiling.triangles.empty())

@@ -3,6 +3,7 @@
 #include "Contours/ContourCrossings.h"
 #include "Contours/ContourNesting.h"
 #include "Correspondence/MutualIntersections.h"
+#include "Core/ParallelFor.h"
 #include "Core/PlanarGeometry.h"
 #include "Tiling/SlabTiling.h"
 
@@ -150,22 +151,56 @@ TriangleMesh reconstructSurface(const ContourStack& stack, const ReconstructionO
     return isolated;
   };
 
-  std::unique_ptr<SlabOverlay> current = makeOverlay(0);
-  std::vector<char> lowerIsolated; // slice k-1, from slabs k-1 and k
-  for (long k = 0; k <= static_cast<long>(n); ++k)
+  // Slabs are independent once each slice knows whether its contours are isolated, which needs the
+  // overlays on both sides: slabs go in batches, a batch's overlays built and its slabs tiled side by
+  // side (each on its own builder), then appended in slab order. Only a batch's overlays are alive
+  // at a time (their triangulations are most of the stage's memory).
+  const unsigned int threads = threadCount(options.threads);
+  const long batch = threads > 1 ? 2 * static_cast<long>(threads) : 1;
+  const long slabCount = static_cast<long>(n) + 1;
+  std::vector<char> lowerIsolated; // of the slice below the batch's first slab
+  std::unique_ptr<SlabOverlay> carried = makeOverlay(0);
+  for (long k0 = 0; k0 < slabCount; k0 += batch)
   {
-    std::unique_ptr<SlabOverlay> next = k < static_cast<long>(n) ? makeOverlay(k + 1) : nullptr;
-    std::vector<char> upperIsolated;
-    if (next)
-      upperIsolated = isolation(current->upperContinues(), next->lowerContinues());
-    liftOptions.lowerIsolated = &lowerIsolated;
-    liftOptions.upperIsolated = &upperIsolated;
-    current->lift(mesh, liftOptions, statistics);
-    ++statistics.slabs;
+    const long k1 = std::min(k0 + batch, slabCount); // slabs [k0, k1); overlay k1 is needed too
+    std::vector<std::unique_ptr<SlabOverlay>> overlays(static_cast<std::size_t>(k1 - k0 + 1));
+    overlays[0] = std::move(carried);
+    parallelFor(overlays.size() - 1, threads,
+                [&](std::size_t i)
+                {
+                  const long k = k0 + 1 + static_cast<long>(i);
+                  if (k <= static_cast<long>(n))
+                    overlays[i + 1] = makeOverlay(k);
+                });
+    // isolated[i]: the slice above slab k0 + i (empty beyond the last slice).
+    std::vector<std::vector<char>> isolated(overlays.size() - 1);
+    for (std::size_t i = 0; i + 1 < overlays.size(); ++i)
+      if (overlays[i + 1])
+        isolated[i] = isolation(overlays[i]->upperContinues(), overlays[i + 1]->lowerContinues());
+    std::vector<MeshBuilder> slabMeshes(isolated.size(), MeshBuilder(mesh.mesh()));
+    std::vector<ReconstructionStatistics> slabStatistics(isolated.size());
+    parallelFor(isolated.size(), threads,
+                [&](std::size_t i)
+                {
+                  SlabLiftOptions slabOptions = liftOptions;
+                  slabOptions.lowerIsolated = i == 0 ? &lowerIsolated : &isolated[i - 1];
+                  slabOptions.upperIsolated = &isolated[i];
+                  overlays[i]->lift(slabMeshes[i], slabOptions, slabStatistics[i]);
+                  overlays[i].reset();
+                });
+    for (std::size_t i = 0; i < slabMeshes.size(); ++i)
+    {
+      slabMeshes[i].appendTo(mesh);
+      statistics.steinerPoints += slabStatistics[i].steinerPoints;
+      statistics.wallTriangles += slabStatistics[i].wallTriangles;
+      statistics.capTriangles += slabStatistics[i].capTriangles;
+      statistics.tilingTriangles += slabStatistics[i].tilingTriangles;
+      ++statistics.slabs;
+    }
     if (options.progress)
-      options.progress(static_cast<double>(k + 1) / static_cast<double>(n + 1));
-    lowerIsolated = upperIsolated;
-    current = std::move(next);
+      options.progress(static_cast<double>(k1) / static_cast<double>(slabCount));
+    lowerIsolated = std::move(isolated.back());
+    carried = std::move(overlays.back());
   }
 
   if (statisticsOut)

@@ -34,6 +34,8 @@ struct ReconstructionOptions
   bool planarTiling = false;
   /** Points of the same slice closer than this (mm) are one point. */
   double mergeTolerance = 1e-6;
+  /** Threads to tile slabs side by side (0: every core); the mesh does not depend on it. */
+  unsigned int threads = 1;
   /** Called with a fraction 0..1 as slabs are tiled; may be empty. */
   std::function<void(double)> progress;
 };
