@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <unordered_map>
 
 namespace slicemesh
 {
@@ -116,18 +115,30 @@ DirichletEnergy measureDirichletEnergy(const TriangleMesh& mesh, const ContourSt
            contourSegments[s]->distance(xy(p)) <= 1e3 * tolerance && contourSegments[s]->distance(xy(q)) <= 1e3 * tolerance;
   };
 
-  // Triangles on each side of every edge.
-  std::unordered_map<std::uint64_t, std::vector<std::size_t>> edgeTriangles;
-  edgeTriangles.reserve(mesh.triangles.size() * 2);
+  // Triangles on each side of every edge: the edges sorted by key (and triangle), no hash map.
+  std::vector<std::pair<std::uint64_t, std::size_t>> edges;
+  edges.reserve(3 * mesh.triangles.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (int i = 0; i < 3; ++i)
-      edgeTriangles[edgeKey(mesh.triangles[t][i], mesh.triangles[t][(i + 1) % 3])].push_back(t);
-
-  for (const auto& [key, around] : edgeTriangles)
+      edges.emplace_back(edgeKey(mesh.triangles[t][i], mesh.triangles[t][(i + 1) % 3]), t);
+  std::sort(edges.begin(), edges.end());
+  auto isEdge = [&](std::uint64_t key)
   {
-    if (around.size() != 2)
+    const auto at = std::lower_bound(edges.begin(), edges.end(), std::make_pair(key, std::size_t{ 0 }));
+    return at != edges.end() && at->first == key;
+  };
+
+  for (std::size_t e = 0; e < edges.size();)
+  {
+    std::size_t end = e + 1;
+    while (end < edges.size() && edges[end].first == edges[e].first)
+      ++end;
+    const std::uint64_t key = edges[e].first;
+    const bool shared = end - e == 2;
+    const std::size_t t1 = edges[e].second, t2 = shared ? edges[e + 1].second : 0;
+    e = end;
+    if (!shared)
       continue;
-    const std::size_t t1 = around[0], t2 = around[1];
     if (slabOf[t1] < 0 || slabOf[t1] != slabOf[t2] || facing[t1] != facing[t2])
       continue;
     const std::int32_t a = static_cast<std::int32_t>(key >> 32), b = static_cast<std::int32_t>(key & 0xffffffffu);
@@ -146,7 +157,7 @@ DirichletEnergy measureDirichletEnergy(const TriangleMesh& mesh, const ContourSt
     if (orientation(xy(pa), xy(pb), xy(pc)) * orientation(xy(pa), xy(pb), xy(pd)) >= 0 ||
         orientation(xy(pc), xy(pd), xy(pa)) * orientation(xy(pc), xy(pd), xy(pb)) >= 0)
       continue;
-    if (edgeTriangles.count(edgeKey(c, d)))
+    if (isEdge(edgeKey(c, d)))
       continue;
     ++result.flipCandidates;
     const double before = triangleEnergy(pa, pb, pc) + triangleEnergy(pa, pb, pd);
