@@ -53,7 +53,9 @@ struct FinishedSurface
 SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing);
 
 /** Finishes a tiling whose validation is given, one connected piece at a time: each piece is
- *  remeshed and smoothed and gets its tiled volume back; where smoothing makes its triangles cross,
+ *  remeshed and smoothed and gets its tiled volume back, times targetVolume / the tiling's volume
+ *  when a `targetVolume` (mm^3) within 25% of the tiling's is given (the voxels' volume: the tiling's
+ *  chords sit slightly inside a curved surface); where smoothing makes its triangles cross,
  *  the vertices around them (growing rings, three tries) go back to their remeshed positions. A piece
  *  is kept finished only if it is a valid surface of its tiled topology, facing the same way;
  *  otherwise it is smoothed only (put back to the tiling where sheets cross, likewise), else left
@@ -62,7 +64,8 @@ SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing
  *  did. An invalid tiling is returned as it is. Pieces are finished on up to `threads` threads (0:
  *  every core); the result does not depend on the number. */
 FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& tilingValidation,
-                              const SurfaceFinishingOptions& options, unsigned int threads = 0);
+                              const SurfaceFinishingOptions& options, unsigned int threads = 0,
+                              double targetVolume = 0.0);
 
 /** "Remeshed", "Smoothed", "Tiled". */
 const char* finishName(SurfaceFinish finish);

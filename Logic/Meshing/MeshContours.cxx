@@ -1,6 +1,7 @@
 #include "Meshing/MeshContours.h"
 
 #include "Contours/ContourResampling.h"
+#include "Measures/StackVolume.h"
 
 #include <utility>
 
@@ -38,10 +39,14 @@ const char* meshingStageName(MeshingStage stage)
   return "Finishing";
 }
 
-MeshedContours startMeshing(ContourStack traced, const MeshingOptions& options, const std::array<double, 3>& spacing)
+MeshedContours startMeshing(ContourStack traced, const MeshingOptions& options, const std::array<double, 3>& spacing,
+                            double volume)
 {
   MeshedContours meshing;
   meshing.options = resolvedMeshingOptions(options, spacing);
+  // Voxels and planning systems count a structure's end slices whole: so do caps half a slice beyond.
+  if (meshing.options.reconstruction.capPlacement == CapPlacement::HalfSliceBeyond)
+    meshing.targetVolume = volume > 0.0 ? volume : prismVolume(traced);
   meshing.stack = std::move(traced);
   return meshing;
 }
@@ -73,7 +78,8 @@ void runMeshingStage(MeshingStage stage, MeshedContours& meshing, const std::fun
       break;
     case MeshingStage::Finishing:
       meshing.surface =
-        finishSurface(meshing.tiling, meshing.tilingValidation, meshing.options.finishing, meshing.options.threads);
+        finishSurface(meshing.tiling, meshing.tilingValidation, meshing.options.finishing, meshing.options.threads,
+                      meshing.sections.sectionsInserted == 0 ? meshing.targetVolume : 0.0);
       measure(meshing);
       break;
   }
@@ -84,6 +90,12 @@ MeshedContours meshContours(const ContourStack& traced, const MeshingOptions& op
                             const std::function<void(MeshingStage, double)>& progress)
 {
   MeshedContours meshing = startMeshing(traced, options, spacing);
+  runMeshingStages(meshing, progress);
+  return meshing;
+}
+
+void runMeshingStages(MeshedContours& meshing, const std::function<void(MeshingStage, double)>& progress)
+{
   for (MeshingStage stage : { MeshingStage::Preparation, MeshingStage::Correspondence, MeshingStage::Tiling,
                               MeshingStage::Validation, MeshingStage::Finishing })
   {
@@ -92,7 +104,6 @@ MeshedContours meshContours(const ContourStack& traced, const MeshingOptions& op
       fraction = [&progress, stage](double f) { progress(stage, f); };
     runMeshingStage(stage, meshing, fraction);
   }
-  return meshing;
 }
 
 } // namespace slicemesh

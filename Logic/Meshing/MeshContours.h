@@ -46,6 +46,10 @@ struct MeshedContours
   ContourStack stack;
   SectionStatistics sections;
   ReconstructionStatistics reconstruction;
+  /** The volume the finished surface encloses (mm^3), as voxels count it: the mask's voxels, or
+   *  the traced contours' prismVolume; 0 (caps at the slice) keeps the tiling's, as do slabs given
+   *  intermediate sections (their shape between the slices is the implicit function's). */
+  double targetVolume = 0.0;
   TriangleMesh tiling;             ///< stack frame, mm
   MeshValidation tilingValidation;
   FinishedSurface surface;         ///< the finished mesh, its validation and what was applied
@@ -53,13 +57,19 @@ struct MeshedContours
 };
 
 /** A structure's traced contours (stack frame, mm) on a grid of this spacing (x, y, slice; mm), at
- *  the start of the path, its options resolved. */
-MeshedContours startMeshing(ContourStack traced, const MeshingOptions& options, const std::array<double, 3>& spacing);
+ *  the start of the path, its options resolved. `volume` is the structure's volume as voxels count it
+ *  (mm^3); 0: the traced contours' prismVolume. */
+MeshedContours startMeshing(ContourStack traced, const MeshingOptions& options, const std::array<double, 3>& spacing,
+                            double volume = 0.0);
 
 /** Runs one stage on a structure whose earlier stages have run. `fraction` (may be empty) hears the
  *  share of the stage done, 0..1. Throws Error on contours it cannot mesh (no triangles from the
  *  tiling included). */
 void runMeshingStage(MeshingStage stage, MeshedContours& meshing, const std::function<void(double)>& fraction = {});
+
+/** Every stage in order on a structure at the start of the path. `progress` (may be empty) hears the
+ *  stage and the share of it done. */
+void runMeshingStages(MeshedContours& meshing, const std::function<void(MeshingStage, double)>& progress = {});
 
 /** startMeshing, then every stage in order. `progress` (may be empty) hears the stage and the share
  *  of it done. */

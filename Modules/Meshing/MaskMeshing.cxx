@@ -6,16 +6,22 @@ namespace slicemesh
 MeshedContours startMaskMeshing(const MaskVolume* mask, const MeshingOptions& options, double contourSmoothingSigma)
 {
   const auto spacing = mask->GetSpacing();
-  return startMeshing(extractContours(mask, contourSmoothingSigma), options, { spacing[0], spacing[1], spacing[2] });
+  // The finished surface encloses the voxels' volume (their traced contours cut each convex corner).
+  std::size_t voxels = 0;
+  const std::size_t count = mask->GetBufferedRegion().GetNumberOfPixels();
+  const auto* value = mask->GetBufferPointer();
+  for (std::size_t i = 0; i < count; ++i)
+    voxels += value[i] != 0;
+  return startMeshing(extractContours(mask, contourSmoothingSigma), options, { spacing[0], spacing[1], spacing[2] },
+                      static_cast<double>(voxels) * spacing[0] * spacing[1] * spacing[2]);
 }
 
 MeshedMask meshMask(const MaskVolume* mask, const MeshingOptions& options, double contourSmoothingSigma,
                     CoordinateSystem system, const std::function<void(MeshingStage, double)>& progress)
 {
-  const auto spacing = mask->GetSpacing();
   MeshedMask result;
-  result.meshing = meshContours(extractContours(mask, contourSmoothingSigma), options,
-                                { spacing[0], spacing[1], spacing[2] }, progress);
+  result.meshing = startMaskMeshing(mask, options, contourSmoothingSigma);
+  runMeshingStages(result.meshing, progress);
   result.physical = mapToPhysicalSpace(result.meshing.surface.mesh, sliceFrameOf(mask), system);
   return result;
 }

@@ -11,7 +11,8 @@ namespace slicemesh
 {
 
 /** The mask's contours traced at its 0.5 level (after an in-plane Gaussian of `contourSmoothingSigma`
- *  mm, if above 0), at the start of the meshing path with the options resolved for its spacing. */
+ *  mm, if above 0), at the start of the meshing path with the options resolved for its spacing and
+ *  the volume of its voxels as the finished surface's volume. */
 MeshedContours startMaskMeshing(const MaskVolume* mask, const MeshingOptions& options,
                                 double contourSmoothingSigma = 0.0);
 

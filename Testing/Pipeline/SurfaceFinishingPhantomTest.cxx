@@ -136,3 +136,25 @@ TEST(SurfaceFinishingPhantom, ThinBranchingTubeKeepsItsVolume)
     EXPECT_NEAR(f.surface.validation.volume, f.tiling.validation.volume, 0.15 * f.tiling.validation.volume);
   }
 }
+
+// Volumetry: the tiling's chords and marching squares' cut corners sit slightly inside a curved
+// surface (its volume was 0.2-1.3% under the voxels'); the finished surface encloses the voxels'
+// volume, on every grid, between the test grids too (0.9 x 0.9 x 2 mm), hollow shapes included.
+TEST(SurfaceFinishingPhantom, TheFinishedSurfaceEnclosesTheVoxelsVolume)
+{
+  const Sphere sphere(Vector3(0.3, -0.2, 0.1), 15.0);
+  const Torus torus(Vector3(0, 0, 0), Vector3(1, 0, 0.5), 14.0, 5.0);
+  const Box box(Vector3(0, 0, 0), Vector3(12, 8, 7), rotation({ 0, 1, 1 }, 0.5));
+  std::vector<PhantomTestGrid> grids = phantomTestGrids();
+  grids.push_back({ "0.9x0.9x2", { 0.9, 0.9, 2.0 } });
+  for (const Phantom* phantom : std::initializer_list<const Phantom*>{ &sphere, &torus, &box })
+    for (const PhantomTestGrid& grid : grids)
+    {
+      const PhantomMeshResult r = meshPhantom(*phantom, grid.spacing, grid.direction, {}, {}, SurfaceFinish::Remeshed);
+      const double error = r.validation.volume / r.voxelVolume - 1.0;
+      std::printf("%-13s %s; volume %+.3f%% of the voxels'\n", grid.name, finishName(r.finish), 100.0 * error);
+      EXPECT_TRUE(r.validation.valid()) << r.validation.summary();
+      EXPECT_EQ(r.finish, SurfaceFinish::Remeshed) << r.fallback;
+      EXPECT_LT(std::abs(error), 0.002) << grid.name;
+    }
+}
