@@ -283,6 +283,45 @@ TEST_F(SegmentationFileTest, DicomSegFractionalCountsFromHalfTheMaximum)
     EXPECT_EQ(valueAt(file.layers[0], grid.point(i, 2, 1)), i >= 3 ? 1.0f : 0.0f) << i;
 }
 
+TEST_F(SegmentationFileTest, DicomSegFramesOffTheGridAreErrors)
+{
+  const ImageGrid grid = obliqueGrid();
+  const std::vector<testing::DicomSegmentSpec> segments{ { "Ball", { 1, 0, 0 }, ball(grid.point(6, 6, 4), 3.0) } };
+  auto moved = [&](int slice, double along, double across)
+  {
+    return [=](int k)
+    {
+      PhysicalPoint p = grid.point(0, 0, k);
+      if (k == slice)
+        for (int a = 0; a < 3; ++a)
+          p[a] += along * grid.axes[2][a] + across * grid.axes[0][a];
+      return p;
+    };
+  };
+  auto message = [&](const std::string& name)
+  {
+    try
+    {
+      readDicomSegmentation(path(name));
+    }
+    catch (const Error& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string("read without an error");
+  };
+  // Half a slice up: between two slices of the grid.
+  testing::writeDicomSegmentation(path("between.dcm"), grid, segments, 0, moved(5, 0.5 * grid.spacing[2], 0.0));
+  EXPECT_NE(message("between.dcm").find("not a whole number of slices of 1.25 mm"), std::string::npos)
+    << message("between.dcm");
+  // One millimetre along the rows: off the grid in its plane.
+  testing::writeDicomSegmentation(path("shifted.dcm"), grid, segments, 0, moved(3, 0.0, 1.0));
+  EXPECT_NE(message("shifted.dcm").find("shifted in its plane"), std::string::npos) << message("shifted.dcm");
+  // A whole slice up is a gap, not an error: the slice in between is empty.
+  testing::writeDicomSegmentation(path("gap.dcm"), grid, segments, 0, moved(6, grid.spacing[2], 0.0));
+  EXPECT_EQ(message("gap.dcm"), "read without an error");
+}
+
 TEST_F(SegmentationFileTest, BrokenDicomSegIsAnError)
 {
   const ImageGrid grid = obliqueGrid();

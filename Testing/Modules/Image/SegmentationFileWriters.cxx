@@ -105,7 +105,8 @@ void check(const OFCondition& status, const std::string& what)
 } // namespace
 
 void writeDicomSegmentation(const std::filesystem::path& path, const ImageGrid& grid,
-                            const std::vector<DicomSegmentSpec>& segments, unsigned int maxFraction)
+                            const std::vector<DicomSegmentSpec>& segments, unsigned int maxFraction,
+                            const std::function<PhysicalPoint(int k)>& framePosition)
 {
   const Uint16 rows = static_cast<Uint16>(grid.size[1]), columns = static_cast<Uint16>(grid.size[0]);
   const IODGeneralEquipmentModule::EquipmentInfo equipment("SliceMesh tests", "SegmentationFileWriters", "1", "0.1");
@@ -174,7 +175,7 @@ void writeDicomSegmentation(const std::filesystem::path& path, const ImageGrid& 
         }
       if (!any)
         continue;
-      const PhysicalPoint corner = grid.point(0, 0, k);
+      const PhysicalPoint corner = framePosition ? framePosition(k) : grid.point(0, 0, k);
       FGPlanePosPatient* position = FGPlanePosPatient::createMinimal(decimal(corner[0]), decimal(corner[1]), decimal(corner[2]));
       const std::unique_ptr<FGPlanePosPatient> owned(position);
       OFVector<FGBase*> perFrame;

@@ -55,9 +55,11 @@ struct DicomSegmentSpec
 /** Writes a DICOM SEG on the grid (rows = size[1], columns = size[0], frames along axes[2]): one
  *  frame per segment and slice where the segment has a pixel (as SEG writers leave empty frames
  *  out), in segment order. Binary when maxFraction is 0, else fractional (probability) with that
- *  Maximum Fractional Value. */
+ *  Maximum Fractional Value. `framePosition`, when given, replaces the Image Position (Patient)
+ *  written for slice k (to make files whose frames are off the grid). */
 void writeDicomSegmentation(const std::filesystem::path& path, const ImageGrid& grid,
-                            const std::vector<DicomSegmentSpec>& segments, unsigned int maxFraction = 0);
+                            const std::vector<DicomSegmentSpec>& segments, unsigned int maxFraction = 0,
+                            const std::function<PhysicalPoint(int k)>& framePosition = {});
 
 } // namespace slicemesh::testing
 
