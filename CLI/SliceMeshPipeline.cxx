@@ -12,6 +12,7 @@
 #include "VolumeReader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -197,29 +198,64 @@ std::vector<LabelSource> segmentSources(const SegmentationFile& file, const std:
   return sources;
 }
 
-/** One structure per source asked for (`picked`: label values or segment numbers; empty: all), each
- *  a mask cropped to its box. An empty source (a segment without voxels) is reported and dropped. */
-std::vector<Structure> labelStructures(std::vector<LabelSource> sources, const std::vector<int>& picked,
-                                       bool segments, const PipelineSettings& settings)
+std::string lowerCase(std::string text)
 {
-  if (!picked.empty())
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+  return text;
+}
+
+/** One structure per source asked for (by number: label values or segment numbers; by name, any
+ *  case; neither: all), each a mask cropped to its box. An empty source (a segment without voxels)
+ *  is reported and dropped. */
+std::vector<Structure> labelStructures(std::vector<LabelSource> sources, const std::vector<int>& numbers,
+                                       const std::vector<std::string>& names, bool segments,
+                                       const PipelineSettings& settings)
+{
+  if (!numbers.empty() || !names.empty())
   {
-    std::set<int> wanted(picked.begin(), picked.end());
+    std::set<int> wanted(numbers.begin(), numbers.end());
+    std::set<std::string> wantedNames;
+    for (const std::string& name : names)
+      wantedNames.insert(lowerCase(name));
     std::vector<LabelSource> chosen;
+    std::set<std::string> foundNames; // several labels may share a name: each is picked
     for (const LabelSource& source : sources)
-      if (wanted.erase(source.number))
+    {
+      const bool byNumber = wanted.erase(source.number) > 0;
+      const bool byName = wantedNames.count(lowerCase(source.name)) > 0;
+      if (byName)
+        foundNames.insert(lowerCase(source.name));
+      if (byNumber || byName)
         chosen.push_back(source);
-    if (!wanted.empty())
+    }
+    for (const std::string& name : foundNames)
+      wantedNames.erase(name);
+    if (!wanted.empty() || !wantedNames.empty())
     {
       std::ostringstream message;
-      message << settings.inputVolume << (segments ? ": no segment numbered" : ": no voxel has label");
-      for (int label : wanted)
-        message << " " << label;
-      if (segments)
+      message << settings.inputVolume;
+      if (!wanted.empty())
       {
-        message << " (its segments:";
-        for (const LabelSource& source : sources)
-          message << " " << source.number << " " << source.name << (&source == &sources.back() ? ")" : ",");
+        message << (segments ? ": no segment numbered" : ": no voxel has label");
+        for (int label : wanted)
+          message << " " << label;
+      }
+      else
+      {
+        message << (segments ? ": no segment named" : ": no label named");
+        for (const std::string& name : names)
+          if (wantedNames.count(lowerCase(name)))
+            message << " '" << name << "'";
+      }
+      if (segments || wanted.empty())
+      {
+        constexpr std::size_t listed = 20; // enough to spot a misspelling, short enough for one line
+        message << (segments ? " (its segments:" : " (its labels:");
+        for (std::size_t n = 0; n < std::min(sources.size(), listed); ++n)
+          message << (n ? ", " : " ") << sources[n].number << " " << sources[n].name;
+        if (sources.size() > listed)
+          message << ", ... " << sources.size() << " in all";
+        message << ")";
       }
       else
         message << " (" << sources.size() << " labels present)";
@@ -392,12 +428,14 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   {
     // --label picks one segment as --labels does.
     std::vector<int> picked = settings.multiLabel.labels;
-    if (picked.empty() && settings.segmentation.label)
+    if (picked.empty() && settings.multiLabel.labelNames.empty() && settings.segmentation.label)
       picked.push_back(*settings.segmentation.label);
-    structures = labelStructures(segmentSources(segmentation, settings.inputVolume), picked, true, settings);
+    structures = labelStructures(segmentSources(segmentation, settings.inputVolume), picked,
+                                 settings.multiLabel.labelNames, true, settings);
   }
   else if (perLabel)
-    structures = labelStructures(labelMapSources(volume, colors), settings.multiLabel.labels, false, settings);
+    structures = labelStructures(labelMapSources(volume, colors), settings.multiLabel.labels,
+                                 settings.multiLabel.labelNames, false, settings);
   else
     structures.push_back(maskStructure(volume, settings));
   for (const Structure& s : structures)

@@ -243,7 +243,7 @@ TEST(SegmentationFileInput, SlicerTwoLayersGiveOneNamedColouredMeshPerSegment)
               roundVolumeTolerance * (ballVolume(ballRadius) + boxVolume() + ballVolume(lesionRadius)));
 }
 
-TEST(SegmentationFileInput, LabelsPickSegmentsByNumber)
+TEST(SegmentationFileInput, LabelsPickSegmentsByNumberOrName)
 {
   const fs::path folder = freshFolder("segfile-pick");
   const fs::path input = slicerFile(folder);
@@ -254,6 +254,19 @@ TEST(SegmentationFileInput, LabelsPickSegmentsByNumber)
   EXPECT_TRUE(fs::exists(meshes / "003_Lesion.vtp"));
   EXPECT_EQ(std::distance(fs::directory_iterator(meshes), fs::directory_iterator()), 1);
   expectSegmentMesh(folder / "lesion.vtp", { "lesion.vtp", "Lesion", { 255, 217, 0 }, ballVolume(lesionRadius), lesionCentre });
+
+  // By name, in any case, mixed with numbers.
+  const fs::path named = folder / "named";
+  const RunResult byName = runSliceMesh("--labels BOX,3 --outputDirectory " + quoted(named.string()) + " " +
+                                        quoted(input.string()) + " " + quoted((folder / "named.vtp").string()));
+  ASSERT_EQ(byName.exitCode, cli::Success) << byName.err;
+  EXPECT_TRUE(fs::exists(named / "002_Box.vtp"));
+  EXPECT_TRUE(fs::exists(named / "003_Lesion.vtp"));
+  EXPECT_EQ(std::distance(fs::directory_iterator(named), fs::directory_iterator()), 2);
+  const RunResult unknown = runSliceMesh("--labels Tumour " + quoted(input.string()) + " " + quoted((folder / "none.vtp").string()));
+  EXPECT_EQ(unknown.exitCode, cli::EmptySegmentation) << unknown.err;
+  EXPECT_NE(unknown.err.find("no segment named 'Tumour' (its segments: 1 Ball, 2 Box, 3 Lesion, 4 Empty)"), std::string::npos)
+    << unknown.err;
 
   // A number the file does not have: exit 4, the message lists the segments, nothing written.
   const RunResult missing = runSliceMesh("--labels 7 " + quoted(input.string()) + " " + quoted((folder / "none.vtp").string()));
