@@ -3,8 +3,6 @@
 
 #include "Core/SliceMeshTypes.h"
 
-#include "itkNrrdImageIO.h"
-
 #include "dcmtk/config/osconfig.h"
 #include "dcmtk/dcmdata/dcdeftag.h"
 #include "dcmtk/dcmdata/dcfilefo.h"
@@ -39,21 +37,21 @@ bool isSegmentKey(const std::string& key)
   return at > prefix.size() && at < key.size() && key[at] == '_';
 }
 
+/** Whether the NRRD header (the text up to the first empty line) has a SegmentN_ key: read here
+ *  rather than by ITK, which reads (and may fail on) the voxels of a compressed file too, so that a
+ *  damaged segmentation file is still reported as one. */
 bool isSlicerSegmentation(const std::string& path)
 {
-  auto io = itk::NrrdImageIO::New();
-  try
+  std::ifstream file(path, std::ios::binary);
+  std::string line;
+  constexpr std::size_t headerLimit = 1 << 20; // a header of thousands of segments is far shorter
+  std::size_t read = 0;
+  while (std::getline(file, line) && !line.empty() && line != "\r" && (read += line.size()) < headerLimit)
   {
-    io->SetFileName(path);
-    io->ReadImageInformation();
-  }
-  catch (const itk::ExceptionObject&)
-  {
-    return false; // readVolume reports what is wrong with the file
-  }
-  for (const std::string& key : io->GetMetaDataDictionary().GetKeys())
-    if (isSegmentKey(key))
+    const std::size_t separator = line.find(":=");
+    if (separator != std::string::npos && isSegmentKey(line.substr(0, separator)))
       return true;
+  }
   return false;
 }
 

@@ -108,7 +108,8 @@ SegmentationFile readSlicerSegmentation(const std::string& path)
   }
   catch (const itk::ExceptionObject& error)
   {
-    throw Error(path + ": cannot read the NRRD header: " + describe(error));
+    // ITK's NRRD reader decompresses the voxels of a gzip file already here.
+    throw Error(path + ": cannot read the NRRD header or voxels (a truncated or damaged file?): " + describe(error));
   }
   if (io->GetNumberOfDimensions() != 3)
     throw Error(path + ": a segmentation of " + std::to_string(io->GetNumberOfDimensions()) +

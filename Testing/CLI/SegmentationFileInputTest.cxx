@@ -157,7 +157,8 @@ bool inBox(const PhysicalPoint& p)
   return p[0] >= 2.0 && p[0] <= 8.0 && p[1] >= 10.0 && p[1] <= 17.0 && p[2] >= 10.0 && p[2] <= 20.0;
 }
 
-fs::path slicerFile(const fs::path& folder, const std::vector<std::string>& extra = {})
+/** Written gzip-compressed, as Slicer writes by default. */
+fs::path slicerFile(const fs::path& folder)
 {
   const fs::path path = folder / "structures.seg.nrrd";
   writeSlicerSegmentation(
@@ -168,7 +169,7 @@ fs::path slicerFile(const fs::path& folder, const std::vector<std::string>& extr
       { "Segment_2", "Box", "0.2 0.4 0.9", "0", "2" },
       { "Segment_3", "Lesion", "1 0.85 0", "1", "1" },
       { "Segment_4", "Empty", "0.5 0.5 0.5", "1", "2" } },
-    extra);
+    {}, true);
   return path;
 }
 
@@ -372,13 +373,13 @@ TEST(SegmentationFileInput, BadFilesAreRefusedInOneLineAndNothingIsWritten)
   const fs::path cutSlicer = folder / "cut.seg.nrrd";
   fs::copy_file(slicer, cutSlicer);
   fs::resize_file(cutSlicer, fs::file_size(slicer) / 2);
-  expectRefused(folder, cutSlicer, cli::UnreadableInput, "cannot read");
+  expectRefused(folder, cutSlicer, cli::UnreadableInput, "(a truncated or damaged file?)");
 
   const fs::path dicom = dicomFile(folder, "seg.dcm", 0);
   const fs::path cutDicom = folder / "cut.dcm";
   fs::copy_file(dicom, cutDicom);
   fs::resize_file(cutDicom, fs::file_size(dicom) - 500);
-  expectRefused(folder, cutDicom, cli::UnreadableInput, "");
+  expectRefused(folder, cutDicom, cli::UnreadableInput, "(a truncated or damaged file?)");
 
   // Fields that contradict the image: a layer the file does not have.
   const fs::path badLayer = folder / "bad-layer.seg.nrrd";

@@ -9,6 +9,8 @@
 #include "dcmtk/dcmseg/segdoc.h"
 #include "dcmtk/dcmseg/segment.h"
 
+#include <zlib.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -30,7 +32,8 @@ PhysicalPoint ImageGrid::point(int i, int j, int k) const
 
 void writeSlicerSegmentation(const std::filesystem::path& path, const ImageGrid& grid,
                              const std::vector<std::function<unsigned char(const PhysicalPoint&)>>& layers,
-                             const std::vector<SlicerSegmentSpec>& segments, const std::vector<std::string>& extraFields)
+                             const std::vector<SlicerSegmentSpec>& segments, const std::vector<std::string>& extraFields,
+                             bool gzip)
 {
   std::ofstream out(path, std::ios::binary);
   const bool list = layers.size() > 1;
@@ -52,7 +55,7 @@ void writeSlicerSegmentation(const std::filesystem::path& path, const ImageGrid&
   out << "space directions: " << (list ? "none " : "") << vector(grid.axes[0], grid.spacing[0]) << " "
       << vector(grid.axes[1], grid.spacing[1]) << " " << vector(grid.axes[2], grid.spacing[2]) << "\n";
   out << "kinds: " << (list ? "list " : "") << "domain domain domain\n";
-  out << "encoding: raw\n";
+  out << "encoding: " << (gzip ? "gzip" : "raw") << "\n";
   out << "space origin: " << vector(grid.origin, 1.0) << "\n";
   for (std::size_t n = 0; n < segments.size(); ++n)
   {
@@ -80,9 +83,20 @@ void writeSlicerSegmentation(const std::filesystem::path& path, const ImageGrid&
       for (int i = 0; i < grid.size[0]; ++i)
         for (const auto& layer : layers) // the list axis is the fastest
           voxels.push_back(static_cast<char>(layer(grid.point(i, j, k))));
-  out.write(voxels.data(), static_cast<std::streamsize>(voxels.size()));
+  if (!gzip)
+    out.write(voxels.data(), static_cast<std::streamsize>(voxels.size()));
+  out.close();
   if (!out)
     throw std::runtime_error("cannot write " + path.string());
+  if (gzip)
+  {
+    // The gzip stream follows the header in the same file.
+    gzFile compressed = gzopen(path.c_str(), "ab");
+    const bool written = compressed && gzwrite(compressed, voxels.data(), static_cast<unsigned int>(voxels.size())) ==
+                                         static_cast<int>(voxels.size());
+    if (!compressed || gzclose(compressed) != Z_OK || !written)
+      throw std::runtime_error("cannot write the voxels of " + path.string());
+  }
 }
 
 namespace

@@ -37,11 +37,12 @@ struct SlicerSegmentSpec
 
 /** Writes a .seg.nrrd of unsigned char voxels: 3-D for one layer, else 4-D with a leading list axis
  *  ("kinds: list domain domain domain"), as 3D Slicer writes overlapping segments. Layer l's voxel
- *  (i, j, k) is layers[l](grid.point(i, j, k)); `extraFields` are written as they are. */
+ *  (i, j, k) is layers[l](grid.point(i, j, k)); `extraFields` are written as they are. The voxels
+ *  are raw, or gzip-compressed as Slicer writes them by default. */
 void writeSlicerSegmentation(const std::filesystem::path& path, const ImageGrid& grid,
                              const std::vector<std::function<unsigned char(const PhysicalPoint&)>>& layers,
                              const std::vector<SlicerSegmentSpec>& segments,
-                             const std::vector<std::string>& extraFields = {});
+                             const std::vector<std::string>& extraFields = {}, bool gzip = false);
 
 /** One segment of a DICOM SEG: inside(point) is the fraction of the segment at a pixel centre (0..1;
  *  a binary file sets the pixels where it is at least one half). */
