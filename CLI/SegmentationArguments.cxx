@@ -74,10 +74,18 @@ void readArguments(const ParsedArguments& arguments, PipelineSettings& settings)
 
   MultiLabelSettings& multi = settings.multiLabel;
   for (const std::string& label : split(arguments.text("labels"), ','))
-    multi.labels.push_back(static_cast<int>(toNumber(label, "--labels")));
+  {
+    char* end = nullptr;
+    const long value = std::strtol(label.c_str(), &end, 10);
+    if (end != label.c_str() && *end == '\0')
+      multi.labels.push_back(static_cast<int>(value));
+    else
+      multi.labelNames.push_back(label);
+  }
   multi.outputDirectory = arguments.text("outputDirectory");
   multi.colorTable = arguments.text("colorTable");
-  multi.enabled = arguments.flag("splitLabels") || !multi.labels.empty() || !multi.outputDirectory.empty();
+  multi.enabled = arguments.flag("splitLabels") || !multi.labels.empty() || !multi.labelNames.empty() ||
+                  !multi.outputDirectory.empty();
 }
 
 } // namespace

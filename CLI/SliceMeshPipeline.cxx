@@ -7,10 +7,12 @@
 #include "MeshSnapshot.h"
 #include "Measures/MeshComponents.h"
 #include "NiftiOrientation.h"
+#include "SegmentationFile.h"
 #include "SmallComponentRemoval.h"
 #include "VolumeReader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -141,51 +143,153 @@ Structure maskStructure(const ScalarVolume* volume, const PipelineSettings& sett
   return s;
 }
 
-/** One structure per label asked for (every non-zero label by default), in increasing order, each a
- *  mask cropped to the label's box; one pass over the volume finds them all. */
-std::vector<Structure> labelStructures(const ScalarVolume* volume, const PipelineSettings& settings,
-                                       const ColorTable& colors)
+/** What one structure of a multi-label run is cut from: a label value of one label map (the volume,
+ *  or a layer of a segmentation file) with its box, and the number, name and colour it goes by. */
+struct LabelSource
 {
-  const MultiLabelSettings& multi = settings.multiLabel;
-  std::vector<LabelExtent> extents =
-    guarded(EmptySegmentation, [&] { return indexLabels(volume); }); // messages name the volume below
-  if (!multi.labels.empty())
+  const ScalarVolume* labelMap = nullptr;
+  LabelExtent extent; ///< no voxels: an empty segment
+  int number = 0;     ///< the label value, or the segment's number
+  std::string name;
+  std::array<unsigned char, 4> rgba{ 128, 128, 128, 255 };
+};
+
+/** Every non-zero label of a label map, in increasing order, named and coloured by the table; one
+ *  pass over the volume finds them all. */
+std::vector<LabelSource> labelMapSources(const ScalarVolume* volume, const ColorTable& colors)
+{
+  std::vector<LabelSource> sources;
+  for (const LabelExtent& e : guarded(EmptySegmentation, [&] { return indexLabels(volume); }))
   {
-    std::set<int> wanted(multi.labels.begin(), multi.labels.end());
-    std::vector<LabelExtent> chosen;
-    for (const LabelExtent& e : extents)
-      if (wanted.erase(e.label))
-        chosen.push_back(e);
-    if (!wanted.empty())
+    const LabelColor entry = colors.entry(e.label);
+    sources.push_back({ volume, e, e.label, entry.name, entry.rgba });
+  }
+  return sources;
+}
+
+/** Every segment of a segmentation file, in the file's order, named and coloured by the file; one
+ *  pass over each layer finds them all. A segment without voxels keeps an empty extent. */
+std::vector<LabelSource> segmentSources(const SegmentationFile& file, const std::string& path)
+{
+  std::vector<std::vector<LabelExtent>> layerExtents;
+  for (const ScalarVolume::Pointer& layer : file.layers)
+  {
+    try
+    {
+      layerExtents.push_back(indexLabels(layer));
+    }
+    catch (const std::exception& e)
+    {
+      throw PipelineFailure(UnreadableInput, path + ": " + e.what());
+    }
+  }
+  std::vector<LabelSource> sources;
+  for (const SegmentationFile::Segment& segment : file.segments)
+  {
+    LabelSource source{ file.layers[segment.layer], {}, segment.number, segment.name, segment.rgba };
+    source.extent.label = segment.labelValue;
+    for (const LabelExtent& e : layerExtents[segment.layer])
+      if (e.label == segment.labelValue)
+        source.extent = e;
+    sources.push_back(source);
+  }
+  if (std::none_of(sources.begin(), sources.end(), [](const LabelSource& s) { return s.extent.voxels > 0; }))
+    throw PipelineFailure(EmptySegmentation, path + ": every segment of the " + file.format + " is empty; nothing to mesh");
+  return sources;
+}
+
+std::string lowerCase(std::string text)
+{
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+  return text;
+}
+
+/** One structure per source asked for (by number: label values or segment numbers; by name, any
+ *  case; neither: all), each a mask cropped to its box. An empty source (a segment without voxels)
+ *  is reported and dropped. */
+std::vector<Structure> labelStructures(std::vector<LabelSource> sources, const std::vector<int>& numbers,
+                                       const std::vector<std::string>& names, bool segments,
+                                       const PipelineSettings& settings)
+{
+  if (!numbers.empty() || !names.empty())
+  {
+    std::set<int> wanted(numbers.begin(), numbers.end());
+    std::set<std::string> wantedNames;
+    for (const std::string& name : names)
+      wantedNames.insert(lowerCase(name));
+    std::vector<LabelSource> chosen;
+    std::set<std::string> foundNames; // several labels may share a name: each is picked
+    for (const LabelSource& source : sources)
+    {
+      const bool byNumber = wanted.erase(source.number) > 0;
+      const bool byName = wantedNames.count(lowerCase(source.name)) > 0;
+      if (byName)
+        foundNames.insert(lowerCase(source.name));
+      if (byNumber || byName)
+        chosen.push_back(source);
+    }
+    for (const std::string& name : foundNames)
+      wantedNames.erase(name);
+    if (!wanted.empty() || !wantedNames.empty())
     {
       std::ostringstream message;
-      message << settings.inputVolume << ": no voxel has label";
-      for (int label : wanted)
-        message << " " << label;
-      message << " (" << extents.size() << " labels present)";
+      message << settings.inputVolume;
+      if (!wanted.empty())
+      {
+        message << (segments ? ": no segment numbered" : ": no voxel has label");
+        for (int label : wanted)
+          message << " " << label;
+      }
+      else
+      {
+        message << (segments ? ": no segment named" : ": no label named");
+        for (const std::string& name : names)
+          if (wantedNames.count(lowerCase(name)))
+            message << " '" << name << "'";
+      }
+      if (segments || wanted.empty())
+      {
+        constexpr std::size_t listed = 20; // enough to spot a misspelling, short enough for one line
+        message << (segments ? " (its segments:" : " (its labels:");
+        for (std::size_t n = 0; n < std::min(sources.size(), listed); ++n)
+          message << (n ? ", " : " ") << sources[n].number << " " << sources[n].name;
+        if (sources.size() > listed)
+          message << ", ... " << sources.size() << " in all";
+        message << ")";
+      }
+      else
+        message << " (" << sources.size() << " labels present)";
       throw PipelineFailure(EmptySegmentation, message.str());
     }
-    extents = chosen;
+    sources = chosen;
   }
-  if (extents.empty())
+  if (sources.empty())
     throw PipelineFailure(EmptySegmentation, settings.inputVolume + ": every voxel is 0; nothing to mesh");
   if (!settings.segmentation.refinement.seeds.empty())
     std::cerr << "SliceMesh: warning: seed points are ignored when meshing every label separately" << std::endl;
   MaskRefinementOptions refinement = settings.segmentation.refinement;
   refinement.seeds.clear();
 
-  std::vector<Structure> structures(extents.size());
-  for (std::size_t n = 0; n < extents.size(); ++n)
+  std::vector<Structure> structures(sources.size());
+  for (std::size_t n = 0; n < sources.size(); ++n)
   {
     Structure& s = structures[n];
-    const LabelColor entry = colors.entry(extents[n].label);
-    s.report.label = extents[n].label;
-    s.report.name = entry.name;
-    s.report.voxels = extents[n].voxels;
-    s.rgba = entry.rgba;
+    const LabelSource& source = sources[n];
+    s.report.label = source.number;
+    s.report.name = source.name;
+    s.report.voxels = source.extent.voxels;
+    s.rgba = source.rgba;
+    if (source.extent.voxels == 0)
+    {
+      // An empty segment is not a failure: the file says it exists, it has nothing to mesh.
+      s.report.dropped = true;
+      std::cerr << "SliceMesh: warning: segment " << source.number << " (" << source.name
+                << ") is empty; no mesh" << std::endl;
+      continue;
+    }
     try
     {
-      s.mask = cropLabelMask(volume, extents[n]);
+      s.mask = cropLabelMask(source.labelMap, source.extent);
       if (refinement.any())
         refineMask(s.mask, refinement);
       if (settings.minimumComponentVolume > 0.0)
@@ -288,7 +392,6 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
                            std::vector<LabelReport>* labels)
 {
   const auto began = Clock::now();
-  const bool perLabel = settings.multiLabel.enabled;
   const ColorTable colors = checkBeforeWork(settings);
   StageTimes times;
   auto startStage = [&](Stage stage)
@@ -298,15 +401,41 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   };
 
   startStage(Reading);
-  const ScalarVolume::Pointer volume = guarded(UnreadableInput, [&] { return readVolume(settings.inputVolume); });
-  if (const auto warning = niftiOrientationWarning(settings.inputVolume, volume))
-    std::cerr << "SliceMesh: warning: " << *warning << std::endl;
+  // A segmentation file (.seg.nrrd, DICOM SEG) names its structures: one mesh per segment.
+  const bool segmentationInput = settings.segmentation.kind != InputKind::Grayscale &&
+                                 segmentationFormatOf(settings.inputVolume) != SegmentationFormat::None;
+  const bool perLabel = settings.multiLabel.enabled || segmentationInput;
+  ScalarVolume::Pointer volume;
+  SegmentationFile segmentation;
+  if (segmentationInput)
+  {
+    segmentation = guarded(UnreadableInput, [&] { return readSegmentationFile(settings.inputVolume); });
+    if (!settings.multiLabel.colorTable.empty())
+      std::cerr << "SliceMesh: warning: --colorTable is not used: the segments' names and colours come from '"
+                << settings.inputVolume << "'" << std::endl;
+  }
+  else
+  {
+    volume = guarded(UnreadableInput, [&] { return readVolume(settings.inputVolume); });
+    if (const auto warning = niftiOrientationWarning(settings.inputVolume, volume))
+      std::cerr << "SliceMesh: warning: " << *warning << std::endl;
+  }
 
   startStage(Segmentation);
   std::vector<Structure> structures;
   std::vector<std::string> failures;
-  if (perLabel)
-    structures = labelStructures(volume, settings, colors);
+  if (segmentationInput)
+  {
+    // --label picks one segment as --labels does.
+    std::vector<int> picked = settings.multiLabel.labels;
+    if (picked.empty() && settings.multiLabel.labelNames.empty() && settings.segmentation.label)
+      picked.push_back(*settings.segmentation.label);
+    structures = labelStructures(segmentSources(segmentation, settings.inputVolume), picked,
+                                 settings.multiLabel.labelNames, true, settings);
+  }
+  else if (perLabel)
+    structures = labelStructures(labelMapSources(volume, colors), settings.multiLabel.labels,
+                                 settings.multiLabel.labelNames, false, settings);
   else
     structures.push_back(maskStructure(volume, settings));
   for (const Structure& s : structures)

@@ -81,6 +81,11 @@ std::vector<ProgressStage> pipelineStages();
  *  surface's; the Dirichlet energy is the tiling's. An invalid mesh is still written (the caller
  *  decides what that means).
  *
+ *  A segmentation file (3D Slicer .seg.nrrd, DICOM SEG; detected from its content unless the input
+ *  kind is Grayscale) is read instead of a volume and meshed one mesh per segment, as labels are,
+ *  each segment numbered, named and coloured by the file (--labels, or --label, picks segments by
+ *  number); a segment without voxels is reported (warning) and has no mesh.
+ *
  *  One mesh per label (settings.multiLabel): labels in increasing order, each stage reported once,
  *  its progress label by label. A label that fails is reported (error) and skipped; the others are
  *  still written, into their own files and the merged output model with a per-triangle "Label" and

@@ -87,19 +87,6 @@ void checkGeometry(const std::string& path, const double spacing[3], const doubl
   }
 }
 
-void checkGeometry(const std::string& path, const ScalarVolume* volume)
-{
-  double spacing[3];
-  double direction[3][3];
-  for (int i = 0; i < 3; ++i)
-  {
-    spacing[i] = volume->GetSpacing()[i];
-    for (int j = 0; j < 3; ++j)
-      direction[i][j] = volume->GetDirection()[i][j];
-  }
-  checkGeometry(path, spacing, direction);
-}
-
 /** Bytes per voxel a run holds at its peak besides the file's own voxels: the float volume (4), the
  *  mask (1), and the contours and mesh of a large structure. Measured: 1.66 GB peak for a 512 x 512 x
  *  400 label map with a large ellipsoid (2.56 M triangles), 15.8 bytes per voxel (README, "Limits"). */
@@ -320,7 +307,7 @@ ScalarVolume::Pointer readImageFile(const std::string& path)
     }
     volume->SetDirection(direction);
   }
-  checkGeometry(path, volume);
+  checkVolumeGeometry(path, volume);
   return volume;
 }
 
@@ -358,11 +345,24 @@ ScalarVolume::Pointer readDicomSeries(const std::string& directory)
   }
   ScalarVolume::Pointer volume = reader->GetOutput();
   volume->DisconnectPipeline();
-  checkGeometry(directory, volume);
+  checkVolumeGeometry(directory, volume);
   return volume;
 }
 
 } // namespace
+
+void checkVolumeGeometry(const std::string& path, const itk::ImageBase<3>* volume)
+{
+  double spacing[3];
+  double direction[3][3];
+  for (int i = 0; i < 3; ++i)
+  {
+    spacing[i] = volume->GetSpacing()[i];
+    for (int j = 0; j < 3; ++j)
+      direction[i][j] = volume->GetDirection()[i][j];
+  }
+  checkGeometry(path, spacing, direction);
+}
 
 ScalarVolume::Pointer readVolume(const std::string& path)
 {

@@ -16,6 +16,10 @@ using MaskVolume = itk::Image<unsigned char, 3>;
  *  Throws slicemesh::Error with a one-line message on a missing, unreadable or non-3D input. */
 ScalarVolume::Pointer readVolume(const std::string& path);
 
+/** Throws slicemesh::Error naming `path` unless the volume's spacing is positive and finite and its
+ *  direction matrix finite and invertible: a mesh cannot be placed otherwise. */
+void checkVolumeGeometry(const std::string& path, const itk::ImageBase<3>* volume);
+
 } // namespace slicemesh
 
 #endif

@@ -1,0 +1,209 @@
+// 3D Slicer's segmentation file (.seg.nrrd): a NRRD label map, or a stack of them along a list axis
+// (the layers, when segments overlap), with the segments described in SegmentN_ header fields.
+// ITK's NRRD reader gives the list axis as the voxel's components and keeps the fields in the
+// image's MetaDataDictionary.
+#include "SegmentationFile.h"
+
+#include "ColorTable.h"
+#include "MemoryBudget.h"
+
+#include "Core/SliceMeshTypes.h"
+
+#include "itkImageFileReader.h"
+#include "itkMetaDataObject.h"
+#include "itkNrrdImageIO.h"
+#include "itkVectorImage.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace slicemesh
+{
+namespace
+{
+
+/** The cause of an ITK NRRD error in a few words: the NRRD library's messages are a chain of
+ *  "[nrrd] function: trouble" after ITK's "ITK ERROR: NrrdImageIO(<address>): "; the last link says
+ *  what went wrong ("fread got only 42715 1-sized things, not 86400"). */
+std::string describe(const itk::ExceptionObject& error)
+{
+  std::string text = error.GetDescription() && *error.GetDescription() ? error.GetDescription() : error.what();
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  const std::string link = "[nrrd] ";
+  if (const std::size_t last = text.rfind(link); last != std::string::npos)
+  {
+    text = text.substr(last + link.size());
+    if (const std::size_t colon = text.find(": "); colon != std::string::npos && text.find(' ') > colon)
+      text = text.substr(colon + 2); // the function's name
+  }
+  else if (const std::size_t address = text.find("): "); text.compare(0, 10, "ITK ERROR:") == 0 && address != std::string::npos)
+    text = text.substr(address + 3);
+  while (!text.empty() && text.back() == ' ')
+    text.pop_back();
+  return text;
+}
+
+/** The SegmentN_ fields of the header, by N and then by field name ("Name", "Color", ...). */
+std::map<int, std::map<std::string, std::string>> segmentFields(const itk::MetaDataDictionary& dictionary)
+{
+  std::map<int, std::map<std::string, std::string>> fields;
+  const std::string prefix = "Segment";
+  for (const std::string& key : dictionary.GetKeys())
+  {
+    if (key.compare(0, prefix.size(), prefix) != 0)
+      continue;
+    std::size_t at = prefix.size();
+    while (at < key.size() && key[at] >= '0' && key[at] <= '9')
+      ++at;
+    if (at == prefix.size() || at >= key.size() || key[at] != '_' || at - prefix.size() > 6)
+      continue;
+    std::string value;
+    if (itk::ExposeMetaData<std::string>(dictionary, key, value))
+      fields[std::stoi(key.substr(prefix.size(), at - prefix.size()))][key.substr(at + 1)] = value;
+  }
+  return fields;
+}
+
+std::string headerField(const itk::MetaDataDictionary& dictionary, const std::string& key)
+{
+  std::string value;
+  itk::ExposeMetaData<std::string>(dictionary, key, value);
+  return value;
+}
+
+/** An integer field; throws naming the field when it is not one. */
+long integerField(const std::string& path, const std::string& key, const std::string& text)
+{
+  std::istringstream in(text);
+  long value = 0;
+  std::string rest;
+  if (!(in >> value) || (in >> rest))
+    throw Error(path + ": header field " + key + " is '" + text + "', not an integer");
+  return value;
+}
+
+std::array<unsigned char, 4> colorField(const std::string& path, const std::string& key, const std::string& text)
+{
+  std::istringstream in(text);
+  double rgb[3];
+  if (!(in >> rgb[0] >> rgb[1] >> rgb[2]))
+    throw Error(path + ": header field " + key + " is '" + text + "', not three numbers 0..1 (red green blue)");
+  std::array<unsigned char, 4> rgba{ 0, 0, 0, 255 };
+  for (int c = 0; c < 3; ++c)
+    rgba[c] = static_cast<unsigned char>(std::lround(std::clamp(rgb[c], 0.0, 1.0) * 255.0));
+  return rgba;
+}
+
+} // namespace
+
+SegmentationFile readSlicerSegmentation(const std::string& path)
+{
+  auto io = itk::NrrdImageIO::New();
+  try
+  {
+    io->SetFileName(path);
+    io->ReadImageInformation();
+  }
+  catch (const itk::ExceptionObject& error)
+  {
+    // ITK's NRRD reader decompresses the voxels of a gzip file already here.
+    throw Error(path + ": cannot read the NRRD header or voxels (a truncated or damaged file?): " + describe(error));
+  }
+  if (io->GetNumberOfDimensions() != 3)
+    throw Error(path + ": a segmentation of " + std::to_string(io->GetNumberOfDimensions()) +
+                " spatial dimensions; SliceMesh needs 3 (and a list axis of layers at most)");
+  const itk::MetaDataDictionary dictionary = io->GetMetaDataDictionary();
+  std::string representation = headerField(dictionary, "Segmentation_SourceRepresentation");
+  if (representation.empty())
+    representation = headerField(dictionary, "Segmentation_MasterRepresentation"); // Slicer before 5.2
+  if (!representation.empty() && representation != "Binary labelmap")
+    throw Error(path + ": holds a '" + representation + "' segmentation; SliceMesh reads binary labelmaps");
+
+  const std::size_t layerCount = io->GetNumberOfComponents();
+  {
+    double voxels = 1.0;
+    for (unsigned int axis = 0; axis < 3; ++axis)
+      voxels *= static_cast<double>(io->GetDimensions(axis));
+    // The file's voxels, the float stack ITK reads them into, the layers split from it, and the run.
+    const double bytesPerVoxel = static_cast<double>(layerCount) * (io->GetComponentSize() + 4.0 + 4.0) + 15.0;
+    std::ostringstream what;
+    what << path << ": a " << io->GetDimensions(0) << " x " << io->GetDimensions(1) << " x " << io->GetDimensions(2)
+         << " segmentation of " << layerCount << " layer(s)";
+    checkMemoryBudget(what.str(), voxels * bytesPerVoxel);
+  }
+
+  using LayerStack = itk::VectorImage<float, 3>;
+  auto reader = itk::ImageFileReader<LayerStack>::New();
+  reader->SetFileName(path);
+  reader->SetImageIO(io);
+  try
+  {
+    reader->Update();
+  }
+  catch (const itk::ExceptionObject& error)
+  {
+    throw Error(path + ": cannot read the voxels (a truncated or damaged file?): " + describe(error));
+  }
+  const LayerStack* stack = reader->GetOutput();
+
+  SegmentationFile file;
+  file.format = "3D Slicer segmentation";
+  const std::size_t voxels = stack->GetBufferedRegion().GetNumberOfPixels();
+  for (std::size_t layer = 0; layer < layerCount; ++layer)
+  {
+    auto volume = ScalarVolume::New();
+    volume->CopyInformation(stack);
+    volume->SetRegions(stack->GetBufferedRegion());
+    volume->Allocate();
+    const float* in = stack->GetBufferPointer() + layer;
+    float* out = volume->GetBufferPointer();
+    for (std::size_t n = 0; n < voxels; ++n, in += layerCount)
+      out[n] = *in;
+    checkVolumeGeometry(path, volume);
+    file.layers.push_back(volume);
+  }
+
+  const auto fields = segmentFields(dictionary);
+  // Slicer before 4.11 wrote one layer per segment, each segment's voxels 1, without _Layer and
+  // _LabelValue.
+  const bool layerPerSegment = layerCount > 1 && layerCount == fields.size();
+  std::size_t position = 0;
+  for (const auto& entry : fields)
+  {
+    const int index = entry.first;
+    const std::map<std::string, std::string>& segmentField = entry.second;
+    auto field = [&](const std::string& name)
+    {
+      const auto found = segmentField.find(name);
+      return found == segmentField.end() ? std::string() : found->second;
+    };
+    auto key = [&](const std::string& name) { return "Segment" + std::to_string(index) + "_" + name; };
+    SegmentationFile::Segment segment;
+    segment.number = index + 1;
+    segment.id = field("ID");
+    segment.name = !field("Name").empty() ? field("Name")
+                   : !segment.id.empty()  ? segment.id
+                                          : "Segment_" + std::to_string(segment.number);
+    segment.rgba =
+      field("Color").empty() ? ColorTable::generatedColor(segment.number) : colorField(path, key("Color"), field("Color"));
+    const long layer = field("Layer").empty() ? (layerPerSegment ? static_cast<long>(position) : 0)
+                                              : integerField(path, key("Layer"), field("Layer"));
+    if (layer < 0 || layer >= static_cast<long>(layerCount))
+      throw Error(path + ": " + key("Layer") + " is " + std::to_string(layer) + " but the file has " +
+                  std::to_string(layerCount) + " layer(s)");
+    segment.layer = static_cast<std::size_t>(layer);
+    const long value = field("LabelValue").empty() ? 1 : integerField(path, key("LabelValue"), field("LabelValue"));
+    if (value <= 0 || value > 2147483647L)
+      throw Error(path + ": " + key("LabelValue") + " is " + std::to_string(value) + "; a label value is a positive integer");
+    segment.labelValue = static_cast<int>(value);
+    file.segments.push_back(segment);
+    ++position;
+  }
+  if (file.segments.empty())
+    throw Error(path + ": a segmentation file without segments (no SegmentN_ header fields)");
+  return file;
+}
+
+} // namespace slicemesh

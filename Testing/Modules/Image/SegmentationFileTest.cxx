@@ -1,0 +1,345 @@
+// Reading segmentation files: 3D Slicer's .seg.nrrd (one and two layers, the fields of older
+// Slicers) and DICOM SEG (binary and fractional), written by the test: segments, names, colours,
+// layers, and voxels in the physical place they were written at.
+#include "SegmentationFile.h"
+#include "SegmentationFileWriters.h"
+
+#include "Core/SliceMeshTypes.h"
+#include "TestVolumes.h"
+
+#include "itkImageFileWriter.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+namespace slicemesh
+{
+namespace
+{
+
+namespace fs = std::filesystem;
+using testing::ImageGrid;
+using testing::PhysicalPoint;
+
+class SegmentationFileTest : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    std::random_device seed;
+    m_Directory = fs::temp_directory_path() / ("slicemesh-segfile-" + std::to_string(seed()));
+    fs::create_directories(m_Directory);
+  }
+  void TearDown() override { fs::remove_all(m_Directory); }
+  std::string path(const std::string& name) const { return (m_Directory / name).string(); }
+
+private:
+  fs::path m_Directory;
+};
+
+double distance(const PhysicalPoint& a, const PhysicalPoint& b)
+{
+  return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+}
+
+/** A mirrored grid (the first axis points to the patient's right) with anisotropic voxels. */
+ImageGrid mirroredGrid()
+{
+  ImageGrid grid;
+  grid.size = { 12, 10, 8 };
+  grid.spacing = { 0.8, 0.9, 1.5 };
+  grid.origin = { 30.0, -12.0, 4.0 };
+  grid.axes = { { { -1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } } };
+  return grid;
+}
+
+/** An oblique grid: rotated 30 degrees about z, then 20 degrees about the new x axis. */
+ImageGrid obliqueGrid()
+{
+  ImageGrid grid;
+  grid.size = { 14, 12, 9 };
+  grid.spacing = { 0.7, 0.9, 1.25 };
+  grid.origin = { -20.0, 15.0, -40.0 };
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6), ct = std::cos(M_PI / 9), st = std::sin(M_PI / 9);
+  grid.axes = { { { c, s, 0 }, { -s * ct, c * ct, st }, { s * st, -c * st, ct } } };
+  return grid;
+}
+
+/** The voxel value of `volume` at the physical point (which must be a voxel centre), or -1 outside. */
+float valueAt(const ScalarVolume* volume, const PhysicalPoint& p)
+{
+  ScalarVolume::PointType point;
+  for (int a = 0; a < 3; ++a)
+    point[a] = p[a];
+  ScalarVolume::IndexType index;
+  if (!volume->TransformPhysicalPointToIndex(point, index))
+    return -1.0f;
+  return volume->GetPixel(index);
+}
+
+TEST_F(SegmentationFileTest, SlicerTwoLayersGiveSegmentsWithNamesColoursLayersAndPlacedVoxels)
+{
+  const ImageGrid grid = mirroredGrid();
+  // Layer 0: value 1 on the voxels with i < 4, value 2 on j >= 7 (with i >= 4); layer 1: value 1 on
+  // i in [2, 6) (overlapping both).
+  const PhysicalPoint o = grid.origin;
+  auto indexOf = [&](const PhysicalPoint& p, int axis)
+  {
+    double t = 0;
+    for (int a = 0; a < 3; ++a)
+      t += (p[a] - o[a]) * grid.axes[axis][a];
+    return static_cast<int>(std::lround(t / grid.spacing[axis]));
+  };
+  testing::writeSlicerSegmentation(
+    path("two.seg.nrrd"), grid,
+    { [&](const PhysicalPoint& p) -> unsigned char { return indexOf(p, 0) < 4 ? 1 : indexOf(p, 1) >= 7 ? 2 : 0; },
+      [&](const PhysicalPoint& p) -> unsigned char { return indexOf(p, 0) >= 2 && indexOf(p, 0) < 6 ? 1 : 0; } },
+    { { "Segment_1", "Liver", "0.9 0.2 0.1", "0", "1" },
+      { "Segment_2", "Kidney", "0 0.5 1", "0", "2" },
+      { "Segment_3", "Tumor", "1 1 0", "1", "1" } });
+
+  ASSERT_EQ(segmentationFormatOf(path("two.seg.nrrd")), SegmentationFormat::SlicerNrrd);
+  const SegmentationFile file = readSegmentationFile(path("two.seg.nrrd"));
+  ASSERT_EQ(file.layers.size(), 2u);
+  ASSERT_EQ(file.segments.size(), 3u);
+  const std::array<std::string, 3> names{ "Liver", "Kidney", "Tumor" };
+  const std::array<std::array<unsigned char, 3>, 3> colours{ { { 230, 51, 26 }, { 0, 128, 255 }, { 255, 255, 0 } } };
+  const std::array<std::size_t, 3> layers{ 0, 0, 1 };
+  const std::array<int, 3> values{ 1, 2, 1 };
+  for (std::size_t n = 0; n < 3; ++n)
+  {
+    const SegmentationFile::Segment& s = file.segments[n];
+    EXPECT_EQ(s.number, static_cast<int>(n) + 1);
+    EXPECT_EQ(s.id, "Segment_" + std::to_string(n + 1));
+    EXPECT_EQ(s.name, names[n]);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_EQ(s.rgba[c], colours[n][c]) << names[n] << " component " << c;
+    EXPECT_EQ(s.layer, layers[n]) << names[n];
+    EXPECT_EQ(s.labelValue, values[n]) << names[n];
+  }
+  // Each layer has the file's geometry, and the voxel written at a point is read at that point.
+  for (const ScalarVolume::Pointer& layer : file.layers)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      EXPECT_NEAR(layer->GetOrigin()[a], grid.origin[a], 1e-9);
+      EXPECT_NEAR(layer->GetSpacing()[a], grid.spacing[a], 1e-9);
+      for (int b = 0; b < 3; ++b)
+        EXPECT_NEAR(layer->GetDirection()[a][b], grid.axes[b][a], 1e-9);
+    }
+  }
+  EXPECT_EQ(valueAt(file.layers[0], grid.point(3, 8, 2)), 1.0f);
+  EXPECT_EQ(valueAt(file.layers[0], grid.point(4, 8, 2)), 2.0f);
+  EXPECT_EQ(valueAt(file.layers[0], grid.point(4, 6, 2)), 0.0f);
+  EXPECT_EQ(valueAt(file.layers[1], grid.point(3, 8, 2)), 1.0f); // overlaps Liver there
+  EXPECT_EQ(valueAt(file.layers[1], grid.point(6, 8, 2)), 0.0f);
+}
+
+TEST_F(SegmentationFileTest, SlicerFileWithoutLayerFieldsHasALayerPerSegmentAndDefaults)
+{
+  // As Slicer before 4.11 wrote overlapping segments: one layer each, value 1, no _Layer or
+  // _LabelValue; no colour either (a generated one), no name (the ID instead).
+  const ImageGrid grid = mirroredGrid();
+  testing::writeSlicerSegmentation(path("old.seg.nrrd"), grid,
+                                   { [](const PhysicalPoint&) -> unsigned char { return 1; },
+                                     [](const PhysicalPoint& p) -> unsigned char { return p[2] > 8.0 ? 1 : 0; } },
+                                   { { "Skin", "Skin", "0.5 0.5 0.5", "", "" }, { "Bone", "", "", "", "" } });
+  const SegmentationFile file = readSlicerSegmentation(path("old.seg.nrrd"));
+  ASSERT_EQ(file.segments.size(), 2u);
+  EXPECT_EQ(file.segments[0].layer, 0u);
+  EXPECT_EQ(file.segments[1].layer, 1u);
+  EXPECT_EQ(file.segments[0].labelValue, 1);
+  EXPECT_EQ(file.segments[1].labelValue, 1);
+  EXPECT_EQ(file.segments[1].name, "Bone");
+  EXPECT_EQ(file.segments[0].rgba[0], 128);
+}
+
+TEST_F(SegmentationFileTest, SlicerSingleLayerFileIsThreeDimensional)
+{
+  const ImageGrid grid = mirroredGrid();
+  testing::writeSlicerSegmentation(path("one.seg.nrrd"), grid,
+                                   { [](const PhysicalPoint& p) -> unsigned char { return p[2] > 8.0 ? 3 : 0; } },
+                                   { { "Segment_1", "Heart", "1 0 0", "0", "3" } });
+  const SegmentationFile file = readSegmentationFile(path("one.seg.nrrd"));
+  ASSERT_EQ(file.layers.size(), 1u);
+  ASSERT_EQ(file.segments.size(), 1u);
+  EXPECT_EQ(file.segments[0].labelValue, 3);
+  EXPECT_EQ(valueAt(file.layers[0], grid.point(0, 0, 7)), 3.0f);
+}
+
+TEST_F(SegmentationFileTest, SlicerFieldsThatContradictTheImageAreErrors)
+{
+  const ImageGrid grid = mirroredGrid();
+  auto write = [&](const std::string& name, const testing::SlicerSegmentSpec& segment,
+                   const std::vector<std::string>& extra = {})
+  {
+    testing::writeSlicerSegmentation(path(name), grid, { [](const PhysicalPoint&) -> unsigned char { return 1; } },
+                                     { segment }, extra);
+    return path(name);
+  };
+  EXPECT_THROW(readSlicerSegmentation(write("layer.seg.nrrd", { "a", "A", "1 0 0", "2", "1" })), Error);
+  EXPECT_THROW(readSlicerSegmentation(write("value.seg.nrrd", { "a", "A", "1 0 0", "0", "one" })), Error);
+  EXPECT_THROW(readSlicerSegmentation(write("colour.seg.nrrd", { "a", "A", "red", "0", "1" })), Error);
+  EXPECT_THROW(readSlicerSegmentation(write("fraction.seg.nrrd", { "a", "A", "1 0 0", "0", "1" },
+                                            { "Segmentation_SourceRepresentation:=Fractional labelmap" })),
+               Error);
+  // A truncated file: the header promises more voxels than there are.
+  const std::string whole = write("whole.seg.nrrd", { "a", "A", "1 0 0", "0", "1" });
+  fs::resize_file(whole, fs::file_size(whole) - 300);
+  try
+  {
+    readSegmentationFile(whole);
+    ADD_FAILURE() << "a truncated .seg.nrrd was read";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(whole), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(SegmentationFileTest, OrdinaryVolumesAreNotSegmentationFiles)
+{
+  auto volume = testing::makeVolume({ 4, 4, 4 }, { 1.0, 1.0, 1.0 });
+  auto writer = itk::ImageFileWriter<ScalarVolume>::New();
+  for (const std::string name : { "plain.nrrd", "plain.mha", "plain.nii.gz" })
+  {
+    writer->SetInput(volume);
+    writer->SetFileName(path(name));
+    writer->Update();
+    EXPECT_EQ(segmentationFormatOf(path(name)), SegmentationFormat::None) << name;
+  }
+  EXPECT_EQ(segmentationFormatOf(path("missing.seg.nrrd")), SegmentationFormat::None);
+  EXPECT_THROW(readSegmentationFile(path("plain.nrrd")), Error);
+}
+
+/** A ball of radius 3 mm around `centre`, as the fraction of a pixel inside (0 or 1). */
+std::function<double(const PhysicalPoint&)> ball(const PhysicalPoint& centre, double radius)
+{
+  return [=](const PhysicalPoint& p) { return distance(p, centre) <= radius ? 1.0 : 0.0; };
+}
+
+TEST_F(SegmentationFileTest, DicomSegFramesLandWhereTheyWereWrittenOnAnObliqueGrid)
+{
+  const ImageGrid grid = obliqueGrid();
+  const PhysicalPoint centreA = grid.point(5, 5, 4), centreB = grid.point(8, 6, 5);
+  testing::writeDicomSegmentation(path("seg.dcm"), grid,
+                                  { { "Prostate", { 0.8, 0.3, 0.2 }, ball(centreA, 3.0) },
+                                    { "Lesion", { 0.1, 0.7, 0.2 }, ball(centreB, 2.5) },
+                                    { "Nothing", { 0.5, 0.5, 0.5 }, [](const PhysicalPoint&) { return 0.0; } } });
+  ASSERT_EQ(segmentationFormatOf(path("seg.dcm")), SegmentationFormat::DicomSeg);
+  const SegmentationFile file = readSegmentationFile(path("seg.dcm"));
+  ASSERT_EQ(file.segments.size(), 3u);
+  ASSERT_EQ(file.layers.size(), 3u);
+  EXPECT_EQ(file.segments[0].name, "Prostate");
+  EXPECT_EQ(file.segments[1].name, "Lesion");
+  EXPECT_EQ(file.segments[1].number, 2);
+  // The colour goes through CIELab and back: within one step of the RGB written.
+  const std::array<double, 3> rgb{ 0.8, 0.3, 0.2 };
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(file.segments[0].rgba[c], rgb[c] * 255.0, 1.0) << c;
+
+  // Every voxel centre of the grid: inside the ball exactly where the file's layer says so.
+  for (int s = 0; s < 2; ++s)
+  {
+    const ScalarVolume* layer = file.layers[s];
+    const PhysicalPoint centre = s == 0 ? centreA : centreB;
+    const double radius = s == 0 ? 3.0 : 2.5;
+    std::size_t inside = 0;
+    for (int k = 0; k < grid.size[2]; ++k)
+      for (int j = 0; j < grid.size[1]; ++j)
+        for (int i = 0; i < grid.size[0]; ++i)
+        {
+          const PhysicalPoint p = grid.point(i, j, k);
+          const bool expected = distance(p, centre) <= radius;
+          const float value = valueAt(layer, p);
+          // Outside the layer's slices the segment has no voxel.
+          EXPECT_EQ(value == 1.0f, expected) << "segment " << s + 1 << " voxel " << i << " " << j << " " << k;
+          inside += expected;
+        }
+    EXPECT_GT(inside, 20u);
+    // The layer covers only the slices with frames.
+    EXPECT_LT(layer->GetLargestPossibleRegion().GetSize()[2], static_cast<std::size_t>(grid.size[2]));
+  }
+  EXPECT_EQ(file.layers[2]->GetLargestPossibleRegion().GetNumberOfPixels(), 1u);
+  EXPECT_EQ(file.layers[2]->GetBufferPointer()[0], 0.0f);
+}
+
+TEST_F(SegmentationFileTest, DicomSegFractionalCountsFromHalfTheMaximum)
+{
+  ImageGrid grid;
+  grid.size = { 6, 4, 3 };
+  // Pixel i of every row holds fraction i / 5: 0, 0.2, 0.4, 0.6, 0.8, 1 (stored as i * 51 of 255);
+  // 127.5 is half, so pixels 3, 4, 5 are in (stored 153, 204, 255) and 2 (102) is not.
+  testing::writeDicomSegmentation(path("fractional.dcm"), grid,
+                                  { { "Ramp", { 1, 0, 0 }, [](const PhysicalPoint& p) { return p[0] / 5.0; } } }, 255);
+  const SegmentationFile file = readDicomSegmentation(path("fractional.dcm"));
+  ASSERT_EQ(file.layers.size(), 1u);
+  for (int i = 0; i < 6; ++i)
+    EXPECT_EQ(valueAt(file.layers[0], grid.point(i, 2, 1)), i >= 3 ? 1.0f : 0.0f) << i;
+}
+
+TEST_F(SegmentationFileTest, DicomSegFramesOffTheGridAreErrors)
+{
+  const ImageGrid grid = obliqueGrid();
+  const std::vector<testing::DicomSegmentSpec> segments{ { "Ball", { 1, 0, 0 }, ball(grid.point(6, 6, 4), 3.0) } };
+  auto moved = [&](int slice, double along, double across)
+  {
+    return [=](int k)
+    {
+      PhysicalPoint p = grid.point(0, 0, k);
+      if (k == slice)
+        for (int a = 0; a < 3; ++a)
+          p[a] += along * grid.axes[2][a] + across * grid.axes[0][a];
+      return p;
+    };
+  };
+  auto message = [&](const std::string& name)
+  {
+    try
+    {
+      readDicomSegmentation(path(name));
+    }
+    catch (const Error& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string("read without an error");
+  };
+  // Half a slice up: between two slices of the grid.
+  testing::writeDicomSegmentation(path("between.dcm"), grid, segments, 0, moved(5, 0.5 * grid.spacing[2], 0.0));
+  EXPECT_NE(message("between.dcm").find("not a whole number of slices of 1.25 mm"), std::string::npos)
+    << message("between.dcm");
+  // One millimetre along the rows: off the grid in its plane.
+  testing::writeDicomSegmentation(path("shifted.dcm"), grid, segments, 0, moved(3, 0.0, 1.0));
+  EXPECT_NE(message("shifted.dcm").find("shifted in its plane"), std::string::npos) << message("shifted.dcm");
+  // A whole slice up is a gap, not an error: the slice in between is empty.
+  testing::writeDicomSegmentation(path("gap.dcm"), grid, segments, 0, moved(6, grid.spacing[2], 0.0));
+  EXPECT_EQ(message("gap.dcm"), "read without an error");
+}
+
+TEST_F(SegmentationFileTest, BrokenDicomSegIsAnError)
+{
+  const ImageGrid grid = obliqueGrid();
+  testing::writeDicomSegmentation(path("whole.dcm"), grid,
+                                  { { "Ball", { 1, 0, 0 }, ball(grid.point(6, 6, 4), 3.0) } });
+  fs::copy_file(path("whole.dcm"), path("truncated.dcm"));
+  fs::resize_file(path("truncated.dcm"), fs::file_size(path("whole.dcm")) - 200);
+  try
+  {
+    readSegmentationFile(path("truncated.dcm"));
+    ADD_FAILURE() << "a truncated DICOM SEG was read";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("truncated.dcm"), std::string::npos) << e.what();
+  }
+}
+
+} // namespace
+} // namespace slicemesh
