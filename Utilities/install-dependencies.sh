@@ -7,6 +7,8 @@ packages=(
   cmake g++ make pkg-config
   libinsighttoolkit5-dev libvtk9-dev libcgal-dev libeigen3-dev libgmp-dev libmpfr-dev libtbb-dev
   libgtest-dev libtclap-dev
+  # Structure sets and contour files: DICOM RT (DCMTK), the JSON contour format, polygon booleans (Clipper).
+  libdcmtk-dev nlohmann-json3-dev libpolyclipping-dev
   libxml2-utils
   # --snapshot renders through X: Xvfb (xvfb-run needs xauth) where there is no display.
   xvfb xauth
