@@ -292,6 +292,15 @@ ParsedArguments parseCommandLine(const ModuleDescription& module, const std::vec
   }
 
   const std::vector<const ModuleParameter*> indexed = module.indexedParameters();
+  // A contour file given by --inputContours stands in for the input volume, which may then be left
+  // out (as 3D Slicer leaves out a volume nobody selected): the one positional argument is the output.
+  const bool volumeLeftOut = module.findByName("inputContours") && parsed.given("inputContours") &&
+                             indexed.size() == 2 && positional.size() == 1;
+  if (volumeLeftOut)
+  {
+    parsed.values[indexed[0]->name] = "";
+    positional.insert(positional.begin(), std::string());
+  }
   if (positional.size() > indexed.size())
   {
     throw ArgumentError("unexpected argument '" + positional[indexed.size()] + "' (see --help)");
@@ -299,6 +308,8 @@ ParsedArguments parseCommandLine(const ModuleDescription& module, const std::vec
   for (std::size_t k = 0; k < indexed.size(); ++k)
   {
     const ModuleParameter& p = *indexed[k];
+    if (volumeLeftOut && k == 0)
+      continue;
     if (k < positional.size())
     {
       checkValue(p, positional[k]);
