@@ -280,6 +280,12 @@ std::vector<Structure> roiStructures(const StructureSet& set, const PipelineSett
     }
     ContourRepairReport repair;
     s.contours.stack = repairContours(s.contours.stack, settings.contours.repair, &repair);
+    if (repair.any()) // a keyhole's perimeter is not its contours'
+    {
+      const double pointSpacing = automaticPointSpacing(s.contours.stack);
+      s.contours.spacing[0] = s.contours.spacing[1] = s.contours.frame.spacing[0] = s.contours.frame.spacing[1] =
+        pointSpacing;
+    }
     for (const std::string& note : s.contours.notes)
       std::cerr << "SliceMesh: warning: " << who(s, "ROI") << oneLine(note) << std::endl;
     if (repair.any())

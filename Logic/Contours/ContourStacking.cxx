@@ -154,6 +154,18 @@ Vector3 sliceNormalOf(const std::vector<Polygon3>& contours)
   return normal;
 }
 
+double automaticPointSpacing(const ContourStack& stack)
+{
+  // In-plane edges as long as the slices are apart give the tiling's walls near-equilateral
+  // triangles; a structure whose contours are small keeps at least 64 points around its median
+  // contour, and none gets points closer than 0.5 mm.
+  std::vector<double> perimeters;
+  for (const Slice& slice : stack.slices)
+    for (const Polygon2& contour : slice.contours)
+      perimeters.push_back(perimeter(contour));
+  return std::max(0.5, std::min(stack.sliceSpacing, median(std::move(perimeters), 64.0) / 64.0));
+}
+
 StackedContours stackContours(const std::vector<Polygon3>& contours, const ContourStackingOptions& options)
 {
   StackedContours result;
@@ -308,14 +320,7 @@ StackedContours stackContours(const std::vector<Polygon3>& contours, const Conto
   }
   result.stack.sliceSpacing = spacing;
 
-  double pointSpacing = options.pointSpacing;
-  if (!(pointSpacing > 0.0))
-  {
-    std::vector<double> lengths;
-    for (const Slice& slice : result.stack.slices)
-      appendEdgeLengths(slice.contours, lengths);
-    pointSpacing = std::clamp(median(std::move(lengths), 1.0), 0.5, std::max(0.5, spacing));
-  }
+  const double pointSpacing = options.pointSpacing > 0.0 ? options.pointSpacing : automaticPointSpacing(result.stack);
   result.spacing = { pointSpacing, pointSpacing, spacing };
   result.frame.origin = { 0.0, 0.0, 0.0 };
   result.frame.spacing = result.spacing;

@@ -34,8 +34,7 @@ struct ContourStackingOptions
   double sliceTolerance = 0.0;
   /** The slice spacing when the contours cannot tell it (all in one slice); 0: none known. */
   double fallbackSliceSpacing = 0.0;
-  /** Resample spacing in the slice plane (mm); 0: the median contour edge, kept within 0.5 mm and
-   *  the slice spacing. */
+  /** Resample spacing in the slice plane (mm); 0: automaticPointSpacing of the stack. */
   double pointSpacing = 0.0;
 };
 
@@ -60,6 +59,11 @@ struct StackedContours
  *  the largest contour's, signed so that its largest component is positive. Throws Error when no
  *  contour encloses an area. */
 Vector3 sliceNormalOf(const std::vector<Polygon3>& contours);
+
+/** The resample spacing in the slice plane for planar contours (mm): the stack's slice spacing
+ *  (the tiling's walls get near-equilateral triangles), at most a 64th of the median contour's
+ *  perimeter (small structures keep their shape), at least 0.5 mm. */
+double automaticPointSpacing(const ContourStack& stack);
 
 /** Sorts the contours into slices along the normal (options.sliceNormal, else sliceNormalOf):
  *  contours within the slice tolerance share a slice; a contour repeated in its slice is dropped;

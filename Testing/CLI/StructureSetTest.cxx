@@ -145,8 +145,10 @@ TEST(StructureSet, AnAnnulusWithItsHoleNestedOrAsAKeyholeIsATorusOfTheRightVolum
     const MeshValidation v = expectValid(run.folder / "rois" / file);
     EXPECT_EQ(v.components, 1u) << file;
     EXPECT_EQ(genus(v), 1) << file << ": the hole goes through";
-    // 1.5%: the remeshed and smoothed surface rounds the flat caps' rims.
-    EXPECT_NEAR(v.volume, annulusVolume(), 0.015 * annulusVolume()) << file;
+    // 2%: the caps half a slice beyond are joined to the end contours by a bevelled rim one wall
+    // row wide (measured -1.5% at the 2 mm point spacing chosen here, as tiled; at the contours,
+    // AtSlice, the tiling is exact); the finishing changes it by under 0.1%.
+    EXPECT_NEAR(v.volume, annulusVolume(), 0.02 * annulusVolume()) << file;
   }
   EXPECT_TRUE(hasLine(run.result.err, "ROI 2 (Annulus keyhole): keyholes")) << run.result.err;
   EXPECT_TRUE(hasLine(run.result.out, "SliceMesh: ROI 1 (Annulus nested): volume")) << run.result.out;
@@ -161,8 +163,8 @@ TEST(StructureSet, AnAnnulusWithItsHoleNestedOrAsAKeyholeIsATorusOfTheRightVolum
 
 TEST(StructureSet, TheTilingLiesExactlyOnTheContoursInPatientSpace)
 {
-  // --surfaceFinish Tiled keeps every contour vertex: the mesh must lie on the contours (LPS), its
-  // caps half a slice beyond the end ones; in RAS x and y change sign.
+  // --surfaceFinish Tiled keeps every vertex of the prepared contours: the mesh must lie on the
+  // contours (LPS), its caps half a slice beyond the end ones; in RAS x and y change sign.
   for (const std::string system : { "LPS", "RAS" })
   {
     const SetRun run = meshSet("Tiled" + system, { nestedAnnulus() }, "--surfaceFinish Tiled --coordinateSystem " + system);
@@ -180,9 +182,11 @@ TEST(StructureSet, TheTilingLiesExactlyOnTheContoursInPatientSpace)
     }
     EXPECT_NEAR(minZ, -0.5 * Spacing, 1e-9) << system;
     EXPECT_NEAR(maxZ, 27.0 + 0.5 * Spacing, 1e-9) << system;
-    EXPECT_NEAR(maxRadius, 20.0, 1e-6) << system << ": the outer contour's vertices are kept";
-    EXPECT_GT(minRadius, 10.0 * std::cos(Pi / 96) - 1e-6) << system << ": nothing inside the hole";
-    EXPECT_NEAR(minRadius, 10.0 * std::cos(Pi / 96), 0.1) << system;
+    // Resampled keeping their area, the contours' points stay within a fraction of the chords'
+    // sagitta (0.04 mm here) of the circles.
+    EXPECT_NEAR(maxRadius, 20.0, 0.05) << system;
+    EXPECT_GT(minRadius, 10.0 * std::cos(Pi / 96) - 0.05) << system << ": nothing inside the hole";
+    EXPECT_LT(minRadius, 10.0 + 0.05) << system;
   }
 }
 
