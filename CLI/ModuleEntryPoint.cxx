@@ -46,7 +46,7 @@ void readContourArguments(const ParsedArguments& arguments, PipelineSettings& se
                   : format == "PolyData" ? ContourFileKind::PolyData
                   : format == "JSON"     ? ContourFileKind::Json
                                          : ContourFileKind::Automatic;
-  if (arguments.given("inputContours"))
+  if (!arguments.text("inputContours").empty())
     contours.path = arguments.text("inputContours");
   else if (contours.kind != ContourFileKind::Automatic || detectContourFileKind(settings.inputVolume))
     contours.path = settings.inputVolume;

@@ -27,9 +27,7 @@ double coordinate(const Json& value, const std::string& path, const std::string&
   return number;
 }
 
-} // namespace
-
-StructureSet readContourJson(const std::string& path)
+StructureSet readDocument(const std::string& path)
 {
   std::ifstream in(path);
   if (!in)
@@ -112,6 +110,21 @@ StructureSet readContourJson(const std::string& path)
   if (set.structures.empty())
     malformed(path, "rois", "no ROI");
   return set;
+}
+
+} // namespace
+
+StructureSet readContourJson(const std::string& path)
+{
+  try
+  {
+    return readDocument(path);
+  }
+  catch (const Json::exception& e)
+  {
+    // A value of the wrong type where a name or number was expected.
+    throw Error("'" + path + "': " + e.what());
+  }
 }
 
 } // namespace slicemesh

@@ -181,7 +181,8 @@ TEST(StructureSetReader, AMalformedJsonFileSaysWhere)
   const fs::path dir = folder("badjson");
   writeText(dir / "a.json", R"({ "rois": [ { "slices": [ { "polygons": [ [[0, 0], [1, 1]] ] } ] } ] })");
   writeText(dir / "b.json", R"({ "rois": [ )");
-  for (const std::string name : { "a.json", "b.json" })
+  writeText(dir / "c.json", R"({ "rois": [ { "name": 5 } ] })");
+  for (const std::string name : { "a.json", "b.json", "c.json" })
   {
     try
     {
