@@ -161,6 +161,28 @@ TEST(StructureSet, AnAnnulusWithItsHoleNestedOrAsAKeyholeIsATorusOfTheRightVolum
   EXPECT_EQ(colors.back(), (std::array<unsigned char, 3>{ 0, 250, 0 }));
 }
 
+TEST(StructureSet, AHollowOrganKeepsItsClosedCavity)
+{
+  // A wall around a lumen that starts and ends inside it: the lumen's contours, nested in 7 of the
+  // 15 slices, make a closed cavity - a second, inward-facing surface - not a solid and not a tube.
+  PlanarStructure hollow = roi(3, "Hollow", { 0, 0, 250 });
+  for (int k = 0; k < 15; ++k)
+  {
+    hollow.contours.push_back(circle(0.0, -40.0, Spacing * k, 20.0));
+    if (k >= 4 && k <= 10)
+      hollow.contours.push_back(circle(0.0, -40.0, Spacing * k, 8.0, 48));
+  }
+  const SetRun run = meshSet("Hollow", { hollow });
+  ASSERT_EQ(run.result.exitCode, cli::Success) << run.result.err;
+  const MeshValidation v = expectValid(run.folder / "rois" / "003_Hollow.vtp");
+  EXPECT_EQ(v.components, 2u) << "the outer surface and the cavity's";
+  EXPECT_EQ(genus(v), 0);
+  // Each run of contours, the lumen's too, reaches half a slice beyond its end contours; 2.5%: the
+  // caps' bevelled rims (see the annulus).
+  const double expected = polygonArea(20.0) * 15 * Spacing - polygonArea(8.0, 48) * 7 * Spacing;
+  EXPECT_NEAR(v.volume, expected, 0.025 * expected);
+}
+
 TEST(StructureSet, TheTilingLiesExactlyOnTheContoursInPatientSpace)
 {
   // --surfaceFinish Tiled keeps every vertex of the prepared contours: the mesh must lie on the
