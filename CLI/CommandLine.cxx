@@ -77,9 +77,9 @@ void checkValue(const ModuleParameter& p, const std::string& value)
                        p.tag == "double-vector" || p.tag == "point" || p.tag == "region";
   if (!numeric)
   {
-    if (p.tag == "file" && p.channel == "output" && value.empty() && p.defaultValue.empty())
+    if (p.tag == "file" && value.empty() && p.defaultValue.empty())
     {
-      return; // an optional output file (--report, --snapshot) given empty: none, as Slicer leaves it out
+      return; // an optional file (--report, --snapshot, --inputContours) given empty: none, as Slicer leaves it out
     }
     if ((p.tag == "image" || p.tag == "geometry" || p.tag == "file") && value.empty())
     {
@@ -292,6 +292,15 @@ ParsedArguments parseCommandLine(const ModuleDescription& module, const std::vec
   }
 
   const std::vector<const ModuleParameter*> indexed = module.indexedParameters();
+  // A contour file given by --inputContours stands in for the input volume, which may then be left
+  // out (as 3D Slicer leaves out a volume nobody selected): the one positional argument is the output.
+  const bool volumeLeftOut = module.findByName("inputContours") && !parsed.values["inputContours"].empty() &&
+                             indexed.size() == 2 && positional.size() == 1;
+  if (volumeLeftOut)
+  {
+    parsed.values[indexed[0]->name] = "";
+    positional.insert(positional.begin(), std::string());
+  }
   if (positional.size() > indexed.size())
   {
     throw ArgumentError("unexpected argument '" + positional[indexed.size()] + "' (see --help)");
@@ -299,6 +308,8 @@ ParsedArguments parseCommandLine(const ModuleDescription& module, const std::vec
   for (std::size_t k = 0; k < indexed.size(); ++k)
   {
     const ModuleParameter& p = *indexed[k];
+    if (volumeLeftOut && k == 0)
+      continue;
     if (k < positional.size())
     {
       checkValue(p, positional[k]);

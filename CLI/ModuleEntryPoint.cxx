@@ -10,6 +10,7 @@
 #include "ReturnParameters.h"
 #include "SegmentationArguments.h"
 #include "SliceMeshPipeline.h"
+#include "StructureSet.h"
 #include "Core/ParallelFor.h"
 
 #include "itkObject.h"
@@ -35,11 +36,40 @@ int fail(ExitCode code, const std::string& message)
   return code;
 }
 
+/** The structure set or contour file to mesh: --inputContours, else the input itself when
+ *  --contourFormat names a kind or the file is detected as one; empty for a volume. */
+void readContourArguments(const ParsedArguments& arguments, PipelineSettings& settings)
+{
+  const std::string& format = arguments.text("contourFormat");
+  ContourInputSettings& contours = settings.contours;
+  contours.kind = format == "RTSTRUCT"   ? ContourFileKind::RTStruct
+                  : format == "PolyData" ? ContourFileKind::PolyData
+                  : format == "JSON"     ? ContourFileKind::Json
+                                         : ContourFileKind::Automatic;
+  if (!arguments.text("inputContours").empty())
+    contours.path = arguments.text("inputContours");
+  else if (contours.kind != ContourFileKind::Automatic || detectContourFileKind(settings.inputVolume))
+    contours.path = settings.inputVolume;
+  std::istringstream rois(arguments.text("rois"));
+  for (std::string roi; std::getline(rois, roi, ',');)
+  {
+    roi.erase(0, roi.find_first_not_of(" \t"));
+    roi.erase(roi.find_last_not_of(" \t") + 1);
+    if (!roi.empty())
+      contours.rois.push_back(roi);
+  }
+  if (!contours.rois.empty() && !contours.enabled())
+    std::cerr << "SliceMesh: warning: --rois is used only with a structure set or contour file; it has no effect"
+              << std::endl;
+  contours.repair.channelWidth = arguments.number("contourChannelWidth");
+}
+
 PipelineSettings settingsFrom(const ParsedArguments& arguments)
 {
   PipelineSettings settings;
   settings.inputVolume = arguments.text("inputVolume");
   settings.outputModel = arguments.text("outputModel");
+  readContourArguments(arguments, settings);
 
   const std::string& kind = arguments.text("inputKind");
   settings.segmentation.kind =
@@ -133,7 +163,36 @@ std::string summaryLine(const PipelineResult& result, const std::string& outputM
   return line.str();
 }
 
-ReturnValues returnValues(const PipelineResult& result)
+/** "SliceMesh: ROI 2 (PTV): volume 123.4 mm^3 (0.12 mL), 2048 triangles, closed, genus 0 -> 002_PTV.vtp",
+ *  or the ROI's error. */
+std::string roiLine(const LabelReport& roi)
+{
+  std::ostringstream line;
+  line << "SliceMesh: ROI " << roi.label << " (" << roi.name << "): ";
+  if (!roi.meshed())
+    line << "failed: " << oneLine(roi.error);
+  else
+  {
+    const MeshValidation& v = roi.validation;
+    line << "volume " << std::fixed << std::setprecision(1) << v.volume << " mm^3 (" << std::setprecision(2)
+         << v.volume / 1000.0 << " mL), " << v.triangles << " triangles, " << (v.valid() ? "valid" : "NOT valid")
+         << ", genus " << roi.quality.genus;
+    if (!roi.path.empty())
+      line << " -> " << roi.path;
+  }
+  return line.str();
+}
+
+/** How the ROI volumes count the end slices, once per run. */
+std::string capLine(const PipelineSettings& settings)
+{
+  return settings.meshing.reconstruction.capPlacement == CapPlacement::AtSlice
+           ? "SliceMesh: ROI volumes end at the first and last contours (--capPlacement AtSlice)"
+           : "SliceMesh: ROI volumes include half a slice beyond the first and last contours, as planning systems "
+             "count them (--capPlacement AtSlice ends them at the contours)";
+}
+
+ReturnValues returnValues(const PipelineResult& result, std::size_t structuresWritten)
 {
   std::ostringstream volume, seconds;
   volume << std::setprecision(10) << result.validation.volume;
@@ -141,7 +200,8 @@ ReturnValues returnValues(const PipelineResult& result)
   return { { "triangles", std::to_string(result.validation.triangles) },
            { "volume", volume.str() },
            { "closed", result.validation.closed() ? "true" : "false" },
-           { "seconds", seconds.str() } };
+           { "seconds", seconds.str() },
+           { "structuresWritten", std::to_string(structuresWritten) } };
 }
 
 } // namespace
@@ -198,17 +258,43 @@ int ModuleEntryPoint(int argc, char* argv[])
                               stderrIsTerminal ? &std::cerr : nullptr);
 
     PipelineResult result;
+    std::vector<LabelReport> structures;
+    std::size_t structuresWritten = 1;
+    bool finished = false;
     try
     {
       const PipelineSettings settings = settingsFrom(arguments);
       // The self-intersection test's threads (TBB) stay within --threads too.
       const tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, threadCount(settings.threads));
-      result = runPipeline(settings, progress);
+      auto printRois = [&]
+      {
+        if (!settings.contours.enabled() || structures.empty())
+          return;
+        for (const LabelReport& roi : structures)
+          std::cout << roiLine(roi) << std::endl;
+        std::cout << capLine(settings) << std::endl;
+      };
+      try
+      {
+        result = runPipeline(settings, progress, &structures);
+      }
+      catch (const PipelineFailure&)
+      {
+        progress.finish(false);
+        finished = true;
+        printRois(); // the ROIs that were written, and why the others were not
+        throw;
+      }
       progress.finish(true);
+      printRois();
+      if (!structures.empty())
+        structuresWritten = static_cast<std::size_t>(
+          std::count_if(structures.begin(), structures.end(), [](const LabelReport& s) { return s.meshed(); }));
     }
     catch (const PipelineFailure& e)
     {
-      progress.finish(false);
+      if (!finished)
+        progress.finish(false);
       return fail(e.code(), e.what());
     }
 
@@ -221,7 +307,7 @@ int ModuleEntryPoint(int argc, char* argv[])
     {
       try
       {
-        writeReturnParameters(arguments.returnParameterFile, returnValues(result));
+        writeReturnParameters(arguments.returnParameterFile, returnValues(result, structuresWritten));
       }
       catch (const Error& e)
       {

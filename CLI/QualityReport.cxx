@@ -135,6 +135,7 @@ RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshVal
       combined.finish = q.finish;
       combined.targetEdgeLength = q.targetEdgeLength; // every label's mask has the volume's spacing
       combined.contourPreparation = q.contourPreparation;
+      combined.capPlacement = q.capPlacement;
       combined.contourPointSpacing = q.contourPointSpacing;
       combined.contourSmoothingMaxShift = q.contourSmoothingMaxShift;
       combined.smoothingIterations = q.smoothingIterations;
@@ -231,6 +232,8 @@ void writeMeshBlocks(std::ostream& json, const std::string& indent, const MeshVa
   json << indent << "  \"contourPreparation\": " << jsonString(q.contourPreparation) << ",\n";
   number("contourPointSpacingMm", q.contourPointSpacing);
   number("contourSmoothingMaxShiftMm", q.contourSmoothingMaxShift);
+  json << indent << "  \"capPlacement\": " << jsonString(q.capPlacement.empty() ? "HalfSliceBeyond" : q.capPlacement)
+       << ",\n";
   number("wallRowHeightMm", q.wallRowHeight);
   number("steinerSpacingMm", q.steinerSpacing, true);
   json << indent << "},\n";

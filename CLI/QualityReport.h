@@ -51,6 +51,9 @@ struct RunQuality
   double contourPointSpacing = 0.0;    ///< resampling spacing (mm); 0: the traced points kept
   double contourSmoothingMaxShift = 0.0; ///< mm, when Smoothed
   double wallRowHeight = 0.0;          ///< mm
+  /** Where the end caps lie, which is how the volume counts the end slices: "HalfSliceBeyond"
+   *  (half a slice beyond the last contour, as planning systems count) or "AtSlice". */
+  std::string capPlacement;
   double steinerSpacing = 0.0;         ///< mm
   double pointSpacing = 0.0;       ///< mean in-plane distance between contour points (mm)
   double sliceSpacing = 0.0;       ///< mm

@@ -1,7 +1,10 @@
 #include "SliceMeshPipeline.h"
 
 #include "ColorTable.h"
+#include "ContourRepair.h"
+#include "Contours/ContourStacking.h"
 #include "Core/ParallelFor.h"
+#include "Core/PlanarGeometry.h"
 #include "LabelIndex.h"
 #include "MaskMeshing.h"
 #include "MeshSnapshot.h"
@@ -9,6 +12,7 @@
 #include "NiftiOrientation.h"
 #include "SegmentationFile.h"
 #include "SmallComponentRemoval.h"
+#include "StructureSet.h"
 #include "VolumeReader.h"
 
 #include <algorithm>
@@ -94,9 +98,10 @@ ColorTable checkBeforeWork(const PipelineSettings& settings)
   const fs::path output(settings.outputModel);
   requireWritableFolder(output.has_parent_path() ? output.parent_path() : ".", false,
                         "cannot write mesh '" + settings.outputModel + "'");
-  if (settings.multiLabel.enabled && !settings.multiLabel.outputDirectory.empty())
+  if ((settings.multiLabel.enabled || settings.contours.enabled()) && !settings.multiLabel.outputDirectory.empty())
     requireWritableFolder(settings.multiLabel.outputDirectory, true,
-                          "cannot write the label meshes into '" + settings.multiLabel.outputDirectory + "'");
+                          std::string("cannot write the ") + (settings.contours.enabled() ? "ROI" : "label") +
+                            " meshes into '" + settings.multiLabel.outputDirectory + "'");
   std::string reason;
   if (!settings.snapshotFile.empty() && !snapshotAvailable(&reason))
     throw PipelineFailure(WriteFailed, "cannot render snapshot '" + settings.snapshotFile + "': " + reason);
@@ -105,20 +110,24 @@ ColorTable checkBeforeWork(const PipelineSettings& settings)
   return {};
 }
 
-/** One structure on its way through the run: the mask, or one label of a label map. */
+/** One structure on its way through the run: the mask, one label of a label map, or one ROI of a
+ *  structure set. A mask is traced into contours; an ROI comes with its contours. */
 struct Structure
 {
-  LabelReport report;                              ///< label, name, file, figures, error
+  LabelReport report;                              ///< label (the ROI number), name, file, figures, error
   std::array<unsigned char, 4> rgba{ 128, 128, 128, 255 };
-  MaskVolume::Pointer mask;
+  MaskVolume::Pointer mask;                        ///< null for an ROI
+  StackedContours contours;                        ///< an ROI's stack, frame and grid spacing
   MeshedContours meshing;
   TriangleMesh physical;
   bool live() const { return report.meshed(); } ///< neither failed nor dropped
+  SliceFrame frame() const { return this->mask ? sliceFrameOf(this->mask) : this->contours.frame; }
 };
 
-std::string who(const Structure& s, bool perLabel)
+/** "label 3 (Hippocampus): ", "ROI 2 (PTV): " or nothing (a one-mesh run). */
+std::string who(const Structure& s, const std::string& noun)
 {
-  return perLabel ? "label " + std::to_string(s.report.label) + " (" + s.report.name + "): " : std::string();
+  return noun.empty() ? std::string() : noun + " " + std::to_string(s.report.label) + " (" + s.report.name + "): ";
 }
 
 /** The single mask of a one-mesh run, after --minimumComponentVolume. */
@@ -316,6 +325,80 @@ std::vector<Structure> labelStructures(std::vector<LabelSource> sources, const s
   return structures;
 }
 
+/** One structure per ROI asked for (every ROI by default), in the file's order: its contours as a
+ *  stack along their slice normal, crossings and keyholes repaired. An ROI whose contours lie in
+ *  one slice is one slice spacing thick, the usual spacing of the other ROIs. An ROI that cannot
+ *  be stacked (no contours, no spacing known) carries its error; every fault is one warning line. */
+std::vector<Structure> roiStructures(const StructureSet& set, const PipelineSettings& settings)
+{
+  const std::vector<PlanarStructure> rois =
+    guarded(EmptySegmentation, [&] { return chosenStructures(set, settings.contours.rois); });
+  std::vector<Structure> structures(rois.size());
+  ContourStackingOptions stacking;
+  stacking.sliceNormal = set.sliceNormal;
+  std::vector<double> spacings;
+  auto stack = [&](std::size_t n)
+  {
+    try
+    {
+      structures[n].contours = stackContours(rois[n].contours, stacking);
+      structures[n].report.error.clear();
+      return true;
+    }
+    catch (const Error& e)
+    {
+      structures[n].report.error = e.what();
+      return false;
+    }
+  };
+  for (std::size_t n = 0; n < rois.size(); ++n)
+  {
+    Structure& s = structures[n];
+    s.report.label = rois[n].number;
+    s.report.name = rois[n].name;
+    s.rgba = { rois[n].rgb[0], rois[n].rgb[1], rois[n].rgb[2], 255 };
+    for (const std::string& note : rois[n].notes)
+      std::cerr << "SliceMesh: warning: " << who(s, "ROI") << oneLine(note) << std::endl;
+    if (rois[n].contours.empty())
+      s.report.error = "has no contours";
+    else if (stack(n) && s.contours.stack.slices.size() > 1)
+      spacings.push_back(s.contours.stack.sliceSpacing);
+  }
+  // An ROI in one slice gets the set's usual spacing as its thickness.
+  stacking.fallbackSliceSpacing = median(spacings, 0.0);
+  for (std::size_t n = 0; n < rois.size(); ++n)
+    if (!structures[n].report.error.empty() && !rois[n].contours.empty() && stacking.fallbackSliceSpacing > 0.0)
+      stack(n);
+  for (Structure& s : structures)
+  {
+    if (!s.report.error.empty())
+      continue;
+    std::size_t filled = 0;
+    for (const Slice& slice : s.contours.stack.slices)
+      filled += slice.contours.empty() ? 0 : 1;
+    if (filled == 1 && settings.meshing.reconstruction.capPlacement == CapPlacement::AtSlice)
+    {
+      s.report.error = "all its contours lie in one slice, which has no thickness with the caps at the slice "
+                       "(--capPlacement AtSlice)";
+      continue;
+    }
+    ContourRepairReport repair;
+    s.contours.stack = repairContours(s.contours.stack, settings.contours.repair, &repair);
+    if (repair.any()) // a keyhole's perimeter is not its contours'
+    {
+      const double pointSpacing = automaticPointSpacing(s.contours.stack);
+      s.contours.spacing[0] = s.contours.spacing[1] = s.contours.frame.spacing[0] = s.contours.frame.spacing[1] =
+        pointSpacing;
+    }
+    for (const std::string& note : s.contours.notes)
+      std::cerr << "SliceMesh: warning: " << who(s, "ROI") << oneLine(note) << std::endl;
+    if (repair.any())
+      std::cerr << "SliceMesh: warning: " << who(s, "ROI") << repair.summary(settings.contours.repair.channelWidth)
+                << std::endl;
+  }
+  return structures;
+}
+
 std::size_t contourPoints(const ContourStack& stack)
 {
   std::size_t points = 0;
@@ -336,6 +419,8 @@ RunQuality runQualityOf(const MeshedContours& m)
   quality.sliceSpacing = m.measures.sliceSpacing;
   const ContourPreparationOptions& contours = m.options.contours;
   quality.contourPreparation = contours.mode == ContourPreparation::Smoothed ? "Smoothed" : "Traced";
+  quality.capPlacement =
+    m.options.reconstruction.capPlacement == CapPlacement::AtSlice ? "AtSlice" : "HalfSliceBeyond";
   quality.contourPointSpacing = contours.pointSpacing;
   quality.contourSmoothingMaxShift = contours.mode == ContourPreparation::Smoothed ? contours.smoothingMaxShift : 0.0;
   quality.wallRowHeight = m.reconstruction.wallRowHeight;
@@ -392,6 +477,13 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
                            std::vector<LabelReport>* labels)
 {
   const auto began = Clock::now();
+  const bool fromContours = settings.contours.enabled();
+  // A segmentation file (.seg.nrrd, DICOM SEG) names its structures: one mesh per segment.
+  const bool segmentationInput = !fromContours && settings.segmentation.kind != InputKind::Grayscale &&
+                                 segmentationFormatOf(settings.inputVolume) != SegmentationFormat::None;
+  const bool perLabel = settings.multiLabel.enabled || fromContours || segmentationInput; // one mesh per structure
+  const std::string noun = fromContours ? "ROI" : perLabel ? "label" : "";
+  const std::string input = fromContours ? settings.contours.path : settings.inputVolume;
   const ColorTable colors = checkBeforeWork(settings);
   StageTimes times;
   auto startStage = [&](Stage stage)
@@ -401,13 +493,12 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   };
 
   startStage(Reading);
-  // A segmentation file (.seg.nrrd, DICOM SEG) names its structures: one mesh per segment.
-  const bool segmentationInput = settings.segmentation.kind != InputKind::Grayscale &&
-                                 segmentationFormatOf(settings.inputVolume) != SegmentationFormat::None;
-  const bool perLabel = settings.multiLabel.enabled || segmentationInput;
   ScalarVolume::Pointer volume;
   SegmentationFile segmentation;
-  if (segmentationInput)
+  StructureSet structureSet;
+  if (fromContours)
+    structureSet = guarded(UnreadableInput, [&] { return readStructureSet(settings.contours.path, settings.contours.kind); });
+  else if (segmentationInput)
   {
     segmentation = guarded(UnreadableInput, [&] { return readSegmentationFile(settings.inputVolume); });
     if (!settings.multiLabel.colorTable.empty())
@@ -424,7 +515,9 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   startStage(Segmentation);
   std::vector<Structure> structures;
   std::vector<std::string> failures;
-  if (segmentationInput)
+  if (fromContours)
+    structures = roiStructures(structureSet, settings);
+  else if (segmentationInput)
   {
     // --label picks one segment as --labels does.
     std::vector<int> picked = settings.multiLabel.labels;
@@ -441,7 +534,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   for (const Structure& s : structures)
     if (!s.report.error.empty())
     {
-      failures.push_back(who(s, true) + s.report.error);
+      failures.push_back(who(s, noun) + s.report.error);
       std::cerr << "SliceMesh: error: " << failures.back() << std::endl;
     }
 
@@ -480,7 +573,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
                       catch (const std::exception& e)
                       {
                         s.report.error = e.what();
-                        errors[n] = who(s, true) + e.what();
+                        errors[n] = who(s, noun) + e.what();
                       }
                     }
                     s.report.seconds += std::chrono::duration<double>(Clock::now() - stepBegan).count();
@@ -500,7 +593,17 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   eachStructure(MeshingFailed,
                 [&](Structure& s, const std::function<void(double)>&)
                 {
-                  s.meshing = startMaskMeshing(s.mask, settings.meshing, settings.contourSmoothingSigma);
+                  if (s.mask)
+                    s.meshing = startMaskMeshing(s.mask, settings.meshing, settings.contourSmoothingSigma);
+                  else
+                  {
+                    // Planning-system contours are irregularly spaced: resampled (keeping their
+                    // area) to the ROI's point spacing unless one was asked for.
+                    MeshingOptions options = settings.meshing;
+                    if (!(options.contours.pointSpacing > 0.0))
+                      options.contours.pointSpacing = s.contours.spacing[0];
+                    s.meshing = startMeshing(s.contours.stack, options, s.contours.spacing);
+                  }
                   s.meshing.options.threads = structures.size() > 1 ? 1 : threads;
                   runMeshingStage(MeshingStage::Preparation, s.meshing);
                   if (!perLabel && contourPoints(s.meshing.stack) == 0)
@@ -514,7 +617,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   for (const Structure& s : structures) // in label order, after the structures ran side by side
     if (s.live())
       for (const std::string& note : s.meshing.sections.notes)
-        result.sections.notes.push_back(who(s, perLabel) + note);
+        result.sections.notes.push_back(who(s, noun) + note);
   for (const auto& [stage, meshingStage] : { std::pair{ Tiling, MeshingStage::Tiling },
                                              std::pair{ Validation, MeshingStage::Validation },
                                              std::pair{ Finishing, MeshingStage::Finishing } })
@@ -532,7 +635,10 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   std::vector<LabelReport> reports;
   std::vector<MeshValidation> validations;
   const fs::path output(settings.outputModel);
-  const int width = perLabel && !structures.empty() && structures.back().report.label >= 1000 ? 0 : 3;
+  const int width = perLabel && std::any_of(structures.begin(), structures.end(),
+                                            [](const Structure& s) { return s.report.label >= 1000; })
+                      ? 0
+                      : 3;
   for (Structure& s : structures)
   {
     if (s.live())
@@ -542,10 +648,10 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
       s.report.quality = runQualityOf(s.meshing);
       s.report.contourPoints = contourPoints(s.meshing.stack);
       if (!surface.fallback.empty())
-        std::cerr << "SliceMesh: warning: " << who(s, perLabel) << "surface finishing: " << oneLine(surface.fallback)
+        std::cerr << "SliceMesh: warning: " << who(s, noun) << "surface finishing: " << oneLine(surface.fallback)
                   << std::endl;
       s.physical = guarded(WriteFailed, [&]
-                           { return mapToPhysicalSpace(surface.mesh, sliceFrameOf(s.mask), settings.coordinateSystem); });
+                           { return mapToPhysicalSpace(surface.mesh, s.frame(), settings.coordinateSystem); });
       validations.push_back(surface.validation);
       if (perLabel)
       {
@@ -613,7 +719,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
     guarded(WriteFailed,
             [&]
             {
-              writeQualityReport(settings.reportFile, settings.inputVolume, settings.outputModel, result.validation,
+              writeQualityReport(settings.reportFile, input, settings.outputModel, result.validation,
                                  result.quality, result.seconds, perLabel ? reports : std::vector<LabelReport>{});
             });
   if (labels)
@@ -621,7 +727,8 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   if (!failures.empty())
   {
     std::ostringstream message;
-    message << failures.size() << " of " << structures.size() << " labels failed; the others were written. First: "
+    message << failures.size() << " of " << structures.size() << " " << noun << "s failed; "
+            << (merged.triangles.empty() ? "nothing was written" : "the others were written") << ". First: "
             << failures.front();
     throw PipelineFailure(MeshingFailed, message.str());
   }

@@ -5,6 +5,7 @@
 #ifndef SliceMeshPipeline_h
 #define SliceMeshPipeline_h
 
+#include "ContourInputSettings.h"
 #include "ExitCodes.h"
 #include "MeshWriter.h"
 #include "Meshing/MeshingOptions.h"
@@ -36,6 +37,9 @@ struct PipelineSettings
   std::string snapshotFile; ///< PNG picture coloured by triangle quality; empty: none
   /** One mesh per label of a label map. */
   MultiLabelSettings multiLabel;
+  /** A structure set or contour file instead of the volume: one mesh per ROI, named, coloured and
+   *  written as the labels of a multi-label run (multiLabel's output folder). */
+  ContourInputSettings contours;
   /** Threads for the whole run (labels side by side, and the work inside each); 0: every core. */
   unsigned int threads = 0;
 };
@@ -92,7 +96,14 @@ std::vector<ProgressStage> pipelineStages();
  *  "Color". --minimumComponentVolume drops a label left empty (warning, no file); the run fails with
  *  EmptySegmentation only when every label is dropped. The validation sums the labels' figures;
  *  after writing, MeshingFailed names the failed labels. `labels`, when given, receives each
- *  label's figures. */
+ *  label's figures.
+ *
+ *  A structure set or contour file (settings.contours): read -> per ROI, its contours as a stack
+ *  along their own slice normal (stackContours), crossings and keyholes repaired (repairContours)
+ *  -> the same stages from the contours on, ROI by ROI as labels (an ROI that is empty, cannot be
+ *  stacked or fails is reported and skipped; the others are written) -> the ROI's frame to
+ *  physical space -> one file per ROI "<number>_<name>.<ext>" in the output folder and the merged
+ *  model. A file that cannot be read is UnreadableInput; --rois naming no ROI, EmptySegmentation. */
 PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& progress,
                            std::vector<LabelReport>* labels = nullptr);
 

@@ -7,8 +7,9 @@ packages=(
   cmake g++ make pkg-config
   libinsighttoolkit5-dev libvtk9-dev libcgal-dev libeigen3-dev libgmp-dev libmpfr-dev libtbb-dev
   libgtest-dev libtclap-dev
-  # DICOM SEG segmentation files (DCMTK's dcmseg).
-  libdcmtk-dev
+  # DICOM SEG segmentation files and RT structure sets (DCMTK), the JSON contour format, polygon
+  # booleans for contours that cross (Clipper).
+  libdcmtk-dev nlohmann-json3-dev libpolyclipping-dev
   libxml2-utils
   # --snapshot renders through X: Xvfb (xvfb-run needs xauth) where there is no display.
   xvfb xauth

@@ -54,6 +54,21 @@ TEST(CommandLine, FillsDefaultsFromTheXml)
   EXPECT_FALSE(a.given("label"));
 }
 
+TEST(CommandLine, InputContoursStandsInForTheInputVolume)
+{
+  // 3D Slicer leaves out a volume nobody selected: the one positional argument is then the output.
+  const ParsedArguments alone = parse({ "--inputContours", "RS.dcm", "out.vtp" });
+  EXPECT_EQ(alone.text("inputContours"), "RS.dcm");
+  EXPECT_EQ(alone.text("inputVolume"), "");
+  EXPECT_EQ(alone.text("outputModel"), "out.vtp");
+  const ParsedArguments both = parse({ "--inputContours", "RS.dcm", "ct.nrrd", "out.vtp" });
+  EXPECT_EQ(both.text("inputVolume"), "ct.nrrd");
+  EXPECT_EQ(both.text("outputModel"), "out.vtp");
+  // Given empty (as a panel passes an unset file), it is no contour file and the volume is needed.
+  EXPECT_NE(errorOf({ "--inputContours", "", "out.vtp" }).find("missing argument <outputModel>"), std::string::npos);
+  EXPECT_NE(errorOf({ "out.vtp" }).find("missing argument <outputModel>"), std::string::npos);
+}
+
 TEST(CommandLine, AcceptsLongShortAndEqualsForms)
 {
   EXPECT_EQ(parse({ "--label", "3", "in", "out.vtp" }).integer("label"), 3);

@@ -112,7 +112,11 @@ TEST(ModuleXml, DeclaresTheInputOutputAndReturnParametersSlicerNeeds)
             "1");
   EXPECT_EQ(xpath("substring(//geometry[normalize-space(name)='outputModel']/@fileExtensions, 1, 4)"), ".vtp")
     << "Slicer passes a temporary file with the first listed extension";
-  for (const std::string name : { "triangles", "volume", "closed", "seconds" })
+  // A structure set or contour file is a file input of its own: the panel has no node for it.
+  EXPECT_EQ(xpath("count(//file[normalize-space(name)='inputContours'][normalize-space(longflag)='--inputContours']"
+                  "[normalize-space(channel)='input'][contains(@fileExtensions, '.dcm')])"),
+            "1");
+  for (const std::string name : { "triangles", "volume", "closed", "seconds", "structuresWritten" })
   {
     EXPECT_EQ(xpath("count(//parameters/*[normalize-space(name)='" + name +
                     "'][normalize-space(channel)='output'][not(flag) and not(longflag) and not(index)])"),

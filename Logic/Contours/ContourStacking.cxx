@@ -1,0 +1,332 @@
+#include "Contours/ContourStacking.h"
+
+#include "Core/PlanarGeometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace slicemesh
+{
+namespace
+{
+
+constexpr double Pi = 3.14159265358979323846;
+
+double dot(const Vector3& a, const Vector3& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+Vector3 cross(const Vector3& a, const Vector3& b)
+{
+  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+}
+
+double norm(const Vector3& a)
+{
+  return std::sqrt(dot(a, a));
+}
+
+Vector3 scaled(const Vector3& a, double s)
+{
+  return { a[0] * s, a[1] * s, a[2] * s };
+}
+
+Vector3 asVector(const Point3& p)
+{
+  return { p.x, p.y, p.z };
+}
+
+/** The contour without a closing point that repeats the first (many files store it). */
+Polygon3 withoutClosingPoint(Polygon3 contour)
+{
+  while (contour.size() > 1 && contour.front().x == contour.back().x && contour.front().y == contour.back().y &&
+         contour.front().z == contour.back().z)
+    contour.pop_back();
+  return contour;
+}
+
+/** An in-plane orthonormal basis (u, v) with u x v = normal: u from the patient axis most
+ *  perpendicular to the normal, so axial contours keep x along L and y along P. */
+std::pair<Vector3, Vector3> inPlaneBasis(const Vector3& normal)
+{
+  const Vector3 axis = std::abs(normal[0]) < 0.9 ? Vector3{ 1.0, 0.0, 0.0 } : Vector3{ 0.0, 1.0, 0.0 };
+  Vector3 u = axis;
+  const double along = dot(axis, normal);
+  for (int k = 0; k < 3; ++k)
+    u[k] -= along * normal[k];
+  u = scaled(u, 1.0 / norm(u));
+  return { u, cross(normal, u) };
+}
+
+/** Whether two contours of one slice are the same polygon (in either direction, from any start). */
+bool sameContour(const Polygon2& a, const Polygon2& b, double tolerance)
+{
+  const std::size_t n = a.size();
+  if (n != b.size() || n == 0)
+    return false;
+  std::size_t start = 0;
+  for (std::size_t j = 1; j < n; ++j)
+    if (distance(a[0], b[j]) < distance(a[0], b[start]))
+      start = j;
+  for (int direction : { 1, -1 })
+  {
+    bool same = true;
+    for (std::size_t i = 0; i < n && same; ++i)
+    {
+      const std::size_t j = (start + n + static_cast<std::size_t>(direction) * i) % n;
+      same = distance(a[i], b[j]) <= tolerance;
+    }
+    if (same)
+      return true;
+  }
+  return false;
+}
+
+std::string millimetres(double value)
+{
+  std::ostringstream text;
+  text.precision(4);
+  text << value << " mm";
+  return text.str();
+}
+
+} // namespace
+
+Vector3 newellNormal(const Polygon3& contour)
+{
+  Vector3 normal{ 0.0, 0.0, 0.0 };
+  if (contour.size() < 3)
+    return normal;
+  // About the centroid: far from the origin, the products would lose the digits that matter.
+  Vector3 centre{ 0.0, 0.0, 0.0 };
+  for (const Point3& p : contour)
+    centre = { centre[0] + p.x, centre[1] + p.y, centre[2] + p.z };
+  centre = scaled(centre, 1.0 / static_cast<double>(contour.size()));
+  for (std::size_t i = 0; i < contour.size(); ++i)
+  {
+    const Point3& p = contour[i];
+    const Point3& q = contour[(i + 1) % contour.size()];
+    const double px = p.x - centre[0], py = p.y - centre[1], pz = p.z - centre[2];
+    const double qx = q.x - centre[0], qy = q.y - centre[1], qz = q.z - centre[2];
+    normal[0] += (py - qy) * (pz + qz);
+    normal[1] += (pz - qz) * (px + qx);
+    normal[2] += (px - qx) * (py + qy);
+  }
+  return normal;
+}
+
+Vector3 sliceNormalOf(const std::vector<Polygon3>& contours)
+{
+  std::vector<Vector3> normals;
+  std::size_t largest = 0;
+  for (const Polygon3& contour : contours)
+  {
+    normals.push_back(newellNormal(withoutClosingPoint(contour)));
+    if (norm(normals.back()) > norm(normals[largest]))
+      largest = normals.size() - 1;
+  }
+  if (normals.empty() || !(norm(normals[largest]) > 0.0))
+    throw Error("no contour encloses an area: the slice plane is undefined");
+  const Vector3 reference = scaled(normals[largest], 1.0 / norm(normals[largest]));
+  // Area-weighted (a Newell normal's length is twice the area), signs aligned to the largest
+  // contour (windings are unreliable), contours tilted by more than 5 degrees left out.
+  const double agree = std::cos(5.0 * Pi / 180.0);
+  Vector3 sum{ 0.0, 0.0, 0.0 };
+  for (const Vector3& n : normals)
+  {
+    const double length = norm(n);
+    if (!(length > 0.0))
+      continue;
+    const double cosine = dot(n, reference) / length;
+    if (std::abs(cosine) < agree)
+      continue;
+    const double sign = cosine < 0.0 ? -1.0 : 1.0;
+    for (int k = 0; k < 3; ++k)
+      sum[k] += sign * n[k];
+  }
+  Vector3 normal = scaled(sum, 1.0 / norm(sum));
+  const auto biggest = std::max_element(normal.begin(), normal.end(),
+                                        [](double a, double b) { return std::abs(a) < std::abs(b); });
+  if (*biggest < 0.0)
+    normal = scaled(normal, -1.0);
+  return normal;
+}
+
+double automaticPointSpacing(const ContourStack& stack)
+{
+  // In-plane edges as long as the slices are apart give the tiling's walls near-equilateral
+  // triangles; a structure whose contours are small keeps at least 64 points around its median
+  // contour, and none gets points closer than 0.5 mm.
+  std::vector<double> perimeters;
+  for (const Slice& slice : stack.slices)
+    for (const Polygon2& contour : slice.contours)
+      perimeters.push_back(perimeter(contour));
+  return std::max(0.5, std::min(stack.sliceSpacing, median(std::move(perimeters), 64.0) / 64.0));
+}
+
+StackedContours stackContours(const std::vector<Polygon3>& contours, const ContourStackingOptions& options)
+{
+  StackedContours result;
+  Vector3 normal = options.sliceNormal ? *options.sliceNormal : sliceNormalOf(contours);
+  if (!(norm(normal) > 0.0))
+    throw Error("the slice normal is zero");
+  normal = scaled(normal, 1.0 / norm(normal));
+  const auto [u, v] = inPlaneBasis(normal);
+
+  struct Placed
+  {
+    double position = 0.0; ///< along the normal, mm
+    Polygon2 contour;
+  };
+  std::vector<Placed> placed;
+  std::size_t tilted = 0, arealess = 0;
+  const double maxTiltCosine = std::cos(options.maxTiltDegrees * Pi / 180.0);
+  for (const Polygon3& raw : contours)
+  {
+    const Polygon3 contour = withoutClosingPoint(raw);
+    const Vector3 n = newellNormal(contour);
+    const double length = norm(n);
+    if (contour.size() < 3 || !(length > 1e-12))
+    {
+      ++arealess;
+      continue;
+    }
+    if (std::abs(dot(n, normal)) / length < maxTiltCosine)
+    {
+      ++tilted;
+      continue;
+    }
+    Placed p;
+    for (const Point3& point : contour)
+    {
+      const Vector3 x = asVector(point);
+      p.position += dot(x, normal);
+      p.contour.push_back({ dot(x, u), dot(x, v) });
+    }
+    p.position /= static_cast<double>(contour.size());
+    placed.push_back(std::move(p));
+  }
+  if (arealess > 0)
+    result.notes.push_back(std::to_string(arealess) + " contour(s) with fewer than three points or no area skipped");
+  if (tilted > 0)
+  {
+    std::ostringstream note;
+    note << tilted << " contour(s) tilted by more than " << options.maxTiltDegrees
+         << " degrees from the slice plane skipped";
+    result.notes.push_back(note.str());
+  }
+  if (placed.empty())
+    throw Error("no closed planar contour with an area");
+  std::stable_sort(placed.begin(), placed.end(), [](const Placed& a, const Placed& b) { return a.position < b.position; });
+
+  // Slices: contours within the tolerance of a slice's first contour share it.
+  double tolerance = options.sliceTolerance;
+  if (!(tolerance > 0.0))
+  {
+    // Planners round positions by up to a few hundredths of a millimetre; no slices are that close.
+    std::vector<double> clearGaps;
+    for (std::size_t i = 1; i < placed.size(); ++i)
+      if (placed[i].position - placed[i - 1].position > 0.05)
+        clearGaps.push_back(placed[i].position - placed[i - 1].position);
+    tolerance = std::min(0.25, 0.25 * median(clearGaps, 1.0));
+  }
+  std::vector<std::vector<const Placed*>> groups;
+  for (const Placed& p : placed)
+  {
+    if (groups.empty() || p.position - groups.back().front()->position > tolerance)
+      groups.emplace_back();
+    groups.back().push_back(&p);
+  }
+
+  std::size_t duplicates = 0;
+  std::vector<Slice> slices;
+  for (const auto& group : groups)
+  {
+    Slice slice;
+    double sum = 0.0;
+    for (const Placed* p : group)
+    {
+      sum += p->position;
+      const bool repeated = std::any_of(slice.contours.begin(), slice.contours.end(),
+                                        [&](const Polygon2& kept) { return sameContour(kept, p->contour, 1e-3); });
+      if (repeated)
+        ++duplicates;
+      else
+        slice.contours.push_back(p->contour);
+    }
+    slice.z = sum / static_cast<double>(group.size());
+    result.contoursUsed += slice.contours.size();
+    slices.push_back(std::move(slice));
+  }
+  if (duplicates > 0)
+    result.notes.push_back(std::to_string(duplicates) + " contour(s) repeated in their slice dropped");
+
+  std::vector<double> gaps;
+  for (std::size_t k = 1; k < slices.size(); ++k)
+    gaps.push_back(slices[k].z - slices[k - 1].z);
+  double spacing = median(gaps, options.fallbackSliceSpacing);
+  if (!(spacing > 0.0))
+  {
+    std::ostringstream message;
+    message << "all " << result.contoursUsed << " contour(s) lie in one slice (at " << millimetres(slices.front().z)
+            << " along the normal) and the slice spacing is unknown: no thickness to mesh";
+    throw Error(message.str());
+  }
+  if (slices.size() == 1)
+    result.notes.push_back("all contours lie in one slice: meshed as a slab one slice spacing (" +
+                           millimetres(spacing) + ") thick");
+  if (!gaps.empty())
+  {
+    // Usual gaps only: a missing slice is reported below, not as unevenness.
+    double smallest = spacing, largest = spacing;
+    for (double gap : gaps)
+      if (gap < 1.5 * spacing)
+      {
+        smallest = std::min(smallest, gap);
+        largest = std::max(largest, gap);
+      }
+    if (largest - smallest > 0.05 * spacing)
+      result.notes.push_back("uneven slice spacing: gaps from " + millimetres(smallest) + " to " +
+                             millimetres(largest) + " (usual " + millimetres(spacing) + ")");
+  }
+
+  // A gap of one missing slice is tiled across, as a planner interpolates; a longer one means the
+  // structure stops and starts again: empty slices there close each piece on its own.
+  for (std::size_t k = 0; k < slices.size(); ++k)
+  {
+    if (k > 0)
+    {
+      const double gap = slices[k].z - slices[k - 1].z;
+      const long steps = std::lround(gap / spacing);
+      if (steps >= 2)
+      {
+        std::ostringstream note;
+        note << "gap of " << millimetres(gap) << " between the slices at " << millimetres(slices[k - 1].z) << " and "
+             << millimetres(slices[k].z) << " (usual spacing " << millimetres(spacing) << "): ";
+        if (steps == 2)
+          note << "one slice missing, tiled across it";
+        else
+        {
+          note << "the structure stops and starts again; each side is closed on its own";
+          for (long step = 1; step < steps; ++step)
+            result.stack.slices.push_back({ slices[k - 1].z + gap * static_cast<double>(step) / static_cast<double>(steps), {} });
+        }
+        result.notes.push_back(note.str());
+      }
+    }
+    result.stack.slices.push_back(std::move(slices[k]));
+  }
+  result.stack.sliceSpacing = spacing;
+
+  const double pointSpacing = options.pointSpacing > 0.0 ? options.pointSpacing : automaticPointSpacing(result.stack);
+  result.spacing = { pointSpacing, pointSpacing, spacing };
+  result.frame.origin = { 0.0, 0.0, 0.0 };
+  result.frame.spacing = result.spacing;
+  for (int row = 0; row < 3; ++row)
+    result.frame.direction[row] = { u[row], v[row], normal[row] };
+  return result;
+}
+
+} // namespace slicemesh

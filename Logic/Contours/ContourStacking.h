@@ -1,0 +1,77 @@
+// Planar contours given in 3-D (an ROI of a structure set, a contour file) as a contour stack: the
+// slice normal found from the contours themselves, the contours sorted into slices along it, and
+// the stack frame that puts the stack back exactly where the contours were.
+#ifndef ContourStacking_h
+#define ContourStacking_h
+
+#include "Core/SliceMeshTypes.h"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace slicemesh
+{
+
+/** A closed planar contour in 3-D (mm); the last point connects back to the first. */
+using Polygon3 = std::vector<Point3>;
+
+using Vector3 = std::array<double, 3>;
+
+/** Newell's normal of a closed polygon: its direction is the plane's normal (right-handed with the
+ *  winding), its length twice the enclosed area; robust to a few points off the plane. */
+Vector3 newellNormal(const Polygon3& contour);
+
+struct ContourStackingOptions
+{
+  /** The slice normal when known (e.g. from the referenced image series); empty: from the contours. */
+  std::optional<Vector3> sliceNormal;
+  /** Contours whose own normal is further than this from the slice normal are skipped (degrees). */
+  double maxTiltDegrees = 10.0;
+  /** Contours closer than this along the normal share a slice (mm); 0: a quarter of the median gap
+   *  over 0.05 mm between contour positions (the slice spacing), at most 0.25 mm. */
+  double sliceTolerance = 0.0;
+  /** The slice spacing when the contours cannot tell it (all in one slice); 0: none known. */
+  double fallbackSliceSpacing = 0.0;
+  /** Resample spacing in the slice plane (mm); 0: automaticPointSpacing of the stack. */
+  double pointSpacing = 0.0;
+};
+
+/** The contours as a stack, and what had to be done to get there. */
+struct StackedContours
+{
+  /** Slices at the positions along the normal, x and y in the in-plane basis (mm). sliceSpacing is
+   *  the usual gap between slices: the thickness each slice stands for. */
+  ContourStack stack;
+  /** origin + direction * (x, y, z) is the patient position of a stack point; the direction's
+   *  columns are the in-plane basis and the normal (orthonormal, right-handed). spacing is `spacing`. */
+  SliceFrame frame;
+  /** In-plane point spacing (twice) and slice spacing: the grid the meshing options are resolved for. */
+  std::array<double, 3> spacing{ 1.0, 1.0, 1.0 };
+  std::size_t contoursUsed = 0;
+  /** One line each: contours skipped (tilted, no area), duplicates dropped, gaps bridged or left
+   *  open, uneven spacing. */
+  std::vector<std::string> notes;
+};
+
+/** The slice normal of the contours: the area-weighted mean of the Newell normals that agree with
+ *  the largest contour's, signed so that its largest component is positive. Throws Error when no
+ *  contour encloses an area. */
+Vector3 sliceNormalOf(const std::vector<Polygon3>& contours);
+
+/** The resample spacing in the slice plane for planar contours (mm): the stack's slice spacing
+ *  (the tiling's walls get near-equilateral triangles), at most a 64th of the median contour's
+ *  perimeter (small structures keep their shape), at least 0.5 mm. */
+double automaticPointSpacing(const ContourStack& stack);
+
+/** Sorts the contours into slices along the normal (options.sliceNormal, else sliceNormalOf):
+ *  contours within the slice tolerance share a slice; a contour repeated in its slice is dropped;
+ *  a gap of one missing slice is tiled across, a longer gap leaves empty slices so the pieces on
+ *  either side are closed on their own. Throws Error when no contour is left or when all lie in one
+ *  slice and no spacing is known. */
+StackedContours stackContours(const std::vector<Polygon3>& contours, const ContourStackingOptions& options = {});
+
+} // namespace slicemesh
+
+#endif

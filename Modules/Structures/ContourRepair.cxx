@@ -1,0 +1,151 @@
+#include "ContourRepair.h"
+
+#include "Contours/ContourCrossings.h"
+#include "Core/PlanarGeometry.h"
+
+#include <polyclipping/clipper.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace slicemesh
+{
+namespace
+{
+
+// Clipper works on integers: 0.1 micrometre steps.
+constexpr double Scale = 1e4;
+// Where pieces meet at a point they are pulled apart by this much (mm).
+constexpr double Separation = 1.5e-3;
+
+ClipperLib::Paths toPaths(const std::vector<Polygon2>& contours)
+{
+  ClipperLib::Paths paths;
+  for (const Polygon2& contour : contours)
+  {
+    ClipperLib::Path path;
+    path.reserve(contour.size());
+    for (const Point2& p : contour)
+      path.push_back({ static_cast<ClipperLib::cInt>(std::llround(p.x * Scale)),
+                       static_cast<ClipperLib::cInt>(std::llround(p.y * Scale)) });
+    paths.push_back(std::move(path));
+  }
+  return paths;
+}
+
+ClipperLib::Paths offset(const ClipperLib::Paths& paths, double delta)
+{
+  // Miter joins: corners stay corners, so growing and shrinking back returns the same polygon
+  // wherever nothing narrower than the channel width was closed.
+  ClipperLib::ClipperOffset offsetter(8.0);
+  offsetter.AddPaths(paths, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
+  ClipperLib::Paths result;
+  offsetter.Execute(result, delta * Scale);
+  return result;
+}
+
+std::string heights(const std::vector<double>& z)
+{
+  std::ostringstream text;
+  text.precision(5);
+  text << "z = ";
+  for (std::size_t k = 0; k < z.size() && k < 5; ++k)
+    text << (k ? ", " : "") << z[k];
+  if (z.size() > 5)
+    text << ", ...";
+  text << " mm";
+  return text.str();
+}
+
+/** Whether two contour edges cross properly (each passes through the other's interior), rather
+ *  than touch or lie along each other as a keyhole's channel does. Exact predicates. */
+bool properCrossing(const std::vector<Polygon2>& contours, const ContourEdge& e, const ContourEdge& f)
+{
+  auto ends = [&](const ContourEdge& edge)
+  {
+    const Polygon2& c = contours[edge.contour];
+    return std::pair<const Point2&, const Point2&>(c[edge.edge], c[(edge.edge + 1) % c.size()]);
+  };
+  const auto [a, b] = ends(e);
+  const auto [c, d] = ends(f);
+  return orientation(a, b, c) * orientation(a, b, d) < 0 && orientation(c, d, a) * orientation(c, d, b) < 0;
+}
+
+std::string slices(std::size_t count)
+{
+  return std::to_string(count) + (count == 1 ? " slice" : " slices");
+}
+
+} // namespace
+
+std::string ContourRepairReport::summary(double channelWidth) const
+{
+  std::ostringstream text;
+  if (!crossingSlices.empty())
+    text << "contours crossing in " << slices(crossingSlices.size()) << " (" << heights(crossingSlices)
+         << ") repaired by the even-odd rule";
+  if (!channelSlices.empty())
+    text << (crossingSlices.empty() ? "" : "; ") << "keyholes (contours running into their holes and back), touching "
+         << "contours or channels under " << channelWidth << " mm split or closed in " << slices(channelSlices.size())
+         << " (" << heights(channelSlices) << ")";
+  return text.str();
+}
+
+std::vector<Polygon2> evenOddRegion(const std::vector<Polygon2>& contours, const ContourRepairOptions& options)
+{
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(toPaths(contours), ClipperLib::ptSubject, true);
+  ClipperLib::Paths region;
+  clipper.Execute(ClipperLib::ctUnion, region, ClipperLib::pftEvenOdd, ClipperLib::pftEvenOdd);
+  // Closing (grow, then shrink a little further): channels narrower than the width vanish, and
+  // pieces that met at a point come apart.
+  const double half = 0.5 * options.channelWidth;
+  ClipperLib::Paths closed = offset(offset(region, half), -(half + Separation));
+  ClipperLib::Clipper cleaner;
+  cleaner.StrictlySimple(true);
+  cleaner.AddPaths(closed, ClipperLib::ptSubject, true);
+  ClipperLib::Paths simple;
+  cleaner.Execute(ClipperLib::ctUnion, simple, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+
+  std::vector<Polygon2> result;
+  const double smallest = options.channelWidth * options.channelWidth * Scale * Scale;
+  for (const ClipperLib::Path& path : simple)
+  {
+    if (path.size() < 3 || std::abs(ClipperLib::Area(path)) < smallest)
+      continue; // crumbs of a crossing
+    Polygon2 contour;
+    contour.reserve(path.size());
+    for (const ClipperLib::IntPoint& p : path)
+      contour.push_back({ static_cast<double>(p.X) / Scale, static_cast<double>(p.Y) / Scale });
+    result.push_back(std::move(contour));
+  }
+  return result;
+}
+
+ContourStack repairContours(const ContourStack& stack, const ContourRepairOptions& options, ContourRepairReport* report)
+{
+  ContourStack result = stack;
+  ContourRepairReport found;
+  for (Slice& slice : result.slices)
+  {
+    if (slice.contours.empty())
+      continue;
+    const auto crossings = contourCrossings(slice.contours);
+    const bool crossing = std::any_of(crossings.begin(), crossings.end(), [&](const auto& pair)
+                                      { return properCrossing(slice.contours, pair.first, pair.second); });
+    std::vector<Polygon2> region = evenOddRegion(slice.contours, options);
+    if (crossing)
+      found.crossingSlices.push_back(slice.z);
+    else if (!crossings.empty() || region.size() != slice.contours.size())
+      found.channelSlices.push_back(slice.z);
+    else
+      continue; // kept exactly as given
+    slice.contours = std::move(region);
+  }
+  if (report)
+    *report = found;
+  return result;
+}
+
+} // namespace slicemesh

@@ -1,0 +1,108 @@
+// What kind of contour file a path holds, reading by kind, and choosing ROIs.
+#include "StructureSet.h"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <iterator>
+#include <set>
+
+namespace slicemesh
+{
+namespace
+{
+
+std::string fileStart(const std::string& path, std::size_t bytes)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string start(bytes, '\0');
+  in.read(start.data(), static_cast<std::streamsize>(bytes));
+  start.resize(static_cast<std::size_t>(std::max<std::streamsize>(0, in.gcount())));
+  return start;
+}
+
+std::string lowercase(std::string text)
+{
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+} // namespace
+
+std::optional<ContourFileKind> detectContourFileKind(const std::string& path)
+{
+  // A DICOM file's Modality and SOP Class come long before its contours; searching the raw start
+  // also recognises a structure set cut short, whose reader then says what is wrong.
+  const std::string start = fileStart(path, 65536);
+  if (start.size() >= 132 && start.compare(128, 4, "DICM") == 0)
+  {
+    const bool rtStruct = start.find("RTSTRUCT") != std::string::npos ||
+                          start.find("1.2.840.10008.5.1.4.1.1.481.3") != std::string::npos;
+    return rtStruct ? std::optional(ContourFileKind::RTStruct) : std::nullopt;
+  }
+  if (start.rfind("# vtk DataFile", 0) == 0)
+    return start.find("POLYDATA") != std::string::npos ? std::optional(ContourFileKind::PolyData) : std::nullopt;
+  const std::string head = lowercase(start.substr(0, 1024));
+  if ((head.rfind("<?xml", 0) == 0 || head.rfind("<vtkfile", 0) == 0) && head.find("type=\"polydata\"") != std::string::npos)
+    return ContourFileKind::PolyData;
+  const auto first = std::find_if(start.begin(), start.end(), [](unsigned char c) { return !std::isspace(c); });
+  if (first != start.end() && *first == '{')
+    return ContourFileKind::Json;
+  return std::nullopt;
+}
+
+StructureSet readStructureSet(const std::string& path, ContourFileKind kind)
+{
+  if (kind == ContourFileKind::Automatic)
+  {
+    const auto detected = detectContourFileKind(path);
+    if (!detected)
+      throw Error("'" + path + "' is not a contour file (a DICOM RT Structure Set, VTK polydata or SliceMesh JSON)");
+    kind = *detected;
+  }
+  switch (kind)
+  {
+    case ContourFileKind::RTStruct: return readRTStructureSet(path);
+    case ContourFileKind::PolyData: return readContourPolyData(path);
+    case ContourFileKind::Json: break;
+    case ContourFileKind::Automatic: break;
+  }
+  return readContourJson(path);
+}
+
+std::vector<PlanarStructure> chosenStructures(const StructureSet& set, const std::vector<std::string>& wanted)
+{
+  if (wanted.empty())
+    return set.structures;
+  std::vector<bool> chosen(set.structures.size(), false);
+  std::vector<std::string> unmatched;
+  for (const std::string& item : wanted)
+  {
+    bool matched = false;
+    for (std::size_t n = 0; n < set.structures.size(); ++n)
+    {
+      const PlanarStructure& s = set.structures[n];
+      if (item == s.name || item == std::to_string(s.number) || lowercase(item) == lowercase(s.name))
+        chosen[n] = matched = true;
+    }
+    if (!matched)
+      unmatched.push_back(item);
+  }
+  if (!unmatched.empty())
+  {
+    std::string message = "no ROI is called or numbered";
+    for (const std::string& item : unmatched)
+      message += " '" + item + "'";
+    message += "; the ROIs are";
+    for (const PlanarStructure& s : set.structures)
+      message += " " + std::to_string(s.number) + " (" + s.name + ")";
+    throw Error(message);
+  }
+  std::vector<PlanarStructure> result;
+  for (std::size_t n = 0; n < set.structures.size(); ++n)
+    if (chosen[n])
+      result.push_back(set.structures[n]);
+  return result;
+}
+
+} // namespace slicemesh

@@ -1,0 +1,186 @@
+// Planar contours in 3-D as a contour stack: the slice normal from the contours, slices along it,
+// the frame that maps the stack back onto the contours, and the faults of real structure sets
+// (uneven spacing, missing slices, duplicates, tilted contours, a single slice).
+#include "Contours/ContourStacking.h"
+#include "Core/PlanarGeometry.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace slicemesh
+{
+namespace
+{
+
+constexpr double Pi = 3.14159265358979323846;
+
+/** A square of side 2a about centre c in the plane spanned by unit vectors e1, e2. */
+Polygon3 square(const Vector3& c, const Vector3& e1, const Vector3& e2, double a)
+{
+  Polygon3 points;
+  for (const auto& [s, t] : { std::pair{ -1.0, -1.0 }, { 1.0, -1.0 }, { 1.0, 1.0 }, { -1.0, 1.0 } })
+    points.push_back({ c[0] + a * (s * e1[0] + t * e2[0]), c[1] + a * (s * e1[1] + t * e2[1]),
+                       c[2] + a * (s * e1[2] + t * e2[2]) });
+  return points;
+}
+
+Point3 toPhysical(const SliceFrame& frame, double x, double y, double z)
+{
+  const auto& d = frame.direction;
+  return { frame.origin[0] + d[0][0] * x + d[0][1] * y + d[0][2] * z,
+           frame.origin[1] + d[1][0] * x + d[1][1] * y + d[1][2] * z,
+           frame.origin[2] + d[2][0] * x + d[2][1] * y + d[2][2] * z };
+}
+
+bool mentions(const std::vector<std::string>& notes, const std::string& word)
+{
+  for (const std::string& note : notes)
+    if (note.find(word) != std::string::npos)
+      return true;
+  return false;
+}
+
+TEST(ContourStacking, NewellNormalIsTwiceTheAreaAlongThePlaneNormal)
+{
+  const Vector3 n = newellNormal(square({ 100.0, -50.0, 7.0 }, { 1, 0, 0 }, { 0, 1, 0 }, 2.0));
+  EXPECT_NEAR(n[0], 0.0, 1e-12);
+  EXPECT_NEAR(n[1], 0.0, 1e-12);
+  EXPECT_NEAR(n[2], 2.0 * 16.0, 1e-9); // counter-clockwise seen from +z: +z, twice the 16 mm^2
+}
+
+TEST(ContourStacking, AxialContoursKeepThePatientAxesAndTheirPositions)
+{
+  std::vector<Polygon3> contours;
+  for (int k = 0; k < 4; ++k) // windings alternate: they must not matter
+  {
+    Polygon3 s = square({ 10.0, 20.0, -30.0 + 2.5 * k }, { 1, 0, 0 }, { 0, 1, 0 }, 5.0);
+    if (k % 2)
+      std::reverse(s.begin(), s.end());
+    contours.push_back(s);
+  }
+  const StackedContours stacked = stackContours(contours);
+  ASSERT_EQ(stacked.stack.slices.size(), 4u);
+  EXPECT_NEAR(stacked.stack.sliceSpacing, 2.5, 1e-12);
+  EXPECT_EQ(stacked.contoursUsed, 4u);
+  EXPECT_TRUE(stacked.notes.empty());
+  for (int row = 0; row < 3; ++row)
+    for (int column = 0; column < 3; ++column)
+      EXPECT_NEAR(stacked.frame.direction[row][column], row == column ? 1.0 : 0.0, 1e-12);
+  EXPECT_NEAR(stacked.stack.slices[0].z, -30.0, 1e-12);
+  EXPECT_NEAR(stacked.spacing[2], 2.5, 1e-12);
+}
+
+TEST(ContourStacking, ObliqueContoursMapBackExactlyThroughTheFrame)
+{
+  // Slices tilted 30 degrees about x and 20 about z: every point must come back to where it was.
+  const double a = 30.0 * Pi / 180.0, b = 20.0 * Pi / 180.0;
+  const Vector3 e1{ std::cos(b), std::sin(b), 0.0 };
+  const Vector3 e2{ -std::sin(b) * std::cos(a), std::cos(b) * std::cos(a), std::sin(a) };
+  const Vector3 normal{ e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0] };
+  std::vector<Polygon3> contours;
+  for (int k = 0; k < 5; ++k)
+    contours.push_back(square({ 40.0 + 3.0 * k * normal[0], -120.0 + 3.0 * k * normal[1], 300.0 + 3.0 * k * normal[2] },
+                              e1, e2, 4.0 + k));
+  const StackedContours stacked = stackContours(contours);
+  ASSERT_EQ(stacked.stack.slices.size(), 5u);
+  EXPECT_NEAR(stacked.stack.sliceSpacing, 3.0, 1e-9);
+  double worst = 0.0;
+  for (std::size_t k = 0; k < 5; ++k)
+  {
+    const Slice& slice = stacked.stack.slices[k];
+    ASSERT_EQ(slice.contours.size(), 1u);
+    for (std::size_t i = 0; i < 4; ++i)
+    {
+      const Point3 p = toPhysical(stacked.frame, slice.contours[0][i].x, slice.contours[0][i].y, slice.z);
+      const Point3& q = contours[k][i];
+      worst = std::max(worst, std::hypot(p.x - q.x, p.y - q.y, p.z - q.z));
+    }
+  }
+  EXPECT_LT(worst, 1e-9) << "the frame must put the contours back where they were";
+  // The frame is orthonormal and right-handed.
+  const auto& d = stacked.frame.direction;
+  const double det = d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) - d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
+                     d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
+  EXPECT_NEAR(det, 1.0, 1e-12);
+}
+
+TEST(ContourStacking, ATiltedContourAmongAxialOnesIsSkippedAndTheNormalStaysAxial)
+{
+  std::vector<Polygon3> contours;
+  for (int k = 0; k < 6; ++k)
+    contours.push_back(square({ 0.0, 0.0, 3.0 * k }, { 1, 0, 0 }, { 0, 1, 0 }, 10.0));
+  contours.push_back(square({ 0.0, 0.0, 7.0 }, { 1, 0, 0 }, { 0, 0, 1 }, 3.0)); // a coronal stray
+  const Vector3 normal = sliceNormalOf(contours);
+  EXPECT_NEAR(normal[2], 1.0, 1e-12);
+  const StackedContours stacked = stackContours(contours);
+  EXPECT_EQ(stacked.contoursUsed, 6u);
+  EXPECT_TRUE(mentions(stacked.notes, "tilted")) << "the skipped contour must be reported";
+}
+
+TEST(ContourStacking, ContoursOfOneSliceGroupDespiteSmallOffsetsAndDuplicatesAreDropped)
+{
+  std::vector<Polygon3> contours;
+  for (int k = 0; k < 3; ++k)
+  {
+    contours.push_back(square({ -20.0, 0.0, 3.0 * k }, { 1, 0, 0 }, { 0, 1, 0 }, 5.0));
+    contours.push_back(square({ 20.0, 0.0, 3.0 * k + 0.004 }, { 1, 0, 0 }, { 0, 1, 0 }, 5.0)); // planner rounding
+  }
+  Polygon3 repeated = contours[2];
+  std::rotate(repeated.begin(), repeated.begin() + 2, repeated.end()); // same polygon, other start
+  contours.push_back(repeated);
+  const StackedContours stacked = stackContours(contours);
+  ASSERT_EQ(stacked.stack.slices.size(), 3u);
+  for (const Slice& slice : stacked.stack.slices)
+    EXPECT_EQ(slice.contours.size(), 2u);
+  EXPECT_TRUE(mentions(stacked.notes, "repeated"));
+}
+
+TEST(ContourStacking, UnevenSpacingIsToleratedAndReported)
+{
+  std::vector<Polygon3> contours;
+  for (double z : { 0.0, 2.9, 6.1, 9.0, 12.0 })
+    contours.push_back(square({ 0.0, 0.0, z }, { 1, 0, 0 }, { 0, 1, 0 }, 5.0));
+  const StackedContours stacked = stackContours(contours);
+  EXPECT_EQ(stacked.stack.slices.size(), 5u);
+  EXPECT_NEAR(stacked.stack.sliceSpacing, 2.95, 0.06); // the median gap
+  EXPECT_TRUE(mentions(stacked.notes, "uneven"));
+}
+
+TEST(ContourStacking, OneMissingSliceIsTiledAcrossALongerGapClosesEachSide)
+{
+  std::vector<Polygon3> contours;
+  for (double z : { 0.0, 3.0, 6.0, 12.0, 15.0, 27.0, 30.0 }) // one slice missing at 9, three at 18-24
+    contours.push_back(square({ 0.0, 0.0, z }, { 1, 0, 0 }, { 0, 1, 0 }, 5.0));
+  const StackedContours stacked = stackContours(contours);
+  EXPECT_NEAR(stacked.stack.sliceSpacing, 3.0, 1e-12);
+  std::size_t empty = 0;
+  for (const Slice& slice : stacked.stack.slices)
+    empty += slice.contours.empty() ? 1 : 0;
+  EXPECT_EQ(empty, 3u) << "the slices at 18, 21 and 24 mm are empty; 9 mm is tiled across";
+  EXPECT_EQ(stacked.stack.slices.size(), 10u);
+  EXPECT_TRUE(mentions(stacked.notes, "one slice missing"));
+  EXPECT_TRUE(mentions(stacked.notes, "stops and starts again"));
+}
+
+TEST(ContourStacking, ASingleSliceNeedsASpacingFromElsewhere)
+{
+  const std::vector<Polygon3> one{ square({ 0.0, 0.0, 5.0 }, { 1, 0, 0 }, { 0, 1, 0 }, 5.0) };
+  EXPECT_THROW(stackContours(one), Error);
+  ContourStackingOptions options;
+  options.fallbackSliceSpacing = 2.0;
+  const StackedContours stacked = stackContours(one, options);
+  EXPECT_EQ(stacked.stack.slices.size(), 1u);
+  EXPECT_EQ(stacked.stack.sliceSpacing, 2.0);
+  EXPECT_TRUE(mentions(stacked.notes, "one slice"));
+}
+
+TEST(ContourStacking, ContoursWithoutAreaAreNoSlicePlane)
+{
+  const std::vector<Polygon3> lines{ { { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 } } };
+  EXPECT_THROW(sliceNormalOf(lines), Error);
+  EXPECT_THROW(stackContours(lines), Error);
+}
+
+} // namespace
+} // namespace slicemesh

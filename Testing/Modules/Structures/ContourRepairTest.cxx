@@ -1,0 +1,110 @@
+// Slices whose contours cross, touch or run through keyholes, made into contours the tiling
+// takes: the even-odd region of the slice, checked by area and by the exact crossing test.
+#include "ContourRepair.h"
+#include "Contours/ContourCrossings.h"
+#include "Contours/ContourNesting.h"
+#include "Core/PlanarGeometry.h"
+#include "TestContours.h"
+
+#include <gtest/gtest.h>
+
+namespace slicemesh::testing
+{
+namespace
+{
+
+Polygon2 flat(const Polygon3& contour)
+{
+  Polygon2 points;
+  for (const Point3& p : contour)
+    points.push_back({ p.x, p.y });
+  return points;
+}
+
+/** The area the contours enclose with holes by nesting depth (they must not cross). */
+double nestedArea(std::vector<Polygon2> contours)
+{
+  const ContourNesting nesting = orientAndNest(contours);
+  double area = 0.0;
+  for (std::size_t i = 0; i < contours.size(); ++i)
+    area += 0.5 * std::abs(twiceSignedArea(contours[i])) * (nesting.isHole(i) ? -1.0 : 1.0);
+  return area;
+}
+
+TEST(ContourRepair, AZeroWidthKeyholeBecomesAnOuterContourAndItsHole)
+{
+  const std::vector<Polygon2> keyhole{ flat(keyholeAnnulus(0.0, 0.0, 0.0, 20.0, 10.0, 0.0)) };
+  EXPECT_FALSE(contourCrossings(keyhole).empty()) << "the channel's sides lie on each other";
+  const std::vector<Polygon2> region = evenOddRegion(keyhole);
+  ASSERT_EQ(region.size(), 2u);
+  EXPECT_TRUE(contourCrossings(region).empty());
+  const double expected = polygonArea(20.0) - polygonArea(10.0);
+  EXPECT_NEAR(nestedArea(region), expected, 1e-3 * expected);
+}
+
+TEST(ContourRepair, ANarrowKeyholeIsClosedAWideNotchIsKept)
+{
+  ContourStack stack;
+  stack.slices.push_back({ 0.0, { flat(keyholeAnnulus(0.0, 0.0, 0.0, 20.0, 10.0, 0.03)) } });
+  stack.slices.push_back({ 3.0, { flat(keyholeAnnulus(0.0, 0.0, 3.0, 20.0, 10.0, 2.0)) } });
+  ContourRepairReport report;
+  const ContourStack repaired = repairContours(stack, {}, &report);
+  ASSERT_EQ(repaired.slices[0].contours.size(), 2u) << "0.03 mm is under the 0.1 mm channel width";
+  ASSERT_EQ(report.channelSlices.size(), 1u);
+  EXPECT_EQ(report.channelSlices[0], 0.0);
+  EXPECT_TRUE(report.crossingSlices.empty());
+  ASSERT_EQ(repaired.slices[1].contours.size(), 1u) << "a 2 mm channel is real anatomy";
+  EXPECT_EQ(repaired.slices[1].contours[0].size(), stack.slices[1].contours[0].size()) << "kept exactly";
+  EXPECT_NE(report.summary(0.1).find("keyholes"), std::string::npos);
+}
+
+TEST(ContourRepair, AFigureEightBecomesItsTwoLobes)
+{
+  // A figure eight: one contour crossing itself at the origin.
+  Polygon2 eight;
+  for (int k = 0; k < 64; ++k)
+  {
+    const double t = 2.0 * Pi * k / 64;
+    eight.push_back({ 10.0 * std::sin(t), 5.0 * std::sin(2.0 * t) });
+  }
+  ASSERT_FALSE(contourCrossings({ eight }).empty());
+  ContourStack stack;
+  stack.slices.push_back({ 6.0, { eight } });
+  ContourRepairReport report;
+  const ContourStack repaired = repairContours(stack, {}, &report);
+  const std::vector<Polygon2>& lobes = repaired.slices[0].contours;
+  ASSERT_EQ(lobes.size(), 2u);
+  EXPECT_TRUE(contourCrossings(lobes).empty()) << "the lobes met at a point: they must come apart";
+  EXPECT_NEAR(nestedArea(lobes), 0.5 * std::abs(twiceSignedArea({ eight.begin(), eight.begin() + 33 })) * 2.0, 0.5);
+  EXPECT_EQ(report.crossingSlices, std::vector<double>{ 6.0 });
+}
+
+TEST(ContourRepair, OverlappingContoursFollowTheEvenOddRule)
+{
+  // Two squares overlapping in a 5 x 10 strip: the strip is covered twice, so it is outside.
+  const Polygon2 a{ { 0, 0 }, { 10, 0 }, { 10, 10 }, { 0, 10 } };
+  const Polygon2 b{ { 5, 0 }, { 15, 0 }, { 15, 10 }, { 5, 10 } };
+  const std::vector<Polygon2> region = evenOddRegion({ a, b });
+  EXPECT_TRUE(contourCrossings(region).empty());
+  EXPECT_NEAR(nestedArea(region), 100.0, 0.1);
+}
+
+TEST(ContourRepair, CleanSlicesAreKeptExactly)
+{
+  ContourStack stack;
+  stack.slices.push_back({ 0.0, { flat(circle(0, 0, 0, 20.0)), flat(circle(0, 0, 0, 10.0, 96, true)),
+                                  flat(circle(50, 0, 0, 5.0)) } });
+  ContourRepairReport report;
+  const ContourStack repaired = repairContours(stack, {}, &report);
+  EXPECT_FALSE(report.any());
+  ASSERT_EQ(repaired.slices[0].contours.size(), 3u);
+  for (std::size_t c = 0; c < 3; ++c)
+    for (std::size_t i = 0; i < repaired.slices[0].contours[c].size(); ++i)
+    {
+      EXPECT_EQ(repaired.slices[0].contours[c][i].x, stack.slices[0].contours[c][i].x);
+      EXPECT_EQ(repaired.slices[0].contours[c][i].y, stack.slices[0].contours[c][i].y);
+    }
+}
+
+} // namespace
+} // namespace slicemesh::testing

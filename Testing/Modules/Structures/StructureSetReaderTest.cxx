@@ -1,0 +1,263 @@
+// Reading structure sets and contour files: RTSTRUCTs written with DCMTK in the test, 3D Slicer's
+// polydata contours, the JSON format; what the file kind detection says; and the one-line errors
+// of files that are not structure sets or are cut short.
+#include "StructureSet.h"
+#include "StructureSetWriter.h"
+#include "TestContours.h"
+
+#include <gtest/gtest.h>
+
+#include <dcmtk/dcmdata/dcdeftag.h>
+#include <dcmtk/dcmdata/dcfilefo.h>
+#include <dcmtk/dcmdata/dcuid.h>
+
+#include <vtkCellArray.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataWriter.h>
+#include <vtkStringArray.h>
+#include <vtkFieldData.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace fs = std::filesystem;
+
+namespace slicemesh::testing
+{
+namespace
+{
+
+fs::path folder(const std::string& name)
+{
+  const fs::path path = fs::path(SLICEMESH_TEST_OUTPUT_DIR) / name;
+  fs::remove_all(path);
+  fs::create_directories(path);
+  return path;
+}
+
+std::vector<PlanarStructure> twoStructures()
+{
+  PlanarStructure gtv;
+  gtv.number = 3;
+  gtv.name = "GTV";
+  gtv.rgb = { 255, 0, 0 };
+  for (int k = 0; k < 4; ++k)
+    gtv.contours.push_back(circle(10.0, -20.0, 2.5 * k, 8.0, 32));
+  PlanarStructure empty;
+  empty.number = 7;
+  empty.name = "Empty ROI";
+  empty.rgb = { 0, 0, 255 };
+  return { gtv, empty };
+}
+
+void writeText(const fs::path& path, const std::string& text)
+{
+  std::ofstream(path) << text;
+}
+
+TEST(StructureSetReader, ReadsEveryROIWithNumberNameColourAndContoursInLPS)
+{
+  const fs::path path = folder("rtstruct") / "RS.dcm";
+  const std::vector<PlanarStructure> written = twoStructures();
+  writeRTStructureSet(path.string(), written,
+                      { { 3, "POINT", { { 1, 2, 3 } } }, { 3, "OPEN_PLANAR", circle(0, 0, 1, 2, 8) } });
+  EXPECT_EQ(detectContourFileKind(path.string()), ContourFileKind::RTStruct);
+  const StructureSet set = readStructureSet(path.string());
+  ASSERT_EQ(set.structures.size(), 2u);
+  const PlanarStructure& gtv = set.structures[0];
+  EXPECT_EQ(gtv.number, 3);
+  EXPECT_EQ(gtv.name, "GTV");
+  EXPECT_EQ(gtv.rgb, (std::array<unsigned char, 3>{ 255, 0, 0 }));
+  ASSERT_EQ(gtv.contours.size(), 4u) << "the POINT and OPEN_PLANAR items are not contours";
+  ASSERT_EQ(gtv.contours[2].size(), 32u);
+  for (std::size_t i = 0; i < 32; ++i)
+  {
+    EXPECT_NEAR(gtv.contours[2][i].x, written[0].contours[2][i].x, 1e-6);
+    EXPECT_NEAR(gtv.contours[2][i].y, written[0].contours[2][i].y, 1e-6);
+    EXPECT_NEAR(gtv.contours[2][i].z, 5.0, 1e-9);
+  }
+  ASSERT_EQ(gtv.notes.size(), 2u) << "each skipped kind of item is reported: " << gtv.notes.back();
+  EXPECT_NE(gtv.notes[0].find("OPEN_PLANAR"), std::string::npos);
+  EXPECT_NE(gtv.notes[1].find("POINT"), std::string::npos);
+  EXPECT_EQ(set.structures[1].name, "Empty ROI");
+  EXPECT_TRUE(set.structures[1].contours.empty());
+}
+
+TEST(StructureSetReader, ChoosesROIsByNameOrNumberAndNamesWhatMatchesNothing)
+{
+  StructureSet set;
+  set.structures = twoStructures();
+  EXPECT_EQ(chosenStructures(set, {}).size(), 2u);
+  const auto byNumber = chosenStructures(set, { "7" });
+  ASSERT_EQ(byNumber.size(), 1u);
+  EXPECT_EQ(byNumber[0].name, "Empty ROI");
+  EXPECT_EQ(chosenStructures(set, { "gtv" }).front().number, 3) << "names match regardless of case";
+  try
+  {
+    chosenStructures(set, { "GTV", "Heart" });
+    FAIL() << "an ROI that does not exist must be an error";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("'Heart'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("3 (GTV)"), std::string::npos) << e.what();
+  }
+}
+
+TEST(StructureSetReader, ADicomFileOfAnotherModalityIsNotAStructureSet)
+{
+  const fs::path path = folder("ct") / "CT.dcm";
+  DcmFileFormat file;
+  char uid[100];
+  file.getDataset()->putAndInsertString(DCM_SOPClassUID, UID_CTImageStorage);
+  file.getDataset()->putAndInsertString(DCM_SOPInstanceUID, dcmGenerateUniqueIdentifier(uid));
+  file.getDataset()->putAndInsertString(DCM_Modality, "CT");
+  ASSERT_TRUE(file.saveFile(path.c_str(), EXS_LittleEndianExplicit).good());
+  EXPECT_FALSE(detectContourFileKind(path.string()).has_value());
+  try
+  {
+    readStructureSet(path.string(), ContourFileKind::RTStruct);
+    FAIL() << "a CT file read as a structure set must fail";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("not a DICOM RT Structure Set (Modality CT)"), std::string::npos) << e.what();
+  }
+}
+
+TEST(StructureSetReader, ATruncatedStructureSetFailsWithOneLine)
+{
+  const fs::path dir = folder("truncated");
+  const fs::path whole = dir / "RS.dcm", cut = dir / "RS-cut.dcm";
+  writeRTStructureSet(whole.string(), twoStructures());
+  const auto size = fs::file_size(whole);
+  fs::copy_file(whole, cut);
+  fs::resize_file(cut, size * 2 / 3);
+  EXPECT_EQ(detectContourFileKind(cut.string()), ContourFileKind::RTStruct) << "recognised, so the error says what is wrong";
+  try
+  {
+    readStructureSet(cut.string());
+    FAIL() << "a truncated file must not read";
+  }
+  catch (const Error& e)
+  {
+    const std::string message = e.what();
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_NE(message.find("RS-cut.dcm"), std::string::npos) << message;
+  }
+}
+
+TEST(StructureSetReader, ReadsTheJsonFormatWithItsSlicesAndCoordinateSystem)
+{
+  const fs::path path = folder("json") / "contours.json";
+  writeText(path, R"({
+    "coordinateSystem": "RAS",
+    "rois": [
+      { "number": 5, "name": "Bladder", "color": [200, 150, 0],
+        "slices": [ { "z": 4.5, "polygons": [ [[0, 0], [10, 0], [10, 10], [0, 10]] ] },
+                    { "polygons": [ [[0, 0, 7.5], [10, 0, 7.5], [10, 10, 7.5]] ] } ] },
+      { "name": "Nothing" }
+    ] })");
+  EXPECT_EQ(detectContourFileKind(path.string()), ContourFileKind::Json);
+  const StructureSet set = readStructureSet(path.string());
+  ASSERT_EQ(set.structures.size(), 2u);
+  const PlanarStructure& bladder = set.structures[0];
+  EXPECT_EQ(bladder.number, 5);
+  EXPECT_EQ(bladder.rgb, (std::array<unsigned char, 3>{ 200, 150, 0 }));
+  ASSERT_EQ(bladder.contours.size(), 2u);
+  EXPECT_EQ(bladder.contours[0][1].x, -10.0) << "RAS x is LPS -x";
+  EXPECT_EQ(bladder.contours[0][2].y, -10.0);
+  EXPECT_EQ(bladder.contours[0][2].z, 4.5);
+  EXPECT_EQ(bladder.contours[1][0].z, 7.5);
+  EXPECT_EQ(set.structures[1].number, 2) << "an ROI without a number gets its place";
+  EXPECT_TRUE(set.structures[1].contours.empty());
+}
+
+TEST(StructureSetReader, AMalformedJsonFileSaysWhere)
+{
+  const fs::path dir = folder("badjson");
+  writeText(dir / "a.json", R"({ "rois": [ { "slices": [ { "polygons": [ [[0, 0], [1, 1]] ] } ] } ] })");
+  writeText(dir / "b.json", R"({ "rois": [ )");
+  writeText(dir / "c.json", R"({ "rois": [ { "name": 5 } ] })");
+  for (const std::string name : { "a.json", "b.json", "c.json" })
+  {
+    try
+    {
+      readStructureSet((dir / name).string());
+      FAIL() << name << " must not read";
+    }
+    catch (const Error& e)
+    {
+      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+      if (name == "a.json")
+        EXPECT_NE(std::string(e.what()).find("rois[0].slices[0].polygons[0]"), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(StructureSetReader, ReadsSlicerPlanarContoursFromLegacyAndXmlPolyData)
+{
+  const fs::path dir = folder("polydata");
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> lines;
+  for (int k = 0; k < 3; ++k)
+  {
+    const Polygon3 c = circle(5.0, 5.0, 2.0 * k, 4.0, 16);
+    std::vector<vtkIdType> ids;
+    for (const Point3& p : c)
+      ids.push_back(points->InsertNextPoint(p.x, p.y, p.z));
+    ids.push_back(ids.front()); // closed: back to the first point, as Slicer writes them
+    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+  }
+  const vtkIdType open[3] = { 0, 1, 2 };
+  lines->InsertNextCell(3, open);
+  vtkNew<vtkPolyData> polyData;
+  polyData->SetPoints(points);
+  polyData->SetLines(lines);
+  vtkNew<vtkStringArray> space;
+  space->SetName("SPACE");
+  space->InsertNextValue("RAS");
+  polyData->GetFieldData()->AddArray(space);
+  vtkNew<vtkXMLPolyDataWriter> xml;
+  xml->SetFileName((dir / "Prostate.vtp").c_str());
+  xml->SetInputData(polyData);
+  ASSERT_EQ(xml->Write(), 1);
+  polyData->GetFieldData()->RemoveArray("SPACE");
+  vtkNew<vtkPolyDataWriter> legacy;
+  legacy->SetFileName((dir / "Rectum.vtk").c_str());
+  legacy->SetInputData(polyData);
+  ASSERT_EQ(legacy->Write(), 1);
+
+  for (const std::string name : { "Prostate.vtp", "Rectum.vtk" })
+  {
+    const std::string path = (dir / name).string();
+    EXPECT_EQ(detectContourFileKind(path), ContourFileKind::PolyData) << name;
+    const StructureSet set = readStructureSet(path);
+    ASSERT_EQ(set.structures.size(), 1u);
+    const PlanarStructure& roi = set.structures[0];
+    EXPECT_EQ(roi.name, name.substr(0, name.find('.')));
+    ASSERT_EQ(roi.contours.size(), 3u) << "the open polyline is skipped";
+    EXPECT_EQ(roi.notes.size(), 1u);
+    const double sign = name == "Prostate.vtp" ? -1.0 : 1.0; // RAS -> LPS
+    EXPECT_NEAR(roi.contours[1][0].x, sign * 9.0, 1e-6);
+    EXPECT_NEAR(roi.contours[1][0].y, sign * 5.0, 1e-6);
+    EXPECT_NEAR(roi.contours[1][0].z, 2.0, 1e-6);
+  }
+}
+
+TEST(StructureSetReader, AnImageOrTextIsNoContourFile)
+{
+  const fs::path dir = folder("other");
+  writeText(dir / "image.mha", "ObjectType = Image\nNDims = 3\n");
+  writeText(dir / "notes.txt", "hello");
+  EXPECT_FALSE(detectContourFileKind((dir / "image.mha").string()).has_value());
+  EXPECT_FALSE(detectContourFileKind((dir / "notes.txt").string()).has_value());
+  EXPECT_FALSE(detectContourFileKind((dir / "missing.dcm").string()).has_value());
+  EXPECT_THROW(readStructureSet((dir / "notes.txt").string()), Error);
+}
+
+} // namespace
+} // namespace slicemesh::testing
