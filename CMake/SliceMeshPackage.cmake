@@ -18,7 +18,7 @@ set(SLICEMESH_INTERNAL_HEADERS
   Core/DisjointSets.h Core/NearestSegment.h
   Contours/ContourCrossings.h
   Correspondence/PolygonProximity.h Correspondence/MutualIntersections.h
-  Tiling/SlabTiling.h Tiling/MeshBuilder.h)
+  Tiling/SlabTiling.h Tiling/SlabOverlayState.h Tiling/MeshBuilder.h)
 file(GLOB SLICEMESH_LOGIC_HEADERS RELATIVE ${PROJECT_SOURCE_DIR}/Logic ${PROJECT_SOURCE_DIR}/Logic/*/*.h)
 list(REMOVE_ITEM SLICEMESH_LOGIC_HEADERS ${SLICEMESH_INTERNAL_HEADERS})
 foreach(header ${SLICEMESH_LOGIC_HEADERS})
