@@ -15,7 +15,7 @@ install(TARGETS SliceMeshLogic EXPORT SliceMeshTargets
 # The stages' public headers, by stage (CGAL stays inside the .cxx files). Headers internal to a
 # stage (its helpers and data structures) are not installed; no public header includes one.
 set(SLICEMESH_INTERNAL_HEADERS
-  Core/DisjointSets.h Core/NearestSegment.h
+  Core/DisjointSets.h Core/SpatialHash.h Core/NearestSegment.h
   Contours/ContourCrossings.h
   Correspondence/PolygonProximity.h Correspondence/MutualIntersections.h
   Tiling/SlabTiling.h Tiling/SlabOverlayState.h Tiling/MeshBuilder.h)

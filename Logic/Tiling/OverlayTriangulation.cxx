@@ -3,6 +3,7 @@
 #include "Tiling/SlabOverlayState.h"
 
 #include "Core/PlanarGeometry.h"
+#include "Core/SpatialHash.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,25 +33,16 @@ void SlabOverlay::Impl::buildVertices()
 {
   // Points of the two slices closer than the tolerance are one overlay vertex: hash them on a grid
   // of the tolerance's size and look in the neighbouring cells.
-  const double cell = std::max(tolerance, 1e-12);
-  std::unordered_map<std::uint64_t, std::vector<int>> grid;
-  auto key = [](long long x, long long y) {
-    return static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ULL ^ static_cast<std::uint64_t>(y);
-  };
+  SpatialHash grid(std::max(tolerance, 1e-12));
   auto findNear = [&](const Point2& p) -> int {
-    const long long cx = static_cast<long long>(std::floor(p.x / cell));
-    const long long cy = static_cast<long long>(std::floor(p.y / cell));
-    for (long long x = cx - 1; x <= cx + 1; ++x)
-      for (long long y = cy - 1; y <= cy + 1; ++y)
-      {
-        auto it = grid.find(key(x, y));
-        if (it == grid.end())
-          continue;
-        for (int index : it->second)
-          if (distance(vertices[index].p, p) <= tolerance)
-            return index;
-      }
-    return -1;
+    int found = -1;
+    grid.anyIn(grid.cellsWithin(p, grid.cellSize()), [&](int index) {
+      if (distance(vertices[index].p, p) > tolerance)
+        return false;
+      found = index;
+      return true;
+    });
+    return found;
   };
   auto add = [&](const PreparedSlice* slice, bool isLower) {
     if (!slice)
@@ -73,9 +65,7 @@ void SlabOverlay::Impl::buildVertices()
         {
           index = static_cast<int>(vertices.size());
           vertices.push_back({ polygon[i] });
-          grid[key(static_cast<long long>(std::floor(polygon[i].x / cell)),
-                   static_cast<long long>(std::floor(polygon[i].y / cell)))]
-            .push_back(index);
+          grid.insert(polygon[i], index);
         }
         (isLower ? vertices[index].lowerId : vertices[index].upperId) = id;
       }

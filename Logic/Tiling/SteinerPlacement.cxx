@@ -4,11 +4,11 @@
 #include "Tiling/SlabOverlayState.h"
 
 #include "Core/PlanarGeometry.h"
+#include "Core/SpatialHash.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-#include <unordered_map>
 
 namespace slicemesh
 {
@@ -20,35 +20,25 @@ class slab::SpacingGrid
 {
 public:
   explicit SpacingGrid(double cell)
-    : m_Cell(std::max(cell, 1e-9))
+    : m_Cells(std::max(cell, 1e-9))
   {
   }
-  void add(const Point3& p) { m_Cells[key(cellOf(p.x), cellOf(p.y))].push_back(p); }
+  void add(const Point3& p)
+  {
+    m_Cells.insert(Point2{ p.x, p.y }, static_cast<int>(m_Points.size()));
+    m_Points.push_back(p);
+  }
   bool hasPointWithin(const Point3& p, double radius) const
   {
-    const long long reach = static_cast<long long>(std::ceil(radius / m_Cell));
-    const long long cx = cellOf(p.x), cy = cellOf(p.y);
-    for (long long x = cx - reach; x <= cx + reach; ++x)
-      for (long long y = cy - reach; y <= cy + reach; ++y)
-      {
-        auto it = m_Cells.find(key(x, y));
-        if (it == m_Cells.end())
-          continue;
-        for (const Point3& q : it->second)
-          if (std::hypot(p.x - q.x, p.y - q.y, p.z - q.z) < radius)
-            return true;
-      }
-    return false;
+    return m_Cells.anyIn(m_Cells.cellsWithin({ p.x, p.y }, radius), [&](int index) {
+      const Point3& q = m_Points[index];
+      return std::hypot(p.x - q.x, p.y - q.y, p.z - q.z) < radius;
+    });
   }
 
 private:
-  long long cellOf(double v) const { return static_cast<long long>(std::floor(v / m_Cell)); }
-  static std::uint64_t key(long long x, long long y)
-  {
-    return static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ULL ^ static_cast<std::uint64_t>(y);
-  }
-  double m_Cell;
-  std::unordered_map<std::uint64_t, std::vector<Point3>> m_Cells;
+  SpatialHash m_Cells;
+  std::vector<Point3> m_Points;
 };
 
 namespace
