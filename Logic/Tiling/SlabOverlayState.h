@@ -112,9 +112,6 @@ struct Sector
  *  addresses), so that flips and Steiner points, and so the mesh, are the same in every run. */
 std::vector<CDT::Edge> finiteEdgesInStableOrder(const CDT& cdt);
 
-/** Smallest angle of the 3D triangle abc (radians). */
-double minAngle3(const Point3& a, const Point3& b, const Point3& c);
-
 class SpacingGrid; // SteinerPlacement.cxx: points placed so far, to keep new Steiner points apart
 
 } // namespace slab

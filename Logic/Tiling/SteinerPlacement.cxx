@@ -5,6 +5,7 @@
 
 #include "Core/PlanarGeometry.h"
 #include "Core/SpatialHash.h"
+#include "Measures/TriangleAngles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -346,7 +347,7 @@ std::size_t SlabOverlay::Impl::refineBadTriangles(MeshBuilder& mesh, double minA
       placed.add(a);
       placed.add(b);
       placed.add(c);
-      if (minAngle3(a, b, c) >= minAngle)
+      if (smallestAngle(a, b, c) >= minAngle)
         continue;
       const Point3 center = circumcenter(a, b, c);
       const double radius = std::hypot(center.x - a.x, center.y - a.y, center.z - a.z);

@@ -3,6 +3,7 @@
 #include "Tiling/SlabOverlayState.h"
 
 #include "Core/PlanarGeometry.h"
+#include "Measures/TriangleAngles.h"
 
 #include <algorithm>
 #include <array>
@@ -31,18 +32,6 @@ double normalsCosine(const Point3& a, const Point3& b, const Point3& c, const Po
 }
 
 } // namespace
-
-double slab::minAngle3(const Point3& a, const Point3& b, const Point3& c)
-{
-  auto angle = [](const Point3& o, const Point3& p, const Point3& q) {
-    const double ux = p.x - o.x, uy = p.y - o.y, uz = p.z - o.z;
-    const double vx = q.x - o.x, vy = q.y - o.y, vz = q.z - o.z;
-    const double cross = std::sqrt(std::pow(uy * vz - uz * vy, 2) + std::pow(uz * vx - ux * vz, 2) +
-                                   std::pow(ux * vy - uy * vx, 2));
-    return std::atan2(cross, ux * vx + uy * vy + uz * vz);
-  };
-  return std::min({ angle(a, b, c), angle(b, c, a), angle(c, a, b) });
-}
 
 std::size_t SlabOverlay::Impl::flipTowardsSurfaceQuality(const MeshBuilder& mesh)
 {
@@ -80,8 +69,8 @@ std::size_t SlabOverlay::Impl::flipTowardsSurfaceQuality(const MeshBuilder& mesh
     if (distanceToSegment(pp, pa, pb) < 1e-3 * typicalEdge || distanceToSegment(pq, pa, pb) < 1e-3 * typicalEdge)
       return false;
     const Point3 A = lifted(a), B = lifted(b), P = lifted(p), Q = lifted(q);
-    const double before = std::min(minAngle3(A, P, Q), minAngle3(B, Q, P));
-    const double after = std::min(minAngle3(A, B, Q), minAngle3(B, A, P));
+    const double before = std::min(smallestAngle(A, P, Q), smallestAngle(B, Q, P));
+    const double after = std::min(smallestAngle(A, B, Q), smallestAngle(B, A, P));
     // Nor into a crease sharper than a right angle across the new edge: steep triangles have good
     // angles, but two of them meeting in a knife-edge ridge nearly fold onto each other.
     const double crease = normalsCosine(A, B, Q, P);
@@ -96,8 +85,8 @@ std::size_t SlabOverlay::Impl::flipTowardsSurfaceQuality(const MeshBuilder& mesh
     if (!e.first->is_constrained(e.second) && isDifference(e.first) && !cdt.is_infinite(e.first->neighbor(e.second)))
     {
       const FaceHandle f = e.first, g = f->neighbor(e.second);
-      const double worst = std::min(minAngle3(lifted(f->vertex(0)), lifted(f->vertex(1)), lifted(f->vertex(2))),
-                                    minAngle3(lifted(g->vertex(0)), lifted(g->vertex(1)), lifted(g->vertex(2))));
+      const double worst = std::min(smallestAngle(lifted(f->vertex(0)), lifted(f->vertex(1)), lifted(f->vertex(2))),
+                                    smallestAngle(lifted(g->vertex(0)), lifted(g->vertex(1)), lifted(g->vertex(2))));
       ranked.emplace_back(worst, e);
     }
   std::stable_sort(ranked.begin(), ranked.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
