@@ -149,6 +149,15 @@ struct SlabOverlay::Impl
     auto it = edges.find(slab::edgeKey(a->info(), b->info()));
     return it == edges.end() ? nullptr : &it->second;
   }
+  /** The face a new point at p would go into; an infinite face where p is a vertex already or lies
+   *  outside the overlay. */
+  slab::FaceHandle faceFor(const Point2& p) const
+  {
+    slab::CDT::Locate_type type;
+    int index = 0;
+    const slab::FaceHandle f = cdt.locate(slab::Kernel::Point_2(p.x, p.y), type, index);
+    return type == slab::CDT::VERTEX ? cdt.infinite_face() : f;
+  }
 
   // RegionClassification.cxx: which regions each face lies in, the correspondences, the difference
   // polygons, and the sectors around vertices common to both slices.

@@ -36,6 +36,14 @@ public:
       return std::hypot(p.x - q.x, p.y - q.y, p.z - q.z) < radius;
     });
   }
+  /** Adds p unless a point lies within radius of it; whether it did. */
+  bool addIfApart(const Point3& p, double radius)
+  {
+    if (hasPointWithin(p, radius))
+      return false;
+    add(p);
+    return true;
+  }
 
 private:
   SpatialHash m_Cells;
@@ -179,10 +187,8 @@ std::size_t SlabOverlay::Impl::liftFlatChords(MeshBuilder& mesh)
       if (s > 0 && splits[s].x == splits[s - 1].x && splits[s].y == splits[s - 1].y)
         continue;
       const Point2& p = splits[s];
-      CDT::Locate_type type;
-      int index = 0;
-      FaceHandle f = cdt.locate(Kernel::Point_2(p.x, p.y), type, index);
-      if (type != CDT::VERTEX && !cdt.is_infinite(f) && isDifference(f))
+      const FaceHandle f = faceFor(p);
+      if (isDifference(f))
         inserted += insertSteiner(p, steinerHeight(f, p), mesh);
     }
     classify();
@@ -233,10 +239,8 @@ std::size_t SlabOverlay::Impl::addRows(MeshBuilder& mesh, double edgeLength)
       const double t = static_cast<double>(r) / m;
       const Point2 p{ ov.p.x + t * (target.x - ov.p.x), ov.p.y + t * (target.y - ov.p.y) };
       const double z = interpolatedHeight(p);
-      if (placed.hasPointWithin({ p.x, p.y, z }, 0.6 * edgeLength))
-        continue;
-      placed.add({ p.x, p.y, z });
-      candidates.emplace_back(p, z);
+      if (placed.addIfApart({ p.x, p.y, z }, 0.6 * edgeLength))
+        candidates.emplace_back(p, z);
     }
   }
   return insertCandidates(candidates, mesh, [&](FaceHandle f) { return inMixed(f); });
@@ -287,16 +291,12 @@ std::size_t SlabOverlay::Impl::addCapRows(MeshBuilder& mesh, double edgeLength)
       const double angle = 0.5 * M_PI * r / rows;
       const double inward = rise * (1.0 - std::cos(angle));
       const Point2 p{ origin.x + dx * inward, origin.y + dy * inward };
-      CDT::Locate_type type;
-      int index = 0;
-      FaceHandle f = cdt.locate(Kernel::Point_2(p.x, p.y), type, index);
-      if (type == CDT::VERTEX || cdt.is_infinite(f) || !isCapFace(f) || f->info().component != component)
+      const FaceHandle f = faceFor(p);
+      if (!isCapFace(f) || f->info().component != component)
         continue;
       const double z = domeHeight(component, p);
-      if (placed.hasPointWithin({ p.x, p.y, z }, 0.6 * edgeLength))
-        continue;
-      placed.add({ p.x, p.y, z });
-      candidates.emplace_back(p, z);
+      if (placed.addIfApart({ p.x, p.y, z }, 0.6 * edgeLength))
+        candidates.emplace_back(p, z);
     }
   }
   return insertCandidates(candidates, mesh, [&](FaceHandle f) { return isCapFace(f); });
@@ -316,10 +316,8 @@ std::size_t SlabOverlay::Impl::insertCandidates(const std::vector<std::pair<Poin
   std::size_t inserted = 0;
   for (const auto& [p, z] : candidates)
   {
-    CDT::Locate_type type;
-    int index = 0;
-    FaceHandle f = cdt.locate(Kernel::Point_2(p.x, p.y), type, index);
-    if (type != CDT::VERTEX && !cdt.is_infinite(f) && accepts(f))
+    const FaceHandle f = faceFor(p);
+    if (!cdt.is_infinite(f) && accepts(f))
       inserted += insertSteiner(p, z, mesh, optionalClearance());
   }
   if (inserted > 0)
@@ -358,10 +356,8 @@ std::size_t SlabOverlay::Impl::refineBadTriangles(MeshBuilder& mesh, double minA
     std::size_t added = 0;
     for (const auto& [p, radius] : candidates)
     {
-      CDT::Locate_type type;
-      int index = 0;
-      FaceHandle f = cdt.locate(Kernel::Point_2(p.x, p.y), type, index);
-      if (type == CDT::VERTEX || cdt.is_infinite(f) || !isDifference(f))
+      const FaceHandle f = faceFor(p);
+      if (!isDifference(f))
         continue;
       const double z = steinerHeight(f, p);
       if (placed.hasPointWithin({ p.x, p.y, z }, 0.5 * radius))
