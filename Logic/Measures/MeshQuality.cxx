@@ -77,11 +77,10 @@ MeshQuality measureMeshQuality(const TriangleMesh& mesh)
   for (const Triangle& t : mesh.triangles)
   {
     const Shape shape = shapeOf(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
-    const double degrees = shape.smallest * 180.0 / M_PI;
     smallest = std::min(smallest, shape.smallest);
     largest = std::max(largest, shape.largest);
-    below30 += degrees < 30.0;
-    below10 += degrees < 10.0;
+    below30 += angleUnder(shape.smallest, 30.0);
+    below10 += angleUnder(shape.smallest, 10.0);
     aspects.push_back(shape.aspect);
     aspectSum += shape.aspect;
   }

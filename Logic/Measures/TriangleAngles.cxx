@@ -37,6 +37,11 @@ double smallestAngle(const Point3& a, const Point3& b, const Point3& c)
   return std::min({ angles[0], angles[1], angles[2] });
 }
 
+bool angleUnder(double radians, double boundDegrees)
+{
+  return radians * 180.0 / M_PI < boundDegrees * (1.0 - 1e-12);
+}
+
 double smallestAngleCosine(const Point3& a, const Point3& b, const Point3& c)
 {
   const Point3* p[3] = { &a, &b, &c };

@@ -54,3 +54,16 @@ TEST(TriangleAngles, DegenerateTriangles)
   EXPECT_EQ(smallestAngle(a, a, b), 0.0);
   EXPECT_EQ(smallestAngleCosine(a, a, b), 1.0);
 }
+
+TEST(TriangleAngles, AnAngleThatIsTheBoundIsNotUnderIt)
+{
+  // 30 degrees exactly at o, between (1, 0.5, 0.5) and (0.5, 0.5, 0), as half-voxel coordinates on an
+  // isotropic grid give them; its computed value may fall a bit either side of 30.
+  const Point3 o{ 10, 20, 30 }, p{ 11, 20.5, 30.5 }, q{ 10.5, 20.5, 30 };
+  const double angle = triangleAngles(o, p, q)[0];
+  EXPECT_NEAR(degrees(angle), 30.0, 1e-12);
+  EXPECT_FALSE(angleUnder(angle, 30.0));
+  EXPECT_TRUE(angleUnder(angle, 30.001));
+  EXPECT_TRUE(angleUnder(29.999 * M_PI / 180.0, 30.0));
+  EXPECT_FALSE(angleUnder(30.001 * M_PI / 180.0, 30.0));
+}
