@@ -15,10 +15,10 @@ install(TARGETS SliceMeshLogic EXPORT SliceMeshTargets
 # The stages' public headers, by stage (CGAL stays inside the .cxx files). Headers internal to a
 # stage (its helpers and data structures) are not installed; no public header includes one.
 set(SLICEMESH_INTERNAL_HEADERS
-  Core/DisjointSets.h Core/NearestSegment.h
+  Core/DisjointSets.h Core/SpatialHash.h Core/NearestSegment.h
   Contours/ContourCrossings.h
   Correspondence/PolygonProximity.h Correspondence/MutualIntersections.h
-  Tiling/SlabTiling.h Tiling/MeshBuilder.h)
+  Tiling/SlabTiling.h Tiling/SlabOverlayState.h Tiling/MeshBuilder.h)
 file(GLOB SLICEMESH_LOGIC_HEADERS RELATIVE ${PROJECT_SOURCE_DIR}/Logic ${PROJECT_SOURCE_DIR}/Logic/*/*.h)
 list(REMOVE_ITEM SLICEMESH_LOGIC_HEADERS ${SLICEMESH_INTERNAL_HEADERS})
 foreach(header ${SLICEMESH_LOGIC_HEADERS})

@@ -1,10 +1,9 @@
-// Distance from a point to the nearest of many segments, through a uniform grid.
+// Distance from a point to the nearest of many segments, through a spatial hash of their boxes.
 #ifndef NearestSegment_h
 #define NearestSegment_h
 
-#include "Core/SliceMeshTypes.h"
+#include "Core/SpatialHash.h"
 
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -28,14 +27,10 @@ public:
   bool empty() const { return m_Segments.empty(); }
 
 private:
-  long long cellOf(double v) const;
-  std::uint64_t key(long long x, long long y) const;
-
   std::vector<Segment> m_Segments;
-  double m_CellSize;
+  SpatialHash m_Cells;
   long long m_Extent = 0; ///< half-width, in cells, of the square that holds every segment
   long long m_CenterX = 0, m_CenterY = 0;
-  std::unordered_map<std::uint64_t, std::vector<int>> m_Cells;
 };
 
 } // namespace slicemesh

@@ -1,10 +1,10 @@
 #include "Correspondence/MutualIntersections.h"
 
 #include "Core/PlanarGeometry.h"
+#include "Core/SpatialHash.h"
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 namespace slicemesh
 {
@@ -26,12 +26,13 @@ struct Insertion
   Point2 point;
 };
 
-/** A uniform grid over edge bounding boxes, to find candidate pairs in near-linear time. */
+/** The edges of a slice's contours in a spatial hash of their boxes grown by a margin, to find the
+ *  candidate pairs of edges in near-linear time. */
 class EdgeGrid
 {
 public:
   EdgeGrid(const std::vector<Polygon2>& contours, double cellSize, double margin)
-    : m_CellSize(cellSize)
+    : m_Cells(cellSize)
     , m_Margin(margin)
   {
     for (int c = 0; c < static_cast<int>(contours.size()); ++c)
@@ -39,35 +40,29 @@ public:
       const Polygon2& polygon = contours[c];
       for (int e = 0; e < static_cast<int>(polygon.size()); ++e)
       {
-        const Point2& a = polygon[e];
-        const Point2& b = polygon[(e + 1) % polygon.size()];
-        forEachCell(a, b, [&](long long key) { m_Cells[key].push_back({ c, e }); });
+        m_Cells.insert(cellsOf(polygon[e], polygon[(e + 1) % polygon.size()]), static_cast<int>(m_Edges.size()));
+        m_Edges.push_back({ c, e });
       }
     }
   }
 
+  /** Calls visit(edge) for the edges that share a cell with segment ab (an edge may come more than once). */
   template <typename Visit>
-  void forEachCell(const Point2& a, const Point2& b, Visit visit) const
+  void forEachNear(const Point2& a, const Point2& b, Visit visit) const
   {
-    const long long x0 = cell(std::min(a.x, b.x) - m_Margin), x1 = cell(std::max(a.x, b.x) + m_Margin);
-    const long long y0 = cell(std::min(a.y, b.y) - m_Margin), y1 = cell(std::max(a.y, b.y) + m_Margin);
-    for (long long x = x0; x <= x1; ++x)
-      for (long long y = y0; y <= y1; ++y)
-        visit(x * 73856093LL ^ y * 19349663LL);
-  }
-
-  const std::vector<EdgeRef>* edgesIn(long long key) const
-  {
-    auto it = m_Cells.find(key);
-    return it == m_Cells.end() ? nullptr : &it->second;
+    m_Cells.forEachIn(cellsOf(a, b), [&](int index) { visit(m_Edges[index]); });
   }
 
 private:
-  long long cell(double v) const { return static_cast<long long>(std::floor(v / m_CellSize)); }
+  SpatialHash::CellRange cellsOf(const Point2& a, const Point2& b) const
+  {
+    return m_Cells.cellsOf({ std::min(a.x, b.x) - m_Margin, std::min(a.y, b.y) - m_Margin,
+                             std::max(a.x, b.x) + m_Margin, std::max(a.y, b.y) + m_Margin });
+  }
 
-  double m_CellSize;
+  SpatialHash m_Cells;
   double m_Margin;
-  std::unordered_map<long long, std::vector<EdgeRef>> m_Cells;
+  std::vector<EdgeRef> m_Edges;
 };
 
 double medianEdgeLength(const std::vector<Polygon2>& a, const std::vector<Polygon2>& b)
@@ -133,52 +128,46 @@ std::size_t insertMutualIntersections(std::vector<Polygon2>& lower, std::vector<
     {
       const Point2& p = lp[le];
       const Point2& q = lp[(le + 1) % lp.size()];
-      upperGrid.forEachCell(p, q, [&](long long key) {
-        const std::vector<EdgeRef>* edges = upperGrid.edgesIn(key);
-        if (!edges)
+      upperGrid.forEachNear(p, q, [&](const EdgeRef& ref) {
+        int& mark = seen[ref.contour][ref.edge];
+        if (mark == stamp)
           return;
-        for (const EdgeRef& ref : *edges)
-        {
-          int& mark = seen[ref.contour][ref.edge];
-          if (mark == stamp)
-            continue;
-          mark = stamp;
-          const Polygon2& up = upper[ref.contour];
-          const Point2& r = up[ref.edge];
-          const Point2& s = up[(ref.edge + 1) % up.size()];
+        mark = stamp;
+        const Polygon2& up = upper[ref.contour];
+        const Point2& r = up[ref.edge];
+        const Point2& s = up[(ref.edge + 1) % up.size()];
 
-          double t = 0.0;
-          bool touching = false;
-          // A vertex of one slice on the inside of the other slice's edge splits that edge.
-          for (const Point2* v : { &r, &s })
-            if (distanceToSegment(*v, p, q, &t) <= tolerance && distance(*v, p) > tolerance &&
-                distance(*v, q) > tolerance)
-            {
-              intoLower.push_back({ lc, le, t, *v });
-              touching = true;
-            }
-          for (const Point2* v : { &p, &q })
-            if (distanceToSegment(*v, r, s, &t) <= tolerance && distance(*v, r) > tolerance &&
-                distance(*v, s) > tolerance)
-            {
-              intoUpper.push_back({ ref.contour, ref.edge, t, *v });
-              touching = true;
-            }
-          if (touching || distanceToSegment(r, p, q) <= tolerance || distanceToSegment(s, p, q) <= tolerance ||
-              distanceToSegment(p, r, s) <= tolerance || distanceToSegment(q, r, s) <= tolerance)
-            continue;
-          // A proper crossing becomes a vertex of both slices.
-          if (orientation(p, q, r) * orientation(p, q, s) < 0 && orientation(r, s, p) * orientation(r, s, q) < 0)
+        double t = 0.0;
+        bool touching = false;
+        // A vertex of one slice on the inside of the other slice's edge splits that edge.
+        for (const Point2* v : { &r, &s })
+          if (distanceToSegment(*v, p, q, &t) <= tolerance && distance(*v, p) > tolerance &&
+              distance(*v, q) > tolerance)
           {
-            const double dx = q.x - p.x, dy = q.y - p.y, ex = s.x - r.x, ey = s.y - r.y;
-            const double tl = ((r.x - p.x) * ey - (r.y - p.y) * ex) / (dx * ey - dy * ex);
-            const Point2 x{ p.x + tl * dx, p.y + tl * dy };
-            double tu = 0.0;
-            distanceToSegment(x, r, s, &tu);
-            intoLower.push_back({ lc, le, tl, x });
-            intoUpper.push_back({ ref.contour, ref.edge, tu, x });
-            ++crossings;
+            intoLower.push_back({ lc, le, t, *v });
+            touching = true;
           }
+        for (const Point2* v : { &p, &q })
+          if (distanceToSegment(*v, r, s, &t) <= tolerance && distance(*v, r) > tolerance &&
+              distance(*v, s) > tolerance)
+          {
+            intoUpper.push_back({ ref.contour, ref.edge, t, *v });
+            touching = true;
+          }
+        if (touching || distanceToSegment(r, p, q) <= tolerance || distanceToSegment(s, p, q) <= tolerance ||
+            distanceToSegment(p, r, s) <= tolerance || distanceToSegment(q, r, s) <= tolerance)
+          return;
+        // A proper crossing becomes a vertex of both slices.
+        if (orientation(p, q, r) * orientation(p, q, s) < 0 && orientation(r, s, p) * orientation(r, s, q) < 0)
+        {
+          const double dx = q.x - p.x, dy = q.y - p.y, ex = s.x - r.x, ey = s.y - r.y;
+          const double tl = ((r.x - p.x) * ey - (r.y - p.y) * ex) / (dx * ey - dy * ex);
+          const Point2 x{ p.x + tl * dx, p.y + tl * dy };
+          double tu = 0.0;
+          distanceToSegment(x, r, s, &tu);
+          intoLower.push_back({ lc, le, tl, x });
+          intoUpper.push_back({ ref.contour, ref.edge, tu, x });
+          ++crossings;
         }
       });
     }

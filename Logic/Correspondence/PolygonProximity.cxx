@@ -1,5 +1,7 @@
 #include "Correspondence/PolygonProximity.h"
 
+#include "Core/SpatialHash.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -25,62 +27,37 @@ Box2 inflated(const Box2& box, double margin)
   return { box.xmin - margin, box.ymin - margin, box.xmax + margin, box.ymax + margin };
 }
 
-/** A uniform grid of cells over a box; items are registered in every cell their box touches. */
+/** Edges in a spatial hash, each over the part of its box within a region: every point the callers
+ *  look for (where two edges touch, or come closest) lies in that region, and edges far longer than
+ *  the region take no more cells than the region has. */
 class EdgeGrid
 {
 public:
-  EdgeGrid(const Box2& box, double cell)
-    : m_Box(box)
-    , m_Cell(cell > 0.0 ? cell : 1.0)
+  EdgeGrid(const Box2& region, double cell)
+    : m_Region(region)
+    , m_Cells(cell)
   {
-    m_Nx = std::clamp<long>(static_cast<long>(std::ceil((box.xmax - box.xmin) / m_Cell)), 1, 2048);
-    m_Ny = std::clamp<long>(static_cast<long>(std::ceil((box.ymax - box.ymin) / m_Cell)), 1, 2048);
-    m_Cells.resize(static_cast<std::size_t>(m_Nx * m_Ny));
   }
 
   void insert(const Box2& box, std::size_t item)
   {
-    long i0, i1, j0, j1;
-    if (!cellRange(box, i0, i1, j0, j1))
-      return;
-    for (long j = j0; j <= j1; ++j)
-      for (long i = i0; i <= i1; ++i)
-        m_Cells[static_cast<std::size_t>(j * m_Nx + i)].push_back(item);
+    if (box.overlaps(m_Region))
+      m_Cells.insert(m_Cells.cellsOf(intersection(box, m_Region)), static_cast<int>(item));
   }
 
-  /** Calls visit(item) for each item sharing a cell with box (an item may come more than once). */
+  /** Calls visit(item) for each item sharing a cell with box within the region (an item may come more
+   *  than once). */
   template <typename Visit>
   void query(const Box2& box, Visit&& visit) const
   {
-    long i0, i1, j0, j1;
-    if (!cellRange(box, i0, i1, j0, j1))
-      return;
-    for (long j = j0; j <= j1; ++j)
-      for (long i = i0; i <= i1; ++i)
-        for (std::size_t item : m_Cells[static_cast<std::size_t>(j * m_Nx + i)])
-          visit(item);
+    if (box.overlaps(m_Region))
+      m_Cells.forEachIn(m_Cells.cellsOf(intersection(box, m_Region)),
+                        [&](int item) { visit(static_cast<std::size_t>(item)); });
   }
 
 private:
-  bool cellRange(const Box2& box, long& i0, long& i1, long& j0, long& j1) const
-  {
-    if (!box.overlaps(m_Box))
-      return false;
-    i0 = index(box.xmin - m_Box.xmin, m_Nx);
-    i1 = index(box.xmax - m_Box.xmin, m_Nx);
-    j0 = index(box.ymin - m_Box.ymin, m_Ny);
-    j1 = index(box.ymax - m_Box.ymin, m_Ny);
-    return true;
-  }
-  long index(double offset, long n) const
-  {
-    return std::clamp<long>(static_cast<long>(std::floor(offset / m_Cell)), 0, n - 1);
-  }
-
-  Box2 m_Box;
-  double m_Cell;
-  long m_Nx = 1, m_Ny = 1;
-  std::vector<std::vector<std::size_t>> m_Cells;
+  Box2 m_Region;
+  SpatialHash m_Cells;
 };
 
 /** Cell size for about one edge per cell over a box holding n edges. */

@@ -1,6 +1,9 @@
 #include "Measures/MeshQuality.h"
 
+#include "Measures/TriangleAngles.h"
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -14,7 +17,8 @@ double length(const Point3& a, const Point3& b)
   return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
 }
 
-/** Smallest and largest angle (radians) and aspect ratio of triangle abc, from its edge lengths. */
+/** Smallest and largest angle (radians, TriangleAngles.h) and aspect ratio (from the edge lengths) of
+ *  triangle abc. */
 struct Shape
 {
   double smallest = 0.0, largest = 0.0, aspect = std::numeric_limits<double>::infinity();
@@ -39,11 +43,9 @@ Shape shapeOf(const Point3& a, const Point3& b, const Point3& c)
     shape.largest = M_PI;
     return shape;
   }
-  // Angles from sin = 2 area / (product of the two adjacent edges), the largest by the remainder.
-  const double angleX = std::atan2(4.0 * area, y * y + z * z - x * x); // opposite the longest edge
-  const double angleZ = std::asin(std::min(1.0, 2.0 * area / (x * y))); // opposite the shortest: acute
-  shape.smallest = angleZ;
-  shape.largest = angleX;
+  const std::array<double, 3> angles = triangleAngles(a, b, c);
+  shape.smallest = std::min({ angles[0], angles[1], angles[2] });
+  shape.largest = std::max({ angles[0], angles[1], angles[2] });
   const double s = 0.5 * (x + y + z);
   const double inradius = area / s;
   const double circumradius = x * y * z / (4.0 * area);
@@ -75,11 +77,10 @@ MeshQuality measureMeshQuality(const TriangleMesh& mesh)
   for (const Triangle& t : mesh.triangles)
   {
     const Shape shape = shapeOf(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
-    const double degrees = shape.smallest * 180.0 / M_PI;
     smallest = std::min(smallest, shape.smallest);
     largest = std::max(largest, shape.largest);
-    below30 += degrees < 30.0;
-    below10 += degrees < 10.0;
+    below30 += angleUnder(shape.smallest, 30.0);
+    below10 += angleUnder(shape.smallest, 10.0);
     aspects.push_back(shape.aspect);
     aspectSum += shape.aspect;
   }

@@ -2,6 +2,7 @@
 
 #include "Core/DisjointSets.h"
 #include "Measures/ComponentOrientation.h"
+#include "Measures/TriangleAngles.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -26,12 +27,6 @@ using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
 std::uint64_t directedKey(std::int32_t a, std::int32_t b)
 {
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
-}
-
-double squaredDistance(const Point3& a, const Point3& b)
-{
-  const double dx = b.x - a.x, dy = b.y - a.y, dz = b.z - a.z;
-  return dx * dx + dy * dy + dz * dz;
 }
 
 /** The self-intersecting pairs by face index (faces are added in the order of mesh.triangles, so a
@@ -92,8 +87,8 @@ std::string MeshValidation::summary() const
 MeshValidation validateMeshTopology(const TriangleMesh& mesh)
 {
   // Linear in the triangles but for three sorts of their edges: no hash maps, no per-vertex
-  // allocation, no inverse trigonometry per triangle (the smallest angle is opposite the shortest
-  // edge; one arc cosine at the end).
+  // allocation, no inverse trigonometry per triangle (the cosine of its smallest angle; one arc
+  // cosine at the end).
   const double foldCosine = std::cos(M_PI / 180.0); // a dihedral angle under 1 degree
   const double cos30 = std::cos(M_PI / 6.0);
   MeshValidation v;
@@ -122,19 +117,7 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
     normals[f] = twiceArea > 0.0 ? std::array<double, 3>{ cx / twiceArea, cy / twiceArea, cz / twiceArea }
                                  : std::array<double, 3>{ 0.0, 0.0, 0.0 };
     v.area += 0.5 * twiceArea;
-    double cosine = 1.0; // no area: an angle of 0
-    if (twiceArea > 0.0)
-    {
-      // The corner opposite the shortest edge.
-      const double length2[3] = { squaredDistance(*p[1], *p[2]), squaredDistance(*p[2], *p[0]),
-                                  squaredDistance(*p[0], *p[1]) };
-      const int c = length2[0] <= length2[1] ? (length2[0] <= length2[2] ? 0 : 2) : (length2[1] <= length2[2] ? 1 : 2);
-      const Point3& o = *p[c];
-      const Point3& q = *p[(c + 1) % 3];
-      const Point3& r = *p[(c + 2) % 3];
-      const double ax = q.x - o.x, ay = q.y - o.y, az = q.z - o.z, bx = r.x - o.x, by = r.y - o.y, bz = r.z - o.z;
-      cosine = (ax * bx + ay * by + az * bz) / std::sqrt(length2[(c + 2) % 3] * length2[(c + 1) % 3]);
-    }
+    const double cosine = smallestAngleCosine(*p[0], *p[1], *p[2]);
     largestCosine = std::max(largestCosine, cosine);
     below30 += cosine > cos30;
   }

@@ -34,6 +34,16 @@ TEST(MeshQuality, EquilateralRightAndSliverTriangles)
   ASSERT_EQ(angles.size(), 3u);
   EXPECT_NEAR(angles[1], 45.0, 1e-9);
 
+  // Angles of 30, 30 and 120 degrees exactly (half-voxel coordinates): none under 30.
+  mesh.points.push_back({ 10, 20, 30 });
+  mesh.points.push_back({ 11, 20.5, 30.5 });
+  mesh.points.push_back({ 10.5, 20.5, 30 });
+  mesh.triangles = { { 9, 10, 11 } };
+  q = measureMeshQuality(mesh);
+  EXPECT_NEAR(q.minAngleDegrees, 30.0, 1e-12);
+  EXPECT_NEAR(q.maxAngleDegrees, 120.0, 1e-12);
+  EXPECT_EQ(q.fractionBelow30, 0.0);
+
   // Degenerate triangle: angle 0, aspect ratio infinite.
   mesh.triangles = { { 6, 7, 6 } };
   q = measureMeshQuality(mesh);

@@ -1,0 +1,157 @@
+// Step 4 of Documentation/Algorithm.md, first half: the two slices of a slab overlaid in one
+// constrained Delaunay triangulation, their common points merged and their contour edges constrained.
+#include "Tiling/SlabOverlayState.h"
+
+#include "Core/PlanarGeometry.h"
+#include "Core/SpatialHash.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace slicemesh
+{
+
+using namespace slab;
+
+/** CGAL's edge iterator reports an edge from whichever of its two faces lies at the lower address, so
+ *  its order (and the face an edge is seen from) would change from run to run with the heap's layout,
+ *  and the flips, the Steiner points and the mesh with it. Here an edge is seen from the face in which
+ *  it runs from the lower vertex id to the higher one (or from its only finite face). */
+std::vector<CDT::Edge> slab::finiteEdgesInStableOrder(const CDT& cdt)
+{
+  std::vector<CDT::Edge> edges;
+  edges.reserve(3 * cdt.number_of_faces());
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    for (int i = 0; i < 3; ++i)
+      if (cdt.is_infinite(f->neighbor(i)) || f->vertex(CDT::cw(i))->info() < f->vertex(CDT::ccw(i))->info())
+        edges.emplace_back(f, i);
+  return edges;
+}
+
+void SlabOverlay::Impl::buildVertices()
+{
+  // Points of the two slices closer than the tolerance are one overlay vertex: hash them on a grid
+  // of the tolerance's size and look in the neighbouring cells.
+  SpatialHash grid(std::max(tolerance, 1e-12));
+  auto findNear = [&](const Point2& p) -> int {
+    int found = -1;
+    grid.anyIn(grid.cellsWithin(p, grid.cellSize()), [&](int index) {
+      if (distance(vertices[index].p, p) > tolerance)
+        return false;
+      found = index;
+      return true;
+    });
+    return found;
+  };
+  auto add = [&](const PreparedSlice* slice, bool isLower) {
+    if (!slice)
+      return;
+    for (std::size_t c = 0; c < slice->contours.size(); ++c)
+    {
+      const Polygon2& polygon = slice->contours[c];
+      for (std::size_t i = 0; i < polygon.size(); ++i)
+      {
+        const std::int32_t id = slice->firstVertexId[c] + static_cast<std::int32_t>(i);
+        int index = findNear(polygon[i]);
+        if (index >= 0 && (isLower ? vertices[index].lowerId : vertices[index].upperId) >= 0)
+        {
+          std::ostringstream message;
+          message << "contours of the slice at z = " << slice->z << " mm touch each other at (" << polygon[i].x
+                  << ", " << polygon[i].y << ")";
+          throw Error(message.str());
+        }
+        if (index < 0)
+        {
+          index = static_cast<int>(vertices.size());
+          vertices.push_back({ polygon[i] });
+          grid.insert(polygon[i], index);
+        }
+        (isLower ? vertices[index].lowerId : vertices[index].upperId) = id;
+      }
+    }
+  };
+  add(lower, true);
+  add(upper, false);
+}
+
+void SlabOverlay::Impl::buildEdges()
+{
+  // Overlay index of each contour vertex, by mesh id.
+  std::unordered_map<std::int32_t, int> lowerIndex, upperIndex;
+  for (int i = 0; i < static_cast<int>(vertices.size()); ++i)
+  {
+    if (vertices[i].lowerId >= 0)
+      lowerIndex[vertices[i].lowerId] = i;
+    if (vertices[i].upperId >= 0)
+      upperIndex[vertices[i].upperId] = i;
+  }
+  auto add = [&](const PreparedSlice* slice, bool isLower, std::unordered_map<std::int32_t, int>& index,
+                 std::vector<std::pair<Point2, Point2>>& segments) {
+    if (!slice)
+      return;
+    for (std::size_t c = 0; c < slice->contours.size(); ++c)
+    {
+      const std::size_t n = slice->contours[c].size();
+      for (std::size_t i = 0; i < n; ++i)
+      {
+        const int a = index.at(slice->firstVertexId[c] + static_cast<std::int32_t>(i));
+        const int b = index.at(slice->firstVertexId[c] + static_cast<std::int32_t>((i + 1) % n));
+        OverlayEdge& e = edges[edgeKey(a, b)];
+        (isLower ? e.lower : e.upper) = true;
+        (isLower ? e.lowerFrom : e.upperFrom) = a;
+        (isLower ? e.lowerContour : e.upperContour) = static_cast<int>(c);
+        segments.emplace_back(slice->contours[c][i], slice->contours[c][(i + 1) % n]);
+      }
+    }
+  };
+  add(lower, true, lowerIndex, lowerSegments);
+  add(upper, false, upperIndex, upperSegments);
+  double total = 0.0;
+  for (const auto* set : { &lowerSegments, &upperSegments })
+    for (const auto& [a, b] : *set)
+      total += distance(a, b);
+  const std::size_t count = lowerSegments.size() + upperSegments.size();
+  typicalEdge = count > 0 ? std::max(total / count, 1e-6) : 1.0;
+  lowerNearest = std::make_unique<NearestSegment>(lowerSegments, 2.0 * typicalEdge);
+  upperNearest = std::make_unique<NearestSegment>(upperSegments, 2.0 * typicalEdge);
+}
+
+void SlabOverlay::Impl::triangulate()
+{
+  std::vector<std::pair<Kernel::Point_2, int>> points;
+  points.reserve(vertices.size());
+  for (int i = 0; i < static_cast<int>(vertices.size()); ++i)
+    points.emplace_back(Kernel::Point_2(vertices[i].p.x, vertices[i].p.y), i);
+  cdt.insert(points.begin(), points.end());
+  if (cdt.number_of_vertices() != vertices.size())
+    throw Error("slab overlay: two contour points coincide in projection beyond the merge tolerance");
+  std::vector<VertexHandle> handles(vertices.size());
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    handles[v->info()] = v;
+  for (const auto& [key, edge] : edges)
+  {
+    (void)edge;
+    cdt.insert_constraint(handles[key >> 32], handles[key & 0xffffffffULL]);
+  }
+  bool consistent = cdt.number_of_vertices() == vertices.size();
+  Point2 where;
+  for (auto e = cdt.finite_edges_begin(); consistent && e != cdt.finite_edges_end(); ++e)
+    if (e->first->is_constrained(e->second) &&
+        !edgeBetween(e->first->vertex(CDT::cw(e->second)), e->first->vertex(CDT::ccw(e->second))))
+    {
+      consistent = false;
+      const auto& p = e->first->vertex(CDT::cw(e->second))->point();
+      where = { p.x(), p.y() };
+    }
+  if (!consistent)
+  {
+    std::ostringstream message;
+    message << "contours of the slices at z = " << z0 << " and " << z1
+            << " mm cross or overlap where they should only meet at common vertices, near (" << where.x << ", "
+            << where.y << ")";
+    throw Error(message.str());
+  }
+}
+
+} // namespace slicemesh

@@ -1,0 +1,119 @@
+// Step 8 of Documentation/Algorithm.md, second half: Lawson flips towards the largest smallest angle
+// of the lifted triangles, so the tiling is Delaunay-like in the surface's own metric.
+#include "Tiling/SlabOverlayState.h"
+
+#include "Core/PlanarGeometry.h"
+#include "Measures/TriangleAngles.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace slicemesh
+{
+
+using namespace slab;
+
+namespace
+{
+
+/** Cosine of the angle between the normals of triangles (a, b, c) and (b, a, d), which share edge
+ *  ab: 1 where they are coplanar, -1 where one folds onto the other. */
+double normalsCosine(const Point3& a, const Point3& b, const Point3& c, const Point3& d)
+{
+  auto normal = [](const Point3& p, const Point3& q, const Point3& r) {
+    const double ux = q.x - p.x, uy = q.y - p.y, uz = q.z - p.z;
+    const double vx = r.x - p.x, vy = r.y - p.y, vz = r.z - p.z;
+    return std::array<double, 3>{ uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx };
+  };
+  const auto m = normal(a, b, c), n = normal(b, a, d);
+  const double lengths = std::sqrt((m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
+  return lengths > 0.0 ? (m[0] * n[0] + m[1] * n[1] + m[2] * n[2]) / lengths : 1.0;
+}
+
+} // namespace
+
+std::size_t SlabOverlay::Impl::flipTowardsSurfaceQuality(const MeshBuilder& mesh)
+{
+  // The planar CDT minimises the Dirichlet energy of the height field (Rippa), but where the surface
+  // climbs steeply between nearly parallel contours its triangles are slivers in 3D: Delaunay in
+  // the plane is not Delaunay on the lifted surface. Lawson flips with the max-min angle criterion
+  // measured on the lifted triangles make the tiling Delaunay-like in the surface's own metric.
+  // A flip is taken only where the quad is convex in projection (the surface stays a height field,
+  // so no triangle can cross another) and never at a vertex common to both slices or into a chord
+  // flat on a slice plane (the invariants of the switch fans and of the neighbouring slabs).
+  auto lifted = [&](VertexHandle v) -> Point3 {
+    const OverlayVertex& ov = vertices[v->info()];
+    if (ov.isSteiner())
+      return mesh.point(ov.steinerId);
+    return { ov.p.x, ov.p.y, ov.lowerId >= 0 ? z0 : z1 };
+  };
+  auto flippable = [&](FaceHandle f, int i) {
+    if (f->is_constrained(i) || cdt.is_infinite(f) || cdt.is_infinite(f->neighbor(i)) || !isDifference(f))
+      return false;
+    FaceHandle g = f->neighbor(i);
+    const VertexHandle a = f->vertex(i), b = g->vertex(cdt.mirror_index(f, i));
+    const VertexHandle p = f->vertex(CDT::cw(i)), q = f->vertex(CDT::ccw(i));
+    for (VertexHandle v : { a, b, p, q })
+      if (vertices[v->info()].onBoth())
+        return false;
+    const Level la = singleLevel(vertices[a->info()]), lb = singleLevel(vertices[b->info()]);
+    if (la != NoLevel && la == lb)
+      return false;
+    const Point2 pa{ a->point().x(), a->point().y() }, pb{ b->point().x(), b->point().y() };
+    const Point2 pp{ p->point().x(), p->point().y() }, pq{ q->point().x(), q->point().y() };
+    if (orientation(pa, pb, pp) * orientation(pa, pb, pq) >= 0)
+      return false;
+    // Nor into a triangle of almost no width in projection: lifted, it stands vertical, which the 3D
+    // angles like, but a neighbour can fold onto it (and rounding later make them cross).
+    if (distanceToSegment(pp, pa, pb) < 1e-3 * typicalEdge || distanceToSegment(pq, pa, pb) < 1e-3 * typicalEdge)
+      return false;
+    const Point3 A = lifted(a), B = lifted(b), P = lifted(p), Q = lifted(q);
+    const double before = std::min(smallestAngle(A, P, Q), smallestAngle(B, Q, P));
+    const double after = std::min(smallestAngle(A, B, Q), smallestAngle(B, A, P));
+    // Nor into a crease sharper than a right angle across the new edge: steep triangles have good
+    // angles, but two of them meeting in a knife-edge ridge nearly fold onto each other.
+    const double crease = normalsCosine(A, B, Q, P);
+    if (crease < 0.0 && crease < normalsCosine(P, Q, A, B))
+      return false;
+    return after > before + 1e-9;
+  };
+  // The worst triangles' edges are taken first (the queue pops from the back): the flips then settle
+  // in a better local optimum than in mesh order.
+  std::vector<std::pair<double, CDT::Edge>> ranked;
+  for (const CDT::Edge& e : finiteEdgesInStableOrder(cdt))
+    if (!e.first->is_constrained(e.second) && isDifference(e.first) && !cdt.is_infinite(e.first->neighbor(e.second)))
+    {
+      const FaceHandle f = e.first, g = f->neighbor(e.second);
+      const double worst = std::min(smallestAngle(lifted(f->vertex(0)), lifted(f->vertex(1)), lifted(f->vertex(2))),
+                                    smallestAngle(lifted(g->vertex(0)), lifted(g->vertex(1)), lifted(g->vertex(2))));
+      ranked.emplace_back(worst, e);
+    }
+  std::stable_sort(ranked.begin(), ranked.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+  std::vector<std::pair<VertexHandle, VertexHandle>> queue;
+  for (const auto& [worst, e] : ranked)
+    queue.emplace_back(e.first->vertex(CDT::cw(e.second)), e.first->vertex(CDT::ccw(e.second)));
+  std::size_t flips = 0;
+  const std::size_t limit = 20 * queue.size() + 100;
+  while (!queue.empty() && flips < limit)
+  {
+    const auto [u, v] = queue.back();
+    queue.pop_back();
+    FaceHandle f;
+    int i = 0;
+    if (!cdt.is_edge(u, v, f, i) || !flippable(f, i))
+      continue;
+    FaceHandle g = f->neighbor(i);
+    const VertexHandle a = f->vertex(i), b = g->vertex(cdt.mirror_index(f, i));
+    cdt.flip(f, i);
+    ++flips;
+    for (VertexHandle w : { u, v })
+    {
+      queue.emplace_back(a, w);
+      queue.emplace_back(b, w);
+    }
+  }
+  return flips;
+}
+
+} // namespace slicemesh

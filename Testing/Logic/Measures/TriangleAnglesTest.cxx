@@ -1,0 +1,69 @@
+// The angles of a triangle (TriangleAngles.h), the one measure of them the stages share.
+#include "Measures/TriangleAngles.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace slicemesh;
+
+namespace
+{
+double degrees(double radians)
+{
+  return radians * 180.0 / M_PI;
+}
+} // namespace
+
+TEST(TriangleAngles, RightEquilateralAndSliverTrianglesInSpace)
+{
+  // A 3-4-5 right triangle tilted out of every coordinate plane: angles 90, atan(4/3), atan(3/4) at the
+  // corners opposite the hypotenuse, the side 4 and the side 3.
+  const Point3 o{ 1, 2, 3 };
+  const double h = std::sqrt(2.0) / 2;
+  const Point3 a{ o.x + 3 * h, o.y + 3 * h, o.z };             // o + 3 (1, 1, 0) / sqrt 2
+  const Point3 b{ o.x - 4 * 0.5, o.y + 4 * 0.5, o.z + 4 * h }; // o + 4 (-1, 1, sqrt 2) / 2, orthogonal
+  const std::array<double, 3> angles = triangleAngles(o, a, b);
+  EXPECT_NEAR(degrees(angles[0]), 90.0, 1e-12);
+  EXPECT_NEAR(degrees(angles[1]), degrees(std::atan2(4.0, 3.0)), 1e-12);
+  EXPECT_NEAR(degrees(angles[2]), degrees(std::atan2(3.0, 4.0)), 1e-12);
+  EXPECT_NEAR(degrees(angles[0] + angles[1] + angles[2]), 180.0, 1e-12);
+  EXPECT_NEAR(degrees(smallestAngle(o, a, b)), degrees(std::atan2(3.0, 4.0)), 1e-12);
+  EXPECT_NEAR(smallestAngleCosine(o, a, b), 0.8, 1e-14); // cos(atan(3/4)) = 4/5
+
+  const Point3 p{ 0, 0, 0 }, q{ 1, 0, 0 }, r{ 0.5, std::sqrt(3.0) / 2, 0 };
+  for (double angle : triangleAngles(p, q, r))
+    EXPECT_NEAR(degrees(angle), 60.0, 1e-12);
+  EXPECT_NEAR(smallestAngleCosine(p, q, r), 0.5, 1e-14);
+
+  // A sliver 1e-7 high over a base of 2: its smallest angles are 1e-7 rad, still to full precision,
+  // where an arc cosine of its cosine would have lost half the digits.
+  const Point3 u{ -1, 0, 0 }, v{ 1, 0, 0 }, w{ 0, 1e-7, 0 };
+  EXPECT_NEAR(smallestAngle(u, v, w) / std::atan(1e-7), 1.0, 1e-12);
+  EXPECT_NEAR(degrees(triangleAngles(u, v, w)[2]), 180.0 - degrees(2.0 * std::atan(1e-7)), 1e-9);
+}
+
+TEST(TriangleAngles, DegenerateTriangles)
+{
+  const Point3 a{ 0, 0, 0 }, b{ 2, 0, 0 }, c{ 1, 0, 0 };
+  // Three points on a line: no area, angles 0, 0 and 180 degrees, a cosine of 1 (an angle of 0).
+  EXPECT_EQ(smallestAngle(a, b, c), 0.0);
+  EXPECT_NEAR(degrees(triangleAngles(a, b, c)[2]), 180.0, 1e-12);
+  EXPECT_EQ(smallestAngleCosine(a, b, c), 1.0);
+  // Two corners in one place.
+  EXPECT_EQ(smallestAngle(a, a, b), 0.0);
+  EXPECT_EQ(smallestAngleCosine(a, a, b), 1.0);
+}
+
+TEST(TriangleAngles, AnAngleThatIsTheBoundIsNotUnderIt)
+{
+  // 30 degrees exactly at o, between (1, 0.5, 0.5) and (0.5, 0.5, 0), as half-voxel coordinates on an
+  // isotropic grid give them; its computed value may fall a bit either side of 30.
+  const Point3 o{ 10, 20, 30 }, p{ 11, 20.5, 30.5 }, q{ 10.5, 20.5, 30 };
+  const double angle = triangleAngles(o, p, q)[0];
+  EXPECT_NEAR(degrees(angle), 30.0, 1e-12);
+  EXPECT_FALSE(angleUnder(angle, 30.0));
+  EXPECT_TRUE(angleUnder(angle, 30.001));
+  EXPECT_TRUE(angleUnder(29.999 * M_PI / 180.0, 30.0));
+  EXPECT_FALSE(angleUnder(30.001 * M_PI / 180.0, 30.0));
+}
