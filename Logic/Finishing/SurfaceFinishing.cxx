@@ -178,7 +178,7 @@ FinishedPiece finishPiece(const TriangleMesh& tiled, const SurfaceFinishingOptio
   }
   TriangleMesh smoothed = tiled;
   smoothSurface(smoothed, options.smoothing);
-  if (volumeScale != 1.0)
+  if (volumeScale != 1.0 && options.smoothing.iterations > 0) // no iterations asked: the tiling itself
     offsetToVolume(smoothed, volumeScale * reference.volume);
   MeshValidation validation = validateMesh(smoothed);
   const std::size_t unsmoothedVertices = unsmoothCrossings(smoothed, tiled, validation);

@@ -3,6 +3,7 @@
 #include "Contours/ContourNesting.h"
 #include "Core/PlanarGeometry.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace slicemesh
@@ -14,13 +15,13 @@ double prismVolume(const ContourStack& stack)
   double volume = 0.0;
   for (std::size_t k = 0; k < slices.size(); ++k)
   {
-    double thickness = stack.sliceSpacing;
-    if (!(thickness > 0.0))
-    {
-      const double below = k > 0 ? slices[k].z - slices[k - 1].z : 0.0;
-      const double above = k + 1 < slices.size() ? slices[k + 1].z - slices[k].z : 0.0;
-      thickness = below > 0.0 && above > 0.0 ? 0.5 * (below + above) : below + above;
-    }
+    // Half the gap to each neighbour; beyond an end slice, half the slice spacing (or, without one,
+    // half the gap on the other side). A slice missing inside the stack is shared by its neighbours,
+    // as the tiling bridges it.
+    const double below = k > 0 ? slices[k].z - slices[k - 1].z : 0.0;
+    const double above = k + 1 < slices.size() ? slices[k + 1].z - slices[k].z : 0.0;
+    const double beyond = stack.sliceSpacing > 0.0 ? stack.sliceSpacing : std::max(below, above);
+    const double thickness = 0.5 * ((k > 0 ? below : beyond) + (k + 1 < slices.size() ? above : beyond));
     std::vector<Polygon2> contours = slices[k].contours;
     const ContourNesting nesting = orientAndNest(contours);
     double area = 0.0;

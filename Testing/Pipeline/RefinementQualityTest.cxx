@@ -63,8 +63,10 @@ void expectRefinedQuality(const char* name, const Phantom& phantom)
     EXPECT_GE(q.minAngleDegrees, statedMinAngleBound);
     EXPECT_TRUE(on.validation.valid()) << on.validation.summary();
     // The surface, not only its vertices: refinement adds vertices inside the slabs, which a mean
-    // over vertices would weigh against the unrefined mesh's contour vertices alone.
-    EXPECT_LE(on.surfaceDistance, off.surfaceDistance * 1.001);
+    // over vertices would weigh against the unrefined mesh's contour vertices alone. The finished
+    // surface encloses the voxels' volume, which the tiling falls short of at edges and corners: on
+    // a box the offset moves the flat faces out too (3% farther than the tiling at 0.8 x 0.8 x 3 mm).
+    EXPECT_LE(on.surfaceDistance, off.surfaceDistance * 1.05);
   }
 }
 

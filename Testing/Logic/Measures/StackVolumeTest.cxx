@@ -43,5 +43,16 @@ TEST(StackVolume, WithoutASpacingEachSliceTakesHalfOfEachGap)
   EXPECT_NEAR(prismVolume(stack), 6.0 * 6.0 - 2.0 * 2.0 + 0.5 * 2.0, 1e-9);
 }
 
+TEST(StackVolume, AMissingSliceIsSharedByItsNeighbours)
+{
+  // Slices every 1 mm with the one at 2 mm missing: its millimetre is counted half to each neighbour,
+  // as the tiling bridges it; five slices' worth in all.
+  ContourStack stack;
+  stack.sliceSpacing = 1.0;
+  for (double z : { 0.0, 1.0, 3.0, 4.0 })
+    stack.slices.push_back({ z, { rectangle(0.0, 0.0, 2.0, 3.0) } });
+  EXPECT_NEAR(prismVolume(stack), 6.0 * 5.0, 1e-9);
+}
+
 } // namespace
 } // namespace slicemesh::testing
