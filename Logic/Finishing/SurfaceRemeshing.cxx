@@ -1,14 +1,13 @@
 #include "Finishing/SurfaceRemeshing.h"
 
 #include "Measures/MeshComponents.h"
+#include "Measures/SurfaceMeshConversion.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <cmath>
 #include <string>
@@ -20,27 +19,19 @@ namespace slicemesh
 namespace
 {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using Kernel = CgalKernel;
+using SurfaceMesh = CgalSurfaceMesh;
 using Vertex = SurfaceMesh::Vertex_index;
 using Primitive = CGAL::AABB_face_graph_triangle_primitive<SurfaceMesh>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-SurfaceMesh toSurfaceMesh(const TriangleMesh& mesh)
+SurfaceMesh surfaceOf(const TriangleMesh& mesh)
 {
   SurfaceMesh surface;
-  surface.reserve(mesh.points.size(), 3 * mesh.triangles.size() / 2, mesh.triangles.size());
-  std::vector<Vertex> vertices;
-  vertices.reserve(mesh.points.size());
-  for (const Point3& p : mesh.points)
-    vertices.push_back(surface.add_vertex(Kernel::Point_3(p.x, p.y, p.z)));
-  for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
-  {
-    const Triangle& t = mesh.triangles[i];
-    if (surface.add_face(vertices[t[0]], vertices[t[1]], vertices[t[2]]) == SurfaceMesh::null_face())
-      throw Error("surface remeshing: triangle " + std::to_string(i) + " does not fit a manifold surface");
-  }
+  const std::size_t misfit = toSurfaceMesh(mesh, surface);
+  if (misfit != mesh.triangles.size())
+    throw Error("surface remeshing: triangle " + std::to_string(misfit) + " does not fit a manifold surface");
   return surface;
 }
 
@@ -146,7 +137,7 @@ struct NoProjection
  *  relaxation sweep and the projection of every vertex onto the input piece. */
 TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options)
 {
-  SurfaceMesh surface = toSurfaceMesh(mesh);
+  SurfaceMesh surface = surfaceOf(mesh);
   const SurfaceMesh input = surface;
   Tree tree(faces(input).first, faces(input).second, input);
   tree.accelerate_distance_queries();

@@ -2,10 +2,9 @@
 
 #include "Measures/MeshComponents.h"
 #include "Measures/MeshValidation.h"
+#include "Measures/SurfaceMeshConversion.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Side_of_triangle_mesh.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <array>
@@ -17,8 +16,8 @@ namespace slicemesh
 namespace
 {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using Kernel = CgalKernel;
+using SurfaceMesh = CgalSurfaceMesh;
 using SideOf = CGAL::Side_of_triangle_mesh<SurfaceMesh, Kernel>;
 
 struct Box
@@ -64,13 +63,8 @@ struct Enclosure
 
   explicit Enclosure(const TriangleMesh& mesh)
   {
-    std::vector<SurfaceMesh::Vertex_index> handles;
-    handles.reserve(mesh.points.size());
-    for (const Point3& p : mesh.points)
-      handles.push_back(surface.add_vertex(Kernel::Point_3(p.x, p.y, p.z)));
-    for (const Triangle& t : mesh.triangles)
-      if (surface.add_face(handles[t[0]], handles[t[1]], handles[t[2]]) == SurfaceMesh::null_face())
-        throw Error("component orientation: a component is not a manifold surface");
+    if (toSurfaceMesh(mesh, surface) != mesh.triangles.size())
+      throw Error("component orientation: a component is not a manifold surface");
     side = std::make_unique<SideOf>(surface);
   }
 

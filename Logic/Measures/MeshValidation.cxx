@@ -2,11 +2,10 @@
 
 #include "Core/DisjointSets.h"
 #include "Measures/ComponentOrientation.h"
+#include "Measures/SurfaceMeshConversion.h"
 #include "Measures/TriangleAngles.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <array>
@@ -21,8 +20,7 @@ namespace slicemesh
 namespace
 {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using SurfaceMesh = CgalSurfaceMesh;
 
 std::uint64_t directedKey(std::int32_t a, std::int32_t b)
 {
@@ -34,16 +32,11 @@ std::uint64_t directedKey(std::int32_t a, std::int32_t b)
 std::vector<std::pair<std::size_t, std::size_t>> intersectingPairs(const TriangleMesh& mesh, bool& checked)
 {
   SurfaceMesh surface;
-  std::vector<SurfaceMesh::Vertex_index> handles;
-  handles.reserve(mesh.points.size());
-  for (const Point3& p : mesh.points)
-    handles.push_back(surface.add_vertex(Kernel::Point_3(p.x, p.y, p.z)));
-  for (const Triangle& t : mesh.triangles)
-    if (surface.add_face(handles[t[0]], handles[t[1]], handles[t[2]]) == SurfaceMesh::null_face())
-    {
-      checked = false;
-      return {};
-    }
+  if (toSurfaceMesh(mesh, surface) != mesh.triangles.size())
+  {
+    checked = false;
+    return {};
+  }
   // On every core (TBB): the pairs come in no fixed order, so they are sorted.
   std::vector<std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>> pairs;
   CGAL::Polygon_mesh_processing::self_intersections<CGAL::Parallel_if_available_tag>(surface, std::back_inserter(pairs));

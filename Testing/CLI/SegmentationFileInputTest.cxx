@@ -5,19 +5,12 @@
 // where the shape is; bad files are refused in one line with nothing written.
 #include "CLITestSupport.h"
 #include "ExitCodes.h"
+#include "MeshReader.h"
 #include "Measures/MeshValidation.h"
 #include "SegmentationFileWriters.h"
 
 #include <gtest/gtest.h>
 
-#include <vtkCellArray.h>
-#include <vtkCellData.h>
-#include <vtkDataArray.h>
-#include <vtkFieldData.h>
-#include <vtkNew.h>
-#include <vtkPolyData.h>
-#include <vtkStringArray.h>
-#include <vtkXMLPolyDataReader.h>
 
 #include <cmath>
 #include <map>
@@ -41,33 +34,14 @@ struct WrittenModel
 
 WrittenModel readModel(const fs::path& path)
 {
-  vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  vtkPolyData* polyData = reader->GetOutput();
+  const MeshFile file = readMesh(path.string());
   WrittenModel model;
-  for (vtkIdType n = 0; n < polyData->GetNumberOfPoints(); ++n)
-  {
-    double p[3];
-    polyData->GetPoint(n, p);
-    model.mesh.points.push_back({ p[0], p[1], p[2] });
-  }
-  vtkCellArray* polys = polyData->GetPolys();
-  vtkIdType count = 0;
-  const vtkIdType* ids = nullptr;
-  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
-    model.mesh.triangles.push_back({ static_cast<std::int32_t>(ids[0]), static_cast<std::int32_t>(ids[1]),
-                                     static_cast<std::int32_t>(ids[2]) });
-  if (vtkDataArray* labels = polyData->GetCellData()->GetArray("Label"))
-    for (vtkIdType n = 0; n < labels->GetNumberOfTuples(); ++n)
-      model.labels.push_back(static_cast<int>(labels->GetComponent(n, 0)));
-  if (vtkDataArray* colors = polyData->GetCellData()->GetArray("Color"))
-    for (vtkIdType n = 0; n < colors->GetNumberOfTuples(); ++n)
-      model.colors.push_back({ static_cast<int>(colors->GetComponent(n, 0)), static_cast<int>(colors->GetComponent(n, 1)),
-                               static_cast<int>(colors->GetComponent(n, 2)) });
-  if (auto* names = vtkStringArray::SafeDownCast(polyData->GetFieldData()->GetAbstractArray("LabelName")))
-    for (vtkIdType n = 0; n < names->GetNumberOfValues(); ++n)
-      model.names.push_back(names->GetValue(n));
+  model.mesh = file.mesh;
+  model.labels = file.attributes.cellLabels;
+  for (const auto& rgb : file.attributes.cellColors)
+    model.colors.push_back({ rgb[0], rgb[1], rgb[2] });
+  for (const MeshAttributes::Structure& structure : file.attributes.structures)
+    model.names.push_back(structure.name);
   return model;
 }
 

@@ -4,18 +4,12 @@
 // and the files that must fail with one line and write nothing.
 #include "CLITestSupport.h"
 #include "ExitCodes.h"
+#include "MeshReader.h"
 #include "Measures/MeshValidation.h"
 #include "StructureSetWriter.h"
 #include "TestContours.h"
 
 #include <gtest/gtest.h>
-
-#include <vtkCellArray.h>
-#include <vtkCellData.h>
-#include <vtkNew.h>
-#include <vtkPolyData.h>
-#include <vtkUnsignedCharArray.h>
-#include <vtkXMLPolyDataReader.h>
 
 #include <fstream>
 
@@ -28,39 +22,10 @@ namespace
 
 constexpr double Spacing = 3.0; ///< slice spacing of the synthesized sets, mm
 
-TriangleMesh readMesh(const fs::path& path, std::vector<std::array<unsigned char, 3>>* colors = nullptr)
-{
-  vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  vtkPolyData* polyData = reader->GetOutput();
-  TriangleMesh mesh;
-  for (vtkIdType n = 0; n < polyData->GetNumberOfPoints(); ++n)
-  {
-    double p[3];
-    polyData->GetPoint(n, p);
-    mesh.points.push_back({ p[0], p[1], p[2] });
-  }
-  vtkCellArray* polys = polyData->GetPolys();
-  vtkIdType count = 0;
-  const vtkIdType* ids = nullptr;
-  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
-    if (count == 3)
-      mesh.triangles.push_back({ static_cast<std::int32_t>(ids[0]), static_cast<std::int32_t>(ids[1]),
-                                 static_cast<std::int32_t>(ids[2]) });
-  if (colors)
-    if (auto* array = vtkUnsignedCharArray::SafeDownCast(polyData->GetCellData()->GetArray("Color")))
-      for (vtkIdType n = 0; n < array->GetNumberOfTuples(); ++n)
-        colors->push_back({ static_cast<unsigned char>(array->GetComponent(n, 0)),
-                            static_cast<unsigned char>(array->GetComponent(n, 1)),
-                            static_cast<unsigned char>(array->GetComponent(n, 2)) });
-  return mesh;
-}
-
 /** A valid closed surface: closed, manifold, checked free of self-intersections, outward. */
 MeshValidation expectValid(const fs::path& path)
 {
-  const TriangleMesh mesh = readMesh(path);
+  const TriangleMesh mesh = readMesh(path.string()).mesh;
   const MeshValidation v = validateMesh(mesh);
   EXPECT_GT(v.triangles, 0u) << path;
   EXPECT_TRUE(v.closed()) << path << ": " << v.summary();
@@ -155,7 +120,9 @@ TEST(StructureSet, AnAnnulusWithItsHoleNestedOrAsAKeyholeIsATorusOfTheRightVolum
   EXPECT_TRUE(hasLine(run.result.out, "half a slice beyond")) << run.result.out;
   // The merged model carries each ROI's colour.
   std::vector<std::array<unsigned char, 3>> colors;
-  const TriangleMesh merged = readMesh(run.folder / "all.vtp", &colors);
+  const MeshFile mergedFile = readMesh((run.folder / "all.vtp").string());
+  const TriangleMesh& merged = mergedFile.mesh;
+  colors = mergedFile.attributes.cellColors;
   ASSERT_EQ(colors.size(), merged.triangles.size());
   EXPECT_EQ(colors.front(), (std::array<unsigned char, 3>{ 250, 0, 0 }));
   EXPECT_EQ(colors.back(), (std::array<unsigned char, 3>{ 0, 250, 0 }));
@@ -191,7 +158,7 @@ TEST(StructureSet, TheTilingLiesExactlyOnTheContoursInPatientSpace)
   {
     const SetRun run = meshSet("Tiled" + system, { nestedAnnulus() }, "--surfaceFinish Tiled --coordinateSystem " + system);
     ASSERT_EQ(run.result.exitCode, cli::Success) << run.result.err;
-    const TriangleMesh mesh = readMesh(run.folder / "rois" / "001_Annulus_nested.vtp");
+    const TriangleMesh mesh = readMesh((run.folder / "rois" / "001_Annulus_nested.vtp").string()).mesh;
     const double sign = system == "RAS" ? -1.0 : 1.0;
     double minZ = 1e9, maxZ = -1e9, minRadius = 1e9, maxRadius = 0.0;
     for (const Point3& p : mesh.points)
@@ -272,7 +239,7 @@ TEST(StructureSet, EmptyAndSingleSliceROIsAreReportedAndTheOthersWritten)
   const double expected = polygonArea(10.0) * Spacing;
   EXPECT_NEAR(slab.volume, expected, 0.1 * expected);
   double minZ = 1e9, maxZ = -1e9;
-  for (const Point3& p : readMesh(run.folder / "rois" / "008_Single.vtp").points)
+  for (const Point3& p : readMesh((run.folder / "rois" / "008_Single.vtp").string()).mesh.points)
   {
     minZ = std::min(minZ, p.z);
     maxZ = std::max(maxZ, p.z);

@@ -2,16 +2,12 @@
 // --surfaceSmoothingIterations, --surfaceSmoothingPassBand): what each finish writes, on a sphere
 // whose true surface is known, and how bad values are refused.
 #include "CLITestSupport.h"
+#include "MeshReader.h"
 #include "ExitCodes.h"
 #include "Measures/MeshValidation.h"
 #include "Finishing/SurfaceRemeshing.h"
 
 #include <gtest/gtest.h>
-
-#include <vtkCellArray.h>
-#include <vtkNew.h>
-#include <vtkPolyData.h>
-#include <vtkXMLPolyDataReader.h>
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +20,6 @@ namespace slicemesh::testing
 {
 namespace
 {
-
 
 /** A ball of radius 7 mm centred at (12, 12, 12) mm in a 24 x 24 x 12 label map of 1 x 1 x 2 mm
  *  voxels (value 1 where the voxel centre is inside). The output is in LPS millimetres of this
@@ -44,31 +39,6 @@ fs::path sphereLabelMap(const fs::path& folder)
                    return x * x + y * y + z * z <= radius * radius ? 1 : 0;
                  });
   return path;
-}
-
-TriangleMesh readVtp(const fs::path& path)
-{
-  vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  vtkPolyData* polyData = reader->GetOutput();
-  TriangleMesh mesh;
-  for (vtkIdType n = 0; n < polyData->GetNumberOfPoints(); ++n)
-  {
-    double p[3];
-    polyData->GetPoint(n, p);
-    mesh.points.push_back({ p[0], p[1], p[2] });
-  }
-  vtkCellArray* polys = polyData->GetPolys();
-  vtkIdType count = 0;
-  const vtkIdType* ids = nullptr;
-  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
-  {
-    EXPECT_EQ(count, 3);
-    mesh.triangles.push_back({ static_cast<std::int32_t>(ids[0]), static_cast<std::int32_t>(ids[1]),
-                               static_cast<std::int32_t>(ids[2]) });
-  }
-  return mesh;
 }
 
 /** Mean distance of the vertices to the true sphere (mm). */
@@ -101,7 +71,7 @@ TriangleMesh meshSphere(const fs::path& folder, const std::string& name, const s
   EXPECT_EQ(r.err, "") << name << ": no warning (no fallback)";
   if (run)
     *run = r;
-  return r.exitCode == cli::Success ? readVtp(output) : TriangleMesh{};
+  return r.exitCode == cli::Success ? readMesh(output.string()).mesh : TriangleMesh{};
 }
 
 void expectValidClosedSphere(const TriangleMesh& mesh, const std::string& name)
@@ -279,7 +249,7 @@ TEST(FinishingOptions, EveryLabelIsFinishedAndItsReportEntrySaysHow)
     ++edges;
   EXPECT_EQ(edges, 3u) << edge << "\n" << json;
 
-  const TriangleMesh first = readVtp(folder / "labels" / "001_Label_1.vtp");
+  const TriangleMesh first = readMesh((folder / "labels" / "001_Label_1.vtp").string()).mesh;
   expectValidClosedSphere(first, "label 1");
   const TriangleMesh tiled = meshSphere(folder, "tiled", "--label 1 --surfaceFinish Tiled");
   EXPECT_LT(meanDistanceToSphere(first), meanDistanceToSphere(tiled));

@@ -3,17 +3,13 @@
 // its label's voxel volume in the atlas.
 #include "CLITestSupport.h"
 #include "ExitCodes.h"
+#include "MeshReader.h"
 #include "Measures/MeshValidation.h"
 #include "VolumeReader.h"
 
 #include <gtest/gtest.h>
 
 #include <itkImageRegionConstIterator.h>
-
-#include <vtkCellArray.h>
-#include <vtkNew.h>
-#include <vtkPolyData.h>
-#include <vtkXMLPolyDataReader.h>
 
 #include <iostream>
 #include <map>
@@ -29,28 +25,6 @@ namespace
 // contours' prism volume (each slice's area times its thickness, ending half a slice beyond the end
 // contours, as the voxels do), and plastimatch's contours enclose a little less than the voxels.
 constexpr double volumeTolerance = 0.01;
-
-TriangleMesh readMesh(const fs::path& path)
-{
-  vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  vtkPolyData* polyData = reader->GetOutput();
-  TriangleMesh mesh;
-  for (vtkIdType n = 0; n < polyData->GetNumberOfPoints(); ++n)
-  {
-    double p[3];
-    polyData->GetPoint(n, p);
-    mesh.points.push_back({ p[0], p[1], p[2] });
-  }
-  vtkIdType count = 0;
-  const vtkIdType* ids = nullptr;
-  vtkCellArray* polys = polyData->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
-    mesh.triangles.push_back({ static_cast<std::int32_t>(ids[0]), static_cast<std::int32_t>(ids[1]),
-                               static_cast<std::int32_t>(ids[2]) });
-  return mesh;
-}
 
 TEST(AtlasStructureSet, TenAALStructuresFromPlastimatchMatchTheirVoxelVolumes)
 {
@@ -75,7 +49,7 @@ TEST(AtlasStructureSet, TenAALStructuresFromPlastimatchMatchTheirVoxelVolumes)
     const std::string file = entry.path().filename().string();
     const std::string name = file.substr(file.find('_') + 1, file.size() - file.find('_') - 5);
     ASSERT_EQ(labels.count(name), 1u) << file;
-    const MeshValidation v = validateMesh(readMesh(entry.path()));
+    const MeshValidation v = validateMesh(readMesh(entry.path().string()).mesh);
     EXPECT_TRUE(v.valid()) << file << ": " << v.summary();
     const double expected = voxelVolume[labels.at(name)];
     std::cout << name << ": mesh " << v.volume << " mm^3, voxels " << expected << " mm^3, ratio " << v.volume / expected
