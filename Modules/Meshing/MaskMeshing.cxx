@@ -3,17 +3,23 @@
 namespace slicemesh
 {
 
-MeshedContours startMaskMeshing(const MaskVolume* mask, const MeshingOptions& options, double contourSmoothingSigma)
+double maskVoxelVolume(const MaskVolume* mask)
 {
-  const auto spacing = mask->GetSpacing();
-  // The finished surface encloses the voxels' volume (their traced contours cut each convex corner).
   std::size_t voxels = 0;
   const std::size_t count = mask->GetBufferedRegion().GetNumberOfPixels();
   const auto* value = mask->GetBufferPointer();
   for (std::size_t i = 0; i < count; ++i)
     voxels += value[i] != 0;
+  const auto spacing = mask->GetSpacing();
+  return static_cast<double>(voxels) * spacing[0] * spacing[1] * spacing[2];
+}
+
+MeshedContours startMaskMeshing(const MaskVolume* mask, const MeshingOptions& options, double contourSmoothingSigma)
+{
+  const auto spacing = mask->GetSpacing();
+  // The finished surface encloses the voxels' volume (their traced contours cut each convex corner).
   return startMeshing(extractContours(mask, contourSmoothingSigma), options, { spacing[0], spacing[1], spacing[2] },
-                      static_cast<double>(voxels) * spacing[0] * spacing[1] * spacing[2]);
+                      maskVoxelVolume(mask));
 }
 
 MeshedMask meshMask(const MaskVolume* mask, const MeshingOptions& options, double contourSmoothingSigma,

@@ -10,6 +10,9 @@
 namespace slicemesh
 {
 
+/** The volume of the mask's voxels (its non-zero voxels times the voxel volume; mm^3). */
+double maskVoxelVolume(const MaskVolume* mask);
+
 /** The mask's contours traced at its 0.5 level (after an in-plane Gaussian of `contourSmoothingSigma`
  *  mm, if above 0), at the start of the meshing path with the options resolved for its spacing and
  *  the volume of its voxels as the finished surface's volume. */

@@ -53,20 +53,10 @@ struct Row
   double spacingRatio = 0.0; ///< in-plane point spacing / slice spacing (SliceMesh rows)
 };
 
-double voxelVolume(const MaskVolume* mask)
-{
-  std::size_t voxels = 0;
-  const std::size_t count = mask->GetBufferedRegion().GetNumberOfPixels();
-  for (std::size_t i = 0; i < count; ++i)
-    voxels += mask->GetBufferPointer()[i] != 0;
-  const auto s = mask->GetSpacing();
-  return static_cast<double>(voxels) * s[0] * s[1] * s[2];
-}
-
 void measure(Row& row, const TriangleMesh& physical, const Phantom& phantom, const MaskVolume* mask)
 {
   const MeshValidation v = validateMesh(physical);
-  row.voxelVolumeError = 100.0 * (std::abs(v.volume) / voxelVolume(mask) - 1.0);
+  row.voxelVolumeError = 100.0 * (std::abs(v.volume) / maskVoxelVolume(mask) - 1.0);
   const MeshQuality q = measureMeshQuality(physical);
   row.triangles = q.triangles;
   row.below30 = 100.0 * q.fractionBelow30;
