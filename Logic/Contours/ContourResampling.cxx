@@ -16,7 +16,10 @@ Polygon2 resampleContour(const Polygon2& contour, double spacing)
   const double length = perimeter(contour);
   if (!(spacing > 0.0) || contour.size() < 2 || !(length > 0.0))
     return contour;
-  const std::size_t count = std::max<std::size_t>(3, static_cast<std::size_t>(std::llround(length / spacing)));
+  // A small contour (a speck, a vessel a few pixels across) keeps enough points for its shape: a
+  // circle of three points is a triangle, and the tiling of such contours between slices folds.
+  const std::size_t fewest = std::max<std::size_t>(3, std::min(contour.size(), fewestResampledPoints));
+  const std::size_t count = std::max(fewest, static_cast<std::size_t>(std::llround(length / spacing)));
   const double step = length / static_cast<double>(count);
 
   Polygon2 resampled;

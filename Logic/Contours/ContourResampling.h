@@ -7,9 +7,13 @@
 namespace slicemesh
 {
 
+/** The fewest points resampleContour leaves a contour that had at least as many. */
+constexpr std::size_t fewestResampledPoints = 8;
+
 /** Points at equal arc-length steps along the closed contour, starting at its first point, with
- *  n = max(3, round(length / spacing)) points (so the step is as close to `spacing` mm as a whole
- *  number of steps allows). spacing <= 0 or a contour of zero length returns it unchanged. */
+ *  n = max(round(length / spacing), min(its own points, fewestResampledPoints), 3) points (so the
+ *  step is as close to `spacing` mm as a whole number of steps allows, and a small contour keeps
+ *  its shape). spacing <= 0 or a contour of zero length returns it unchanged. */
 Polygon2 resampleContour(const Polygon2& contour, double spacing);
 
 /** resampleContour, then the resampled contour grown along its normals until it encloses the

@@ -104,7 +104,23 @@ const char* finishName(SurfaceFinish finish)
 namespace
 {
 
-constexpr std::size_t smallPieceTriangles = 100;
+/** Whether a piece is a speck: its area under that of specksTargetTriangles equilateral triangles of
+ *  the target edge (a cube of two voxels a side, about). Measured in the target's units, not in the
+ *  tiling's triangles, whose size follows the contours' point spacing. */
+constexpr double speckTargetTriangles = 48.0;
+
+bool isSpeck(const TriangleMesh& piece, double targetEdgeLength)
+{
+  double area = 0.0;
+  for (const Triangle& t : piece.triangles)
+  {
+    const Point3 &a = piece.points[t[0]], &b = piece.points[t[1]], &c = piece.points[t[2]];
+    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+    area += 0.5 * std::sqrt((uy * vz - uz * vy) * (uy * vz - uz * vy) + (uz * vx - ux * vz) * (uz * vx - ux * vz) +
+                            (ux * vy - uy * vx) * (ux * vy - uy * vx));
+  }
+  return area < speckTargetTriangles * 0.25 * std::sqrt(3.0) * targetEdgeLength * targetEdgeLength;
+}
 
 /** One connected piece of the tiling, finished as far as it stays a valid surface of its own
  *  topology: remeshed and smoothed, else smoothed, else as it was tiled. */
@@ -228,18 +244,20 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   const double volumeScale = targetVolume > 0.0 && std::abs(scale - 1.0) <= 0.25 ? scale : 1.0;
   const std::vector<TriangleMesh> tiledPieces = splitIntoPieces(tiling);
   std::vector<FinishedPiece> pieces(tiledPieces.size());
+  std::vector<char> speck(tiledPieces.size());
+  for (std::size_t p = 0; p < tiledPieces.size(); ++p)
+    speck[p] = isSpeck(tiledPieces[p], options.remeshing.targetEdgeLength);
   parallelFor(tiledPieces.size(), threads,
               [&](std::size_t p)
               {
-                // A speck of a few voxels (its tiling under smallPieceTriangles) is a couple of target
-                // edges across: remeshing or smoothing can only collapse it. It stays as tiled, as asked.
-                if (tiledPieces[p].triangles.size() < smallPieceTriangles)
+                // A speck of a few voxels is a couple of target edges across: remeshing or smoothing
+                // can only collapse it. It stays as tiled, as asked.
+                if (speck[p])
                   pieces[p] = keptAsTiled(tiledPieces[p], options.finish, {});
                 else
                   pieces[p] = finishPiece(tiledPieces[p], options, volumeScale);
               });
-  for (const TriangleMesh& piece : tiledPieces)
-    result.smallPiecesAsTiled += piece.triangles.size() < smallPieceTriangles;
+  result.smallPiecesAsTiled = static_cast<std::size_t>(std::count(speck.begin(), speck.end(), 1));
 
   // Pieces finished apart may meet (two pieces a voxel apart, each smoothed towards the other):
   // those go back to their tiled shape, which the valid tiling keeps apart, until none cross. Each
@@ -289,8 +307,7 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   for (std::size_t p = 0; p < pieces.size(); ++p)
   {
     const FinishedPiece& piece = pieces[p];
-    const bool speck = tiledPieces[p].triangles.size() < smallPieceTriangles;
-    ++result.piecesByFinish[static_cast<std::size_t>(speck ? SurfaceFinish::Tiled : piece.finish)];
+    ++result.piecesByFinish[static_cast<std::size_t>(speck[p] ? SurfaceFinish::Tiled : piece.finish)];
     result.unsmoothedVertices += piece.unsmoothedVertices;
     result.finish = std::max(result.finish, piece.finish); // the enum runs from most to least finished
     if (piece.finish != options.finish)

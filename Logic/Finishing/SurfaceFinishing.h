@@ -39,7 +39,8 @@ struct FinishedSurface
   /** Vertices left unsmoothed (where the remesh put them, or the tiling for a piece smoothed only)
    *  because smoothing made triangles near them cross (two sheets a voxel or two apart). */
   std::size_t unsmoothedVertices = 0;
-  /** Pieces whose tiling has under 100 triangles (specks of a few voxels): left as tiled, which
+  /** Pieces with less area than 48 equilateral triangles of the target edge (specks of a few
+   *  voxels): left as tiled, which
    *  counts as finished (remeshing or smoothing a shape a couple of edges across only collapses it). */
   std::size_t smallPiecesAsTiled = 0;
   /** How many connected pieces got each finish, indexed by SurfaceFinish (specks, left as tiled,

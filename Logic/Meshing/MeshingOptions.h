@@ -28,9 +28,14 @@ struct MeshingOptions
   unsigned int threads = 0;
 };
 
+/** The contour point spacing of a remeshed surface, in target edge lengths, when none is given. */
+constexpr double remeshedContourSpacing = 1.2;
+
 /** The options with every automatic value replaced by its value for a grid of this spacing (x, y,
- *  slice; mm): the contour preparation (resolvedContourPreparation) and the finishing
- *  (finishingOptionsFor: the target edge length, the smoothing's displacement bound). */
+ *  slice; mm): the contour preparation (resolvedContourPreparation), the finishing
+ *  (finishingOptionsFor: the target edge length, the smoothing's displacement bound) and, for a
+ *  remeshed surface, a contour point spacing of remeshedContourSpacing target edges where none is
+ *  given (the traced contours' points are kept otherwise). */
 MeshingOptions resolvedMeshingOptions(const MeshingOptions& options, const std::array<double, 3>& spacing);
 
 } // namespace slicemesh

@@ -293,7 +293,8 @@ TEST(AutomaticOptions, TheReportGivesEachAutomaticValueAsResolvedForTheGrid)
     if (preparation == "Traced")
     {
       EXPECT_NE(json.find("\"contourPreparation\": \"Traced\""), std::string::npos) << json;
-      EXPECT_EQ(jsonValue(json, "contourPointSpacingMm"), 0.0) << json; // the traced points are kept
+      // Remeshed: the traced contours resampled to 1.2 target edges.
+      EXPECT_NEAR(jsonValue(json, "contourPointSpacingMm"), 1.2 * 1.1 * std::sqrt(1.5), 1e-8) << json;
     }
     else
     {

@@ -98,8 +98,12 @@ TEST(ContourResampling, SpacingIsTheTargetAndTheShapeIsKept)
   EXPECT_EQ(resampleContour(square, 1.0).size(), 40u);
   // Off or degenerate: unchanged.
   EXPECT_EQ(resampleContour(square, 0.0).size(), 4u);
-  // A tiny contour keeps at least a triangle.
-  EXPECT_EQ(resampleContour(circle(0, 0, 0.1, 12), 5.0).size(), 3u);
+  // A small contour keeps enough points for its shape, never more than it had; never under three.
+  EXPECT_EQ(resampleContour(circle(0, 0, 0.1, 12), 5.0).size(), fewestResampledPoints);
+  EXPECT_EQ(resampleContour(circle(0, 0, 0.1, 5), 5.0).size(), 5u);
+  EXPECT_EQ(resampleContour(rectangle(0, 0, 0.1, 0.1), 5.0).size(), 4u);
+  const Polygon2 two{ { 0, 0 }, { 1, 0 } };
+  EXPECT_EQ(resampleContour(two, 5.0).size(), 3u);
 }
 
 TEST(ContourResampling, ResamplesAgainFinerWhereAChordWouldCrossANeighbour)

@@ -30,7 +30,14 @@ TEST(MeshingOptions, AutomaticValuesComeFromTheGrid)
   EXPECT_NEAR(resolved.finishing.remeshing.targetEdgeLength, 1.1 * std::sqrt(3.0 / (1.0 / 0.64 + 2.0 / 2.4)), 1e-12);
   EXPECT_NEAR(resolved.finishing.smoothing.maxDisplacement, 0.24, 1e-12);
   EXPECT_EQ(resolved.contours.mode, ContourPreparation::Traced); // the default is not automatic
-  EXPECT_EQ(resolved.contours.pointSpacing, 0.0);                // traced points are kept
+  // Remeshed (the default): the traced contours are resampled to a little over the target edge.
+  EXPECT_NEAR(resolved.contours.pointSpacing, remeshedContourSpacing * resolved.finishing.remeshing.targetEdgeLength, 1e-12);
+  MeshingOptions smoothedOnly;
+  smoothedOnly.finishing.finish = SurfaceFinish::Smoothed;
+  EXPECT_EQ(resolvedMeshingOptions(smoothedOnly, { 0.8, 0.8, 3.0 }).contours.pointSpacing, 0.0); // traced points kept
+  MeshingOptions spaced;
+  spaced.contours.pointSpacing = 0.5;
+  EXPECT_EQ(resolvedMeshingOptions(spaced, { 0.8, 0.8, 3.0 }).contours.pointSpacing, 0.5);
 
   MeshingOptions automatic;
   automatic.contours.mode = ContourPreparation::Automatic;
