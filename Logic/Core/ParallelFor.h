@@ -1,4 +1,5 @@
-// Runs independent pieces of work on several threads: structures, connected pieces, slabs. Results
+// Runs independent pieces of work on several threads: structures, connected pieces, slabs, ranges of
+// a mesh's vertices. Results
 // go into slots chosen by index, never by finishing order, so the output does not depend on the
 // number of threads.
 #ifndef ParallelFor_h
@@ -75,6 +76,18 @@ void parallelFor(std::size_t count, unsigned int threads, Body&& body)
     helper.join();
   if (failure)
     std::rethrow_exception(failure);
+}
+
+/** Calls body(begin, end) on consecutive ranges covering [0, count), on up to threadCount(threads)
+ *  threads: for per-element work too small to schedule one element at a time (every vertex of a
+ *  mesh). Each range holds at least minimumRange elements, so small counts stay on one thread. */
+template <typename Body>
+void parallelForRanges(std::size_t count, unsigned int threads, Body&& body, std::size_t minimumRange = 4096)
+{
+  const std::size_t ranges =
+    std::max<std::size_t>(1, std::min<std::size_t>(4 * threadCount(threads), count / std::max<std::size_t>(1, minimumRange)));
+  const std::size_t step = (count + ranges - 1) / ranges;
+  parallelFor(ranges, threads, [&](std::size_t r) { body(std::min(count, r * step), std::min(count, (r + 1) * step)); });
 }
 
 } // namespace slicemesh

@@ -150,7 +150,8 @@ FinishedPiece keptAsTiled(const TriangleMesh& piece, SurfaceFinish finish, std::
 /** The remeshed, smoothed piece, if it is a valid surface of the tiled piece's topology (`reference`);
  *  else nothing, and `why` says what was wrong. */
 std::optional<FinishedPiece> remeshedPiece(const TriangleMesh& tiled, const MeshValidation& reference,
-                                           const SurfaceFinishingOptions& options, double volume, std::string& why)
+                                           const SurfaceFinishingOptions& options, double volume, unsigned int threads,
+                                           std::string& why)
 {
   // Remeshed first, then smoothed: the umbrella operator is a fair Laplacian only on a regular
   // mesh. Smoothing the tiling's rows (edges of every length and direction) first, then
@@ -158,7 +159,7 @@ std::optional<FinishedPiece> remeshedPiece(const TriangleMesh& tiled, const Mesh
   TriangleMesh remeshed;
   try
   {
-    remeshed = remeshSurface(tiled, options.remeshing);
+    remeshed = remeshSurface(tiled, options.remeshing, threads);
   }
   catch (const std::exception& e) // ours, or a CGAL precondition the piece does not meet
   {
@@ -166,7 +167,7 @@ std::optional<FinishedPiece> remeshedPiece(const TriangleMesh& tiled, const Mesh
     return std::nullopt;
   }
   const TriangleMesh unsmoothed = remeshed;
-  smoothSurface(remeshed, options.smoothing);
+  smoothSurface(remeshed, options.smoothing, threads);
   // The remesh's chords cut the corners of structures a few edges across: the piece gets its volume back.
   offsetToVolume(remeshed, volume);
   MeshValidation validation = validateMesh(remeshed);
@@ -177,8 +178,9 @@ std::optional<FinishedPiece> remeshedPiece(const TriangleMesh& tiled, const Mesh
   return FinishedPiece{ std::move(remeshed), SurfaceFinish::Remeshed, {}, unsmoothedVertices, validation };
 }
 
-/** `volumeScale`: the piece's finished volume over its tiled one. */
-FinishedPiece finishPiece(const TriangleMesh& tiled, const SurfaceFinishingOptions& options, double volumeScale)
+/** `volumeScale`: the piece's finished volume over its tiled one; `threads`: for the work inside the piece. */
+FinishedPiece finishPiece(const TriangleMesh& tiled, const SurfaceFinishingOptions& options, double volumeScale,
+                          unsigned int threads)
 {
   const MeshValidation reference = asTiled(tiled);
   FinishedPiece result{ tiled, SurfaceFinish::Tiled, {}, 0, {} };
@@ -188,12 +190,13 @@ FinishedPiece finishPiece(const TriangleMesh& tiled, const SurfaceFinishingOptio
     // narrower than the edge makes the remesh cross itself, rescued the large pieces of noisy
     // k-means labels but cost 80 s and 1.4 million triangles there: not what was asked.)
     std::string why;
-    if (std::optional<FinishedPiece> remeshed = remeshedPiece(tiled, reference, options, volumeScale * reference.volume, why))
+    if (std::optional<FinishedPiece> remeshed =
+          remeshedPiece(tiled, reference, options, volumeScale * reference.volume, threads, why))
       return std::move(*remeshed);
     result.why = "remeshed: " + why;
   }
   TriangleMesh smoothed = tiled;
-  smoothSurface(smoothed, options.smoothing);
+  smoothSurface(smoothed, options.smoothing, threads);
   if (volumeScale != 1.0 && options.smoothing.iterations > 0) // no iterations asked: the tiling itself
     offsetToVolume(smoothed, volumeScale * reference.volume);
   MeshValidation validation = validateMesh(smoothed);
@@ -247,6 +250,11 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   std::vector<char> speck(tiledPieces.size());
   for (std::size_t p = 0; p < tiledPieces.size(); ++p)
     speck[p] = isSpeck(tiledPieces[p], options.remeshing.targetEdgeLength);
+  // The piece that holds most of the surface (often the only one) would keep one thread busy long
+  // after the others are done: it gets the threads for the work inside it.
+  auto innerThreads = [&](std::size_t p) {
+    return 2 * tiledPieces[p].triangles.size() > tiling.triangles.size() ? threads : 1u;
+  };
   parallelFor(tiledPieces.size(), threads,
               [&](std::size_t p)
               {
@@ -255,7 +263,7 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
                 if (speck[p])
                   pieces[p] = keptAsTiled(tiledPieces[p], options.finish, {});
                 else
-                  pieces[p] = finishPiece(tiledPieces[p], options, volumeScale);
+                  pieces[p] = finishPiece(tiledPieces[p], options, volumeScale, innerThreads(p));
               });
   result.smallPiecesAsTiled = static_cast<std::size_t>(std::count(speck.begin(), speck.end(), 1));
 

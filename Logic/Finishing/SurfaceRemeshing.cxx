@@ -1,5 +1,6 @@
 #include "Finishing/SurfaceRemeshing.h"
 
+#include "Core/ParallelFor.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/SurfaceMeshConversion.h"
 
@@ -10,6 +11,7 @@
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -88,33 +90,52 @@ bool unfoldedAround(Vertex v, const SurfaceMesh& surface)
  *  otherwise dropped. This is the step isotropic_remeshing runs itself, done here because CGAL
  *  5.5's version dereferences a null halfedge when every triangle around a moved vertex is
  *  degenerate, which thresholded MRI reaches. */
-void relaxTangentially(SurfaceMesh& surface)
+void relaxTangentially(SurfaceMesh& surface, unsigned int threads)
 {
-  auto [normals, created] = surface.add_property_map<Vertex, Kernel::Vector_3>("v:relaxation_normal");
-  PMP::compute_vertex_normals(surface, normals);
-  std::vector<std::pair<Vertex, Kernel::Point_3>> targets;
-  targets.reserve(surface.number_of_vertices());
-  for (Vertex v : surface.vertices())
+  // Vertex indices are dense here (the caller collected the garbage); every vertex's normal and
+  // target is its own, computed from the unmoved surface, so the ranges run side by side.
+  const std::size_t vertexCount = surface.number_of_vertices();
+  auto [faceNormals, facesCreated] = surface.add_property_map<SurfaceMesh::Face_index, Kernel::Vector_3>("f:relaxation_normal");
+  parallelForRanges(surface.number_of_faces(), threads,
+                    [&](std::size_t first, std::size_t last)
+                    {
+                      for (std::size_t f = first; f < last; ++f)
+                        faceNormals[SurfaceMesh::Face_index(f)] =
+                          PMP::compute_face_normal(SurfaceMesh::Face_index(f), surface);
+                    });
+  std::vector<std::optional<Kernel::Point_3>> targets(vertexCount);
+  parallelForRanges(vertexCount, threads,
+                    [&](std::size_t first, std::size_t last)
+                    {
+                      for (std::size_t index = first; index < last; ++index)
+                      {
+                        const Vertex v(static_cast<SurfaceMesh::size_type>(index));
+                        if (surface.is_isolated(v) || surface.is_border(v))
+                          continue;
+                        const Kernel::Vector_3 n =
+                          PMP::compute_vertex_normal(v, surface, CGAL::parameters::face_normal_map(faceNormals));
+                        const Kernel::Point_3& p = surface.point(v);
+                        Kernel::Vector_3 toCentroid = CGAL::NULL_VECTOR;
+                        int neighbours = 0;
+                        for (Vertex u : CGAL::vertices_around_target(surface.halfedge(v), surface))
+                        {
+                          toCentroid = toCentroid + Kernel::Vector_3(p, surface.point(u));
+                          ++neighbours;
+                        }
+                        const Kernel::Point_3 centroid = p + toCentroid / static_cast<double>(neighbours);
+                        targets[index] = centroid + (n * Kernel::Vector_3(centroid, p)) * n;
+                      }
+                    });
+  surface.remove_property_map(faceNormals);
+  // Applied one vertex at a time, in order: each fold test sees the moves before it.
+  for (std::size_t index = 0; index < vertexCount; ++index)
   {
-    if (surface.is_isolated(v) || surface.is_border(v))
+    if (!targets[index])
       continue;
-    const Kernel::Point_3& p = surface.point(v);
-    Kernel::Vector_3 toCentroid = CGAL::NULL_VECTOR;
-    int neighbours = 0;
-    for (Vertex u : CGAL::vertices_around_target(surface.halfedge(v), surface))
-    {
-      toCentroid = toCentroid + Kernel::Vector_3(p, surface.point(u));
-      ++neighbours;
-    }
-    const Kernel::Point_3 centroid = p + toCentroid / static_cast<double>(neighbours);
-    const Kernel::Vector_3& n = normals[v];
-    targets.emplace_back(v, centroid + (n * Kernel::Vector_3(centroid, p)) * n);
-  }
-  for (const auto& [v, target] : targets)
-  {
+    const Vertex v(static_cast<SurfaceMesh::size_type>(index));
     const Kernel::Point_3 initial = surface.point(v);
-    const Kernel::Vector_3 move(initial, target);
-    surface.point(v) = target;
+    const Kernel::Vector_3 move(initial, *targets[index]);
+    surface.point(v) = *targets[index];
     double fraction = 1.0;
     while (fraction > 0.03 && !unfoldedAround(v, surface))
     {
@@ -124,7 +145,6 @@ void relaxTangentially(SurfaceMesh& surface)
     if (fraction <= 0.02)
       surface.point(v) = initial;
   }
-  surface.remove_property_map(normals);
 }
 
 /** Stands in for CGAL's projection onto the input, which is done separately (remeshPiece). */
@@ -135,12 +155,13 @@ struct NoProjection
 
 /** Remeshes one connected, closed piece: per round, CGAL's split, collapse and flip, then our own
  *  relaxation sweep and the projection of every vertex onto the input piece. */
-TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options)
+TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads)
 {
   SurfaceMesh surface = surfaceOf(mesh);
   const SurfaceMesh input = surface;
   Tree tree(faces(input).first, faces(input).second, input);
   tree.accelerate_distance_queries();
+  tree.build(); // before the queries run side by side
   for (int round = 0; round < options.iterations; ++round)
   {
     PMP::isotropic_remeshing(faces(surface), options.targetEdgeLength, surface,
@@ -149,16 +170,23 @@ TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions
                                .do_project(false)
                                .projection_functor(NoProjection()));
     surface.collect_garbage(); // the next round's face index map must be dense
-    relaxTangentially(surface);
-    for (Vertex v : surface.vertices())
-      surface.point(v) = tree.closest_point(surface.point(v));
+    relaxTangentially(surface, threads);
+    parallelForRanges(surface.number_of_vertices(), threads,
+                      [&](std::size_t first, std::size_t last)
+                      {
+                        for (std::size_t index = first; index < last; ++index)
+                        {
+                          const Vertex v(static_cast<SurfaceMesh::size_type>(index));
+                          surface.point(v) = tree.closest_point(surface.point(v));
+                        }
+                      });
   }
   return toTriangleMesh(surface);
 }
 
 } // namespace
 
-TriangleMesh remeshSurface(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options)
+TriangleMesh remeshSurface(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads)
 {
   if (!(options.targetEdgeLength > 0.0) || !std::isfinite(options.targetEdgeLength))
     throw Error("surface remeshing: the target edge length must be positive");
@@ -167,7 +195,7 @@ TriangleMesh remeshSurface(const TriangleMesh& mesh, const SurfaceRemeshingOptio
   // Piece by piece: each vertex is projected back onto its own piece, never onto a neighbour.
   std::vector<TriangleMesh> pieces = splitIntoPieces(mesh);
   for (TriangleMesh& piece : pieces)
-    piece = remeshPiece(piece, options);
+    piece = remeshPiece(piece, options, threads);
   if (pieces.size() == 1)
     return std::move(pieces.front());
   std::vector<const TriangleMesh*> remeshed;

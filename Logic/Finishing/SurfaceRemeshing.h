@@ -19,8 +19,9 @@ struct SurfaceRemeshingOptions
  *  split, short ones collapsed, edges flipped towards valence 6, vertices relaxed tangentially and
  *  projected back onto the input surface (Botsch and Kobbelt's method, as CGAL implements it in
  *  Polygon_mesh_processing::isotropic_remeshing). The topology is kept. Throws Error if the mesh is
- *  not a manifold surface CGAL can hold. */
-TriangleMesh remeshSurface(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options);
+ *  not a manifold surface CGAL can hold. The relaxation's targets and the projection run on `threads`
+ *  threads (0: every core), vertex by vertex, so the result does not depend on the number. */
+TriangleMesh remeshSurface(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads = 1);
 
 /** The edge length at which an isotropic remesh has about as many triangles as flying edges makes on
  *  a grid of this spacing (mm): sqrt(3 / (1/(sx sy) + 1/(sx sz) + 1/(sy sz))), the spacing itself

@@ -1,5 +1,6 @@
 #include "Finishing/SurfaceSmoothing.h"
 
+#include "Core/ParallelFor.h"
 #include "Measures/MeshComponents.h"
 
 #include <algorithm>
@@ -46,27 +47,31 @@ VertexNeighbours neighboursOf(const TriangleMesh& mesh)
 
 /** p += factor * (mean of the neighbours - p), for every vertex at once. */
 void umbrellaStep(std::vector<Point3>& points, const VertexNeighbours& neighbours, double factor,
-                  std::vector<Point3>& scratch)
+                  std::vector<Point3>& scratch, unsigned int threads)
 {
-  for (std::size_t v = 0; v < points.size(); ++v)
-  {
-    const std::size_t begin = neighbours.first[v], end = neighbours.first[v + 1];
-    scratch[v] = points[v];
-    if (begin == end)
-      continue;
-    double x = 0.0, y = 0.0, z = 0.0;
-    for (std::size_t i = begin; i < end; ++i)
-    {
-      const Point3& q = points[static_cast<std::size_t>(neighbours.ids[i])];
-      x += q.x;
-      y += q.y;
-      z += q.z;
-    }
-    const double count = static_cast<double>(end - begin);
-    scratch[v].x += factor * (x / count - points[v].x);
-    scratch[v].y += factor * (y / count - points[v].y);
-    scratch[v].z += factor * (z / count - points[v].z);
-  }
+  parallelForRanges(points.size(), threads,
+                    [&](std::size_t first, std::size_t last)
+                    {
+                      for (std::size_t v = first; v < last; ++v)
+                      {
+                        const std::size_t begin = neighbours.first[v], end = neighbours.first[v + 1];
+                        scratch[v] = points[v];
+                        if (begin == end)
+                          continue;
+                        double x = 0.0, y = 0.0, z = 0.0;
+                        for (std::size_t i = begin; i < end; ++i)
+                        {
+                          const Point3& q = points[static_cast<std::size_t>(neighbours.ids[i])];
+                          x += q.x;
+                          y += q.y;
+                          z += q.z;
+                        }
+                        const double count = static_cast<double>(end - begin);
+                        scratch[v].x += factor * (x / count - points[v].x);
+                        scratch[v].y += factor * (y / count - points[v].y);
+                        scratch[v].z += factor * (z / count - points[v].z);
+                      }
+                    });
   points.swap(scratch);
 }
 
@@ -172,7 +177,7 @@ void offsetToVolume(TriangleMesh& mesh, double volume)
   restoreVolumes(mesh, std::vector<std::size_t>(mesh.points.size(), 0), { volume });
 }
 
-void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options)
+void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, unsigned int threads)
 {
   if (options.iterations <= 0 || mesh.triangles.empty())
     return;
@@ -190,8 +195,8 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options)
   const std::vector<Point3> start = mesh.points;
   for (int i = 0; i < options.iterations; ++i)
   {
-    umbrellaStep(mesh.points, neighbours, lambda, scratch);
-    umbrellaStep(mesh.points, neighbours, mu, scratch);
+    umbrellaStep(mesh.points, neighbours, lambda, scratch, threads);
+    umbrellaStep(mesh.points, neighbours, mu, scratch, threads);
     if (options.maxDisplacement > 0.0)
       clampDisplacements(mesh.points, start, options.maxDisplacement);
   }

@@ -26,9 +26,11 @@ struct SurfaceSmoothingOptions
  *  clamp; then gives every connected component its signed
  *  volume back by one offset along the vertex normals (small structures, a few edges across, shrink
  *  under the filter). A component that lost half its volume or more (a speck the filter collapses)
- *  keeps its unsmoothed vertices instead. The connectivity is not changed.
+ *  keeps its unsmoothed vertices instead. The connectivity is not changed. The vertices are moved on
+ *  `threads` threads (0: every core), each from the previous step's positions, so the result does
+ *  not depend on the number.
  *  G. Taubin, "A signal processing approach to fair surface design", SIGGRAPH 1995. */
-void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options);
+void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, unsigned int threads = 1);
 
 /** Moves every vertex of a closed, consistently oriented mesh along its vertex normal by one common
  *  distance so that its signed volume becomes `volume` (a few Newton steps: the volume grows by the

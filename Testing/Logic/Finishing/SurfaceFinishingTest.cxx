@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -283,4 +284,41 @@ TEST(SurfaceFinishing, EveryPieceIsFinishedOnItsOwn)
   EXPECT_EQ(finished.finish != SurfaceFinish::Remeshed, !finished.fallback.empty());
   if (!finished.fallback.empty())
     EXPECT_EQ(finished.fallback.rfind("1 of 2 pieces", 0), 0u) << finished.fallback;
+}
+
+/** Whether the two point lists are equal bit for bit. */
+bool samePoints(const std::vector<Point3>& a, const std::vector<Point3>& b)
+{
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                    [](const Point3& p, const Point3& q) { return p.x == q.x && p.y == q.y && p.z == q.z; });
+}
+
+TEST(SurfaceFinishing, TheSameBitForBitOnOneTwoAndEightThreads)
+{
+  // A rippled sphere of about 25,000 vertices: enough for the per-vertex work to be split into
+  // ranges, remeshed to half its density, smoothed and finished.
+  const TriangleMesh rippled = octaSphere(80, 10.0, 0.03, 2.0);
+  ASSERT_GT(rippled.points.size(), 20000u);
+  SurfaceRemeshingOptions remeshing;
+  remeshing.targetEdgeLength = 0.4;
+  SurfaceFinishingOptions finishing;
+  finishing.remeshing.targetEdgeLength = 0.4;
+  finishing.smoothing.maxDisplacement = 0.1;
+  const TriangleMesh remeshedOnOne = remeshSurface(rippled, remeshing, 1);
+  TriangleMesh smoothedOnOne = rippled;
+  smoothSurface(smoothedOnOne, SurfaceSmoothingOptions{}, 1);
+  const FinishedSurface finishedOnOne = finishSurface(rippled, validateMesh(rippled), finishing, 1);
+  EXPECT_EQ(finishedOnOne.finish, SurfaceFinish::Remeshed) << finishedOnOne.fallback;
+  for (unsigned int threads : { 2u, 8u })
+  {
+    const TriangleMesh remeshed = remeshSurface(rippled, remeshing, threads);
+    EXPECT_EQ(remeshed.triangles, remeshedOnOne.triangles) << threads << " threads";
+    EXPECT_TRUE(samePoints(remeshed.points, remeshedOnOne.points)) << threads << " threads";
+    TriangleMesh smoothed = rippled;
+    smoothSurface(smoothed, SurfaceSmoothingOptions{}, threads);
+    EXPECT_TRUE(samePoints(smoothed.points, smoothedOnOne.points)) << threads << " threads";
+    const FinishedSurface finished = finishSurface(rippled, validateMesh(rippled), finishing, threads);
+    EXPECT_EQ(finished.mesh.triangles, finishedOnOne.mesh.triangles) << threads << " threads";
+    EXPECT_TRUE(samePoints(finished.mesh.points, finishedOnOne.mesh.points)) << threads << " threads";
+  }
 }
