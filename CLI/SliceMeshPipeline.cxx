@@ -540,7 +540,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
 
   // Every structure through one stage, then the next: each stage is reported once, its progress
   // structure by structure. Structures run side by side (each in its own slot, so the output does
-  // not depend on the threads); one structure alone gets the threads for its own pieces. In a
+  // not depend on the threads); the largest structure also gets them for its own work. In a
   // one-mesh run a failure ends the run with the stage's exit code; in a multi-label run it ends
   // only its label, reported on stderr in label order.
   const unsigned int threads = threadCount(settings.threads);
@@ -604,12 +604,20 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
                       options.contours.pointSpacing = s.contours.spacing[0];
                     s.meshing = startMeshing(s.contours.stack, options, s.contours.spacing);
                   }
-                  s.meshing.options.threads = structures.size() > 1 ? 1 : threads;
                   runMeshingStage(MeshingStage::Preparation, s.meshing);
                   if (!perLabel && contourPoints(s.meshing.stack) == 0)
                     throw PipelineFailure(EmptySegmentation,
                                           "the segmentation of '" + settings.inputVolume + "' has no contours");
                 });
+  // The structure holding most of the contour points (a BODY among organs, the one label of a
+  // one-label run) would keep one thread busy long after the rest are done: it gets the threads for
+  // the work inside it. The others run one thread each, side by side.
+  std::size_t allPoints = 0;
+  for (const Structure& s : structures)
+    allPoints += s.live() ? contourPoints(s.meshing.stack) : 0;
+  for (Structure& s : structures)
+    if (s.live())
+      s.meshing.options.threads = 2 * contourPoints(s.meshing.stack) > allPoints ? threads : 1;
   PipelineResult result;
   startStage(Correspondence);
   eachStructure(MeshingFailed, [&](Structure& s, const std::function<void(double)>& fraction)
