@@ -87,6 +87,23 @@ void checkGeometry(const std::string& path, const double spacing[3], const doubl
   }
 }
 
+/** The first three axes' spacing and direction as the header states them, checked. */
+VolumeGeometry checkHeaderGeometry(const std::string& path, const itk::ImageIOBase* io)
+{
+  VolumeGeometry geometry;
+  double spacing[3];
+  double direction[3][3];
+  for (unsigned int axis = 0; axis < 3; ++axis)
+  {
+    spacing[axis] = geometry.spacing[axis] = io->GetSpacing(axis);
+    const std::vector<double> column = io->GetDirection(axis);
+    for (unsigned int row = 0; row < 3; ++row)
+      direction[row][axis] = geometry.direction[row][axis] = row < column.size() ? column[row] : 0.0;
+  }
+  checkGeometry(path, spacing, direction);
+  return geometry;
+}
+
 /** Bytes per voxel a run holds at its peak besides the file's own voxels: the float volume (4), the
  *  mask (1), and the contours and mesh of a large structure. Measured: 1.66 GB peak for a 512 x 512 x
  *  400 label map with a large ellipsoid (2.56 M triangles), 15.8 bytes per voxel (README, "Limits"). */
@@ -125,16 +142,7 @@ void checkHeader(const std::string& path, const itk::ImageIOBase* io)
     checkMemoryBudget(what.str(), voxels * (fileBytesPerVoxel + bytesPerVoxelOfARun));
   }
 
-  double spacing[3];
-  double direction[3][3];
-  for (unsigned int axis = 0; axis < 3; ++axis)
-  {
-    spacing[axis] = io->GetSpacing(axis);
-    const std::vector<double> column = io->GetDirection(axis);
-    for (unsigned int row = 0; row < 3; ++row)
-      direction[row][axis] = row < column.size() ? column[row] : 0.0;
-  }
-  checkGeometry(path, spacing, direction);
+  checkHeaderGeometry(path, io);
 }
 
 /** Whether a gzip file decompresses to its end. ITK 5.2's NIfTI reader accepts a truncated .nii.gz
@@ -251,11 +259,9 @@ void checkNiftiSpacing(const std::string& path)
   }
 }
 
-ScalarVolume::Pointer readImageFile(const std::string& path)
+/** The header of an image file through the ImageIO ITK picks for it. */
+itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
 {
-  if (endsWith(path, ".gz") || endsWith(path, ".GZ"))
-    checkGzipStream(path);
-
   itk::ImageIOBase::Pointer io =
     itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::FileModeEnum::ReadMode);
   if (!io)
@@ -270,6 +276,14 @@ ScalarVolume::Pointer readImageFile(const std::string& path)
   {
     throw Error(path + ": cannot read the image header: " + describe(error));
   }
+  return io;
+}
+
+ScalarVolume::Pointer readImageFile(const std::string& path)
+{
+  if (endsWith(path, ".gz") || endsWith(path, ".GZ"))
+    checkGzipStream(path);
+  itk::ImageIOBase::Pointer io = readImageHeader(path);
   checkHeader(path, io);
   checkNiftiFileSize(path, io);
   checkNiftiSpacing(path);
@@ -311,7 +325,8 @@ ScalarVolume::Pointer readImageFile(const std::string& path)
   return volume;
 }
 
-ScalarVolume::Pointer readDicomSeries(const std::string& directory)
+/** The files of the first DICOM image series in the directory, in slice order. */
+std::vector<std::string> dicomSeriesFiles(const std::string& directory)
 {
   auto names = itk::GDCMSeriesFileNames::New();
   std::vector<std::string> fileNames;
@@ -330,11 +345,22 @@ ScalarVolume::Pointer readDicomSeries(const std::string& directory)
   }
   if (fileNames.size() < 2)
     throw Error(directory + ": the DICOM series has a single slice (a 2-D image); SliceMesh needs a 3-D volume");
+  return fileNames;
+}
 
-  using Reader = itk::ImageSeriesReader<ScalarVolume>;
-  auto reader = Reader::New();
+using DicomSeriesReader = itk::ImageSeriesReader<ScalarVolume>;
+
+itk::SmartPointer<DicomSeriesReader> dicomSeriesReader(const std::string& directory)
+{
+  auto reader = DicomSeriesReader::New();
   reader->SetImageIO(itk::GDCMImageIO::New());
-  reader->SetFileNames(fileNames);
+  reader->SetFileNames(dicomSeriesFiles(directory));
+  return reader;
+}
+
+ScalarVolume::Pointer readDicomSeries(const std::string& directory)
+{
+  auto reader = dicomSeriesReader(directory);
   try
   {
     reader->Update();
@@ -362,6 +388,40 @@ void checkVolumeGeometry(const std::string& path, const itk::ImageBase<3>* volum
       direction[i][j] = volume->GetDirection()[i][j];
   }
   checkGeometry(path, spacing, direction);
+}
+
+VolumeGeometry readVolumeGeometry(const std::string& path)
+{
+  std::error_code ignored;
+  if (!std::filesystem::exists(path, ignored))
+    throw Error(path + ": no such file or directory");
+  if (!std::filesystem::is_directory(path, ignored))
+  {
+    itk::ImageIOBase::Pointer io = readImageHeader(path);
+    if (io->GetNumberOfDimensions() < 3)
+      throw Error(path + ": a 2-D image; its slice direction is unknown");
+    return checkHeaderGeometry(path, io);
+  }
+  // The series reader orders the slices and takes the spacing between them from their positions.
+  auto reader = dicomSeriesReader(path);
+  try
+  {
+    reader->UpdateOutputInformation();
+  }
+  catch (const itk::ExceptionObject& error)
+  {
+    throw Error(path + ": cannot read the DICOM series: " + describe(error));
+  }
+  const ScalarVolume* volume = reader->GetOutput();
+  checkVolumeGeometry(path, volume);
+  VolumeGeometry geometry;
+  for (int i = 0; i < 3; ++i)
+  {
+    geometry.spacing[i] = volume->GetSpacing()[i];
+    for (int j = 0; j < 3; ++j)
+      geometry.direction[i][j] = volume->GetDirection()[i][j];
+  }
+  return geometry;
 }
 
 ScalarVolume::Pointer readVolume(const std::string& path)
