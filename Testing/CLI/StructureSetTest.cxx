@@ -298,8 +298,17 @@ TEST(StructureSet, FilesThatAreNoStructureSetOrAreCutShortFailWithOneLineAndWrit
   fs::resize_file(folder / "cut.dcm", fs::file_size(folder / "RS.dcm") / 2);
   std::ofstream(folder / "text.json") << "{ \"rois\": 12 }";
   std::ofstream(folder / "plain.txt") << "not contours";
+  // Legacy VTK cell lists shorter than declared (VTK 9.1's reader crashed on it), with a cell
+  // running past the list's end, or naming a point the file does not have.
+  const std::string points = "# vtk DataFile Version 4.2\nRing\nASCII\nDATASET POLYDATA\nPOINTS 4 double\n"
+                             "0 0 0 4 0 0 4 4 0 0 4 0\n";
+  std::ofstream(folder / "short.vtk") << points << "LINES 1 34\n5 0 1 2 3 0\n";
+  std::ofstream(folder / "overrun.vtk") << points << "LINES 1 6\n9 0 1 2 3 0\n";
+  std::ofstream(folder / "point.vtk") << points << "LINES 1 6\n5 0 1 2 7 0\n";
   for (const std::string& arguments :
        { quoted((folder / "cut.dcm").string()), "--inputContours " + quoted((folder / "plain.txt").string()),
+         quoted((folder / "short.vtk").string()), quoted((folder / "overrun.vtk").string()),
+         quoted((folder / "point.vtk").string()),
          "--contourFormat RTSTRUCT " + quoted((folder / "text.json").string()), quoted((folder / "text.json").string()) })
   {
     const fs::path out = folder / "out";
