@@ -2,6 +2,7 @@
 // slicemesh::Error with a one-line message that names the input.
 #include "VolumeReader.h"
 
+#include "ItkErrorText.h"
 #include "MemoryBudget.h"
 
 #include "Core/SliceMeshTypes.h"
@@ -26,8 +27,7 @@ namespace slicemesh
 namespace
 {
 
-/** ITK's exception text spans several lines (file, line, location, description); keep the
- *  description, on one line, short enough to read in a terminal. */
+/** Several lines (MetaIO's complaints) on one, short enough to read in a terminal. */
 std::string oneLine(const std::string& text)
 {
   std::string line;
@@ -47,13 +47,7 @@ std::string oneLine(const std::string& text)
   constexpr std::size_t maxLength = 200;
   if (line.size() > maxLength)
     line = line.substr(0, maxLength - 3) + "...";
-  return line.empty() ? std::string("unknown ITK error") : line;
-}
-
-std::string describe(const itk::ExceptionObject& error)
-{
-  const char* description = error.GetDescription();
-  return oneLine(description && *description ? description : error.what());
+  return line.empty() ? std::string("unknown error") : line;
 }
 
 /** The geometry checks every reader path shares: a mesh cannot be placed without a usable
@@ -274,7 +268,7 @@ itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
   }
   catch (const itk::ExceptionObject& error)
   {
-    throw Error(path + ": cannot read the image header: " + describe(error));
+    throw Error(path + ": cannot read the image header: " + itkErrorText(error));
   }
   return io;
 }
@@ -301,7 +295,7 @@ ScalarVolume::Pointer readImageFile(const std::string& path)
   }
   catch (const itk::ExceptionObject& error)
   {
-    throw Error(path + ": cannot read the voxels: " + describe(error));
+    throw Error(path + ": cannot read the voxels: " + itkErrorText(error));
   }
   if (!complaints.empty())
     throw Error(path + ": cannot read the voxels (a truncated or damaged file?): " + oneLine(complaints));
@@ -341,7 +335,7 @@ std::vector<std::string> dicomSeriesFiles(const std::string& directory)
   }
   catch (const itk::ExceptionObject& error)
   {
-    throw Error(directory + ": cannot list the DICOM series: " + describe(error));
+    throw Error(directory + ": cannot list the DICOM series: " + itkErrorText(error));
   }
   if (fileNames.size() < 2)
     throw Error(directory + ": the DICOM series has a single slice (a 2-D image); SliceMesh needs a 3-D volume");
@@ -367,7 +361,7 @@ ScalarVolume::Pointer readDicomSeries(const std::string& directory)
   }
   catch (const itk::ExceptionObject& error)
   {
-    throw Error(directory + ": cannot read the DICOM series: " + describe(error));
+    throw Error(directory + ": cannot read the DICOM series: " + itkErrorText(error));
   }
   ScalarVolume::Pointer volume = reader->GetOutput();
   volume->DisconnectPipeline();
@@ -410,7 +404,7 @@ VolumeGeometry readVolumeGeometry(const std::string& path)
   }
   catch (const itk::ExceptionObject& error)
   {
-    throw Error(path + ": cannot read the DICOM series: " + describe(error));
+    throw Error(path + ": cannot read the DICOM series: " + itkErrorText(error));
   }
   const ScalarVolume* volume = reader->GetOutput();
   checkVolumeGeometry(path, volume);
