@@ -39,6 +39,21 @@ std::string extensionFor(const std::uint8_t* data, std::size_t size)
   return ".dcm";
 }
 
+/** A folder of this process's own for the input file, removed when the fuzzer exits. */
+struct InputFolder
+{
+  std::filesystem::path path =
+    std::filesystem::temp_directory_path() / ("slicemesh-structure-fuzz-" + std::to_string(::getpid()));
+  InputFolder() { std::filesystem::create_directories(path); }
+  ~InputFolder()
+  {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+  InputFolder(const InputFolder&) = delete;
+  InputFolder& operator=(const InputFolder&) = delete;
+};
+
 void exercise(const std::string& path)
 {
   using namespace slicemesh;
@@ -72,13 +87,8 @@ void exercise(const std::string& path)
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
-  static const std::filesystem::path folder = [] {
-    const std::filesystem::path made = std::filesystem::temp_directory_path() /
-                                       ("slicemesh-structure-fuzz-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(made);
-    return made;
-  }();
-  const std::filesystem::path path = folder / ("input" + extensionFor(data, size));
+  static const InputFolder folder;
+  const std::filesystem::path path = folder.path / ("input" + extensionFor(data, size));
   {
     std::ofstream file(path, std::ios::binary | std::ios::trunc);
     file.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
