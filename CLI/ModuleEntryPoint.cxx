@@ -37,7 +37,8 @@ int fail(ExitCode code, const std::string& message)
 }
 
 /** The structure set or contour file to mesh: --inputContours, else the input itself when
- *  --contourFormat names a kind or the file is detected as one; empty for a volume. */
+ *  --contourFormat names a kind or the file is detected as one; empty for a volume. An input volume
+ *  given beside --inputContours is the image the contours were drawn on. */
 void readContourArguments(const ParsedArguments& arguments, PipelineSettings& settings)
 {
   const std::string& format = arguments.text("contourFormat");
@@ -47,7 +48,11 @@ void readContourArguments(const ParsedArguments& arguments, PipelineSettings& se
                   : format == "JSON"     ? ContourFileKind::Json
                                          : ContourFileKind::Automatic;
   if (!arguments.text("inputContours").empty())
+  {
     contours.path = arguments.text("inputContours");
+    if (settings.inputVolume != contours.path)
+      contours.referenceImage = settings.inputVolume;
+  }
   else if (contours.kind != ContourFileKind::Automatic || detectContourFileKind(settings.inputVolume))
     contours.path = settings.inputVolume;
   std::istringstream rois(arguments.text("rois"));

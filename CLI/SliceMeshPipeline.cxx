@@ -24,6 +24,7 @@
 #include <filesystem>
 #include <iostream>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <unistd.h>
@@ -326,16 +327,23 @@ std::vector<Structure> labelStructures(std::vector<LabelSource> sources, const s
 }
 
 /** One structure per ROI asked for (every ROI by default), in the file's order: its contours as a
- *  stack along their slice normal, crossings and keyholes repaired. An ROI whose contours lie in
+ *  stack along the reference image's slice direction and spacing when they lie on its slices (else
+ *  along their own normal, with one warning for the set), crossings and keyholes repaired. An ROI whose contours lie in
  *  one slice is one slice spacing thick, the usual spacing of the other ROIs. An ROI that cannot
  *  be stacked (no contours, no spacing known) carries its error; every fault is one warning line. */
-std::vector<Structure> roiStructures(const StructureSet& set, const PipelineSettings& settings)
+std::vector<Structure> roiStructures(const StructureSet& set, const std::optional<VolumeGeometry>& reference,
+                                     const PipelineSettings& settings)
 {
   const std::vector<PlanarStructure> rois =
     guarded(EmptySegmentation, [&] { return chosenStructures(set, settings.contours.rois); });
   std::vector<Structure> structures(rois.size());
   ContourStackingOptions stacking;
   stacking.sliceNormal = set.sliceNormal;
+  if (reference)
+  {
+    stacking.sliceNormal = reference->sliceDirection();
+    stacking.expectedSliceSpacing = reference->spacing[2];
+  }
   std::vector<double> spacings;
   auto stack = [&](std::size_t n)
   {
@@ -369,6 +377,25 @@ std::vector<Structure> roiStructures(const StructureSet& set, const PipelineSett
   for (std::size_t n = 0; n < rois.size(); ++n)
     if (!structures[n].report.error.empty() && !rois[n].contours.empty() && stacking.fallbackSliceSpacing > 0.0)
       stack(n);
+  // Contours off the image's slices are a mismatch of the whole set as a rule: one line for all.
+  std::string offSlices;
+  double largestDeviation = 0.0;
+  for (const Structure& s : structures)
+    if (s.report.error.empty() && s.contours.normalDeviationDegrees && !s.contours.givenNormalUsed)
+    {
+      offSlices += (offSlices.empty() ? "" : ", ") + std::to_string(s.report.label) + " (" + s.report.name + ")";
+      largestDeviation = std::max(largestDeviation, *s.contours.normalDeviationDegrees);
+    }
+  if (!offSlices.empty())
+  {
+    std::ostringstream warning;
+    warning.precision(3);
+    warning << "the contours of ROI " << offSlices << " are not on the slices of '"
+            << (reference ? settings.contours.referenceImage : settings.contours.path) << "': their slice normal is up to "
+            << largestDeviation << " degrees from its slice direction (" << stacking.maxNormalDeviationDegrees
+            << " allowed); each is stacked along its contours' own normal";
+    std::cerr << "SliceMesh: warning: " << oneLine(warning.str()) << std::endl;
+  }
   for (Structure& s : structures)
   {
     if (!s.report.error.empty())
@@ -496,8 +523,13 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   ScalarVolume::Pointer volume;
   SegmentationFile segmentation;
   StructureSet structureSet;
+  std::optional<VolumeGeometry> referenceImage;
   if (fromContours)
+  {
     structureSet = guarded(UnreadableInput, [&] { return readStructureSet(settings.contours.path, settings.contours.kind); });
+    if (!settings.contours.referenceImage.empty())
+      referenceImage = guarded(UnreadableInput, [&] { return readVolumeGeometry(settings.contours.referenceImage); });
+  }
   else if (segmentationInput)
   {
     segmentation = guarded(UnreadableInput, [&] { return readSegmentationFile(settings.inputVolume); });
@@ -516,7 +548,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   std::vector<Structure> structures;
   std::vector<std::string> failures;
   if (fromContours)
-    structures = roiStructures(structureSet, settings);
+    structures = roiStructures(structureSet, referenceImage, settings);
   else if (segmentationInput)
   {
     // --label picks one segment as --labels does.

@@ -99,11 +99,12 @@ std::vector<ProgressStage> pipelineStages();
  *  label's figures.
  *
  *  A structure set or contour file (settings.contours): read -> per ROI, its contours as a stack
- *  along their own slice normal (stackContours), crossings and keyholes repaired (repairContours)
- *  -> the same stages from the contours on, ROI by ROI as labels (an ROI that is empty, cannot be
- *  stacked or fails is reported and skipped; the others are written) -> the ROI's frame to
- *  physical space -> one file per ROI "<number>_<name>.<ext>" in the output folder and the merged
- *  model. A file that cannot be read is UnreadableInput; --rois naming no ROI, EmptySegmentation. */
+ *  (stackContours: along the reference image's slice direction and spacing when they lie on its
+ *  slices, read from its header alone; else along their own normal), crossings and keyholes
+ *  repaired (repairContours) -> the same stages from the contours on, ROI by ROI as labels (an ROI
+ *  that is empty, cannot be stacked or fails is reported and skipped; the others are written) ->
+ *  the ROI's frame to physical space -> one file per ROI "<number>_<name>.<ext>" in the output
+ *  folder and the merged model. A file that cannot be read is UnreadableInput; --rois naming no ROI, EmptySegmentation. */
 PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& progress,
                            std::vector<LabelReport>* labels = nullptr);
 

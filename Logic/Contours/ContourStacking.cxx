@@ -169,10 +169,20 @@ double automaticPointSpacing(const ContourStack& stack)
 StackedContours stackContours(const std::vector<Polygon3>& contours, const ContourStackingOptions& options)
 {
   StackedContours result;
-  Vector3 normal = options.sliceNormal ? *options.sliceNormal : sliceNormalOf(contours);
-  if (!(norm(normal) > 0.0))
-    throw Error("the slice normal is zero");
-  normal = scaled(normal, 1.0 / norm(normal));
+  Vector3 normal = sliceNormalOf(contours);
+  if (options.sliceNormal)
+  {
+    const Vector3& given = *options.sliceNormal;
+    if (!(norm(given) > 0.0) || !std::isfinite(norm(given)))
+      throw Error("the given slice normal is zero or not finite");
+    const double cosine = std::min(1.0, std::abs(dot(normal, given)) / norm(given));
+    result.normalDeviationDegrees = std::acos(cosine) * 180.0 / Pi;
+    // Contours drawn on the image's slices lie on its planes up to the planner's rounding; its
+    // direction is then exact where theirs is an estimate.
+    result.givenNormalUsed = *result.normalDeviationDegrees <= options.maxNormalDeviationDegrees;
+    if (result.givenNormalUsed)
+      normal = scaled(given, 1.0 / norm(given));
+  }
   const auto [u, v] = inPlaneBasis(normal);
 
   struct Placed
@@ -267,6 +277,18 @@ StackedContours stackContours(const std::vector<Polygon3>& contours, const Conto
   for (std::size_t k = 1; k < slices.size(); ++k)
     gaps.push_back(slices[k].z - slices[k - 1].z);
   double spacing = median(gaps, options.fallbackSliceSpacing);
+  // The image's spacing says nothing of contours that are not on its slices.
+  if (options.expectedSliceSpacing > 0.0 && (!options.sliceNormal || result.givenNormalUsed))
+  {
+    const double expected = options.expectedSliceSpacing;
+    const bool onItsSlices = gaps.empty() || std::any_of(gaps.begin(), gaps.end(), [&](double gap)
+                                                         { return std::abs(gap - expected) <= 0.05 * expected; });
+    if (onItsSlices)
+      spacing = expected;
+    else
+      result.notes.push_back("no two slices of contours are one image slice (" + millimetres(expected) +
+                             ") apart: their own spacing (" + millimetres(spacing) + ") is used");
+  }
   if (!(spacing > 0.0))
   {
     std::ostringstream message;

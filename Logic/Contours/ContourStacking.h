@@ -25,8 +25,17 @@ Vector3 newellNormal(const Polygon3& contour);
 
 struct ContourStackingOptions
 {
-  /** The slice normal when known (e.g. from the referenced image series); empty: from the contours. */
+  /** The slice direction of the image the contours were drawn on, when known (any length, either
+   *  sign); empty: the contours' own normal (sliceNormalOf). When the contours' own normal is further
+   *  than maxNormalDeviationDegrees from it, they are not on that image's slices and their own
+   *  normal is used (StackedContours::normalDeviationDegrees says so). */
   std::optional<Vector3> sliceNormal;
+  double maxNormalDeviationDegrees = 1.0;
+  /** The slice spacing of that image (mm); 0: none known. Unless the contours are off its slices
+   *  (their normal is not sliceNormal), it is the stack's spacing when they lie in one slice or two
+   *  of their slices are one image slice apart (within 5%), so that gaps are counted in the image's
+   *  slices; otherwise the contours' median gap is (a note says so). */
+  double expectedSliceSpacing = 0.0;
   /** Contours whose own normal is further than this from the slice normal are skipped (degrees). */
   double maxTiltDegrees = 10.0;
   /** Contours closer than this along the normal share a slice (mm); 0: a quarter of the median gap
@@ -50,6 +59,10 @@ struct StackedContours
   /** In-plane point spacing (twice) and slice spacing: the grid the meshing options are resolved for. */
   std::array<double, 3> spacing{ 1.0, 1.0, 1.0 };
   std::size_t contoursUsed = 0;
+  /** With options.sliceNormal: the angle between it and the contours' own normal (degrees), and
+   *  whether the stack follows it (the angle is within options.maxNormalDeviationDegrees). */
+  std::optional<double> normalDeviationDegrees;
+  bool givenNormalUsed = false;
   /** One line each: contours skipped (tilted, no area), duplicates dropped, gaps bridged or left
    *  open, uneven spacing. */
   std::vector<std::string> notes;
@@ -65,7 +78,8 @@ Vector3 sliceNormalOf(const std::vector<Polygon3>& contours);
  *  perimeter (small structures keep their shape), at least 0.5 mm. */
 double automaticPointSpacing(const ContourStack& stack);
 
-/** Sorts the contours into slices along the normal (options.sliceNormal, else sliceNormalOf):
+/** Sorts the contours into slices along the normal (options.sliceNormal when the contours lie on
+ *  its planes, else sliceNormalOf):
  *  contours within the slice tolerance share a slice; a contour repeated in its slice is dropped;
  *  a gap of one missing slice is tiled across, a longer gap leaves empty slices so the pieces on
  *  either side are closed on their own. Throws Error when no contour is left or when all lie in one

@@ -5,6 +5,7 @@
 #include "SegmentationFile.h"
 
 #include "ColorTable.h"
+#include "ItkErrorText.h"
 #include "MemoryBudget.h"
 
 #include "Core/SliceMeshTypes.h"
@@ -23,27 +24,6 @@ namespace slicemesh
 {
 namespace
 {
-
-/** The cause of an ITK NRRD error in a few words: the NRRD library's messages are a chain of
- *  "[nrrd] function: trouble" after ITK's "ITK ERROR: NrrdImageIO(<address>): "; the last link says
- *  what went wrong ("fread got only 42715 1-sized things, not 86400"). */
-std::string describe(const itk::ExceptionObject& error)
-{
-  std::string text = error.GetDescription() && *error.GetDescription() ? error.GetDescription() : error.what();
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  const std::string link = "[nrrd] ";
-  if (const std::size_t last = text.rfind(link); last != std::string::npos)
-  {
-    text = text.substr(last + link.size());
-    if (const std::size_t colon = text.find(": "); colon != std::string::npos && text.find(' ') > colon)
-      text = text.substr(colon + 2); // the function's name
-  }
-  else if (const std::size_t address = text.find("): "); text.compare(0, 10, "ITK ERROR:") == 0 && address != std::string::npos)
-    text = text.substr(address + 3);
-  while (!text.empty() && text.back() == ' ')
-    text.pop_back();
-  return text;
-}
 
 /** The SegmentN_ fields of the header, by N and then by field name ("Name", "Color", ...). */
 std::map<int, std::map<std::string, std::string>> segmentFields(const itk::MetaDataDictionary& dictionary)
@@ -109,7 +89,7 @@ SegmentationFile readSlicerSegmentation(const std::string& path)
   catch (const itk::ExceptionObject& error)
   {
     // ITK's NRRD reader decompresses the voxels of a gzip file already here.
-    throw Error(path + ": cannot read the NRRD header or voxels (a truncated or damaged file?): " + describe(error));
+    throw Error(path + ": cannot read the NRRD header or voxels (a truncated or damaged file?): " + itkErrorText(error));
   }
   if (io->GetNumberOfDimensions() != 3)
     throw Error(path + ": a segmentation of " + std::to_string(io->GetNumberOfDimensions()) +
@@ -144,7 +124,7 @@ SegmentationFile readSlicerSegmentation(const std::string& path)
   }
   catch (const itk::ExceptionObject& error)
   {
-    throw Error(path + ": cannot read the voxels (a truncated or damaged file?): " + describe(error));
+    throw Error(path + ": cannot read the voxels (a truncated or damaged file?): " + itkErrorText(error));
   }
   const LayerStack* stack = reader->GetOutput();
 

@@ -2,6 +2,7 @@
 // slicemesh::Error with a one-line message that names the input.
 #include "VolumeReader.h"
 
+#include "ItkErrorText.h"
 #include "MemoryBudget.h"
 
 #include "Core/SliceMeshTypes.h"
@@ -26,8 +27,7 @@ namespace slicemesh
 namespace
 {
 
-/** ITK's exception text spans several lines (file, line, location, description); keep the
- *  description, on one line, short enough to read in a terminal. */
+/** Several lines (MetaIO's complaints) on one, short enough to read in a terminal. */
 std::string oneLine(const std::string& text)
 {
   std::string line;
@@ -47,13 +47,7 @@ std::string oneLine(const std::string& text)
   constexpr std::size_t maxLength = 200;
   if (line.size() > maxLength)
     line = line.substr(0, maxLength - 3) + "...";
-  return line.empty() ? std::string("unknown ITK error") : line;
-}
-
-std::string describe(const itk::ExceptionObject& error)
-{
-  const char* description = error.GetDescription();
-  return oneLine(description && *description ? description : error.what());
+  return line.empty() ? std::string("unknown error") : line;
 }
 
 /** The geometry checks every reader path shares: a mesh cannot be placed without a usable
@@ -85,6 +79,23 @@ void checkGeometry(const std::string& path, const double spacing[3], const doubl
             << "); the image axes do not span 3-D space";
     throw Error(message.str());
   }
+}
+
+/** The first three axes' spacing and direction as the header states them, checked. */
+VolumeGeometry checkHeaderGeometry(const std::string& path, const itk::ImageIOBase* io)
+{
+  VolumeGeometry geometry;
+  double spacing[3];
+  double direction[3][3];
+  for (unsigned int axis = 0; axis < 3; ++axis)
+  {
+    spacing[axis] = geometry.spacing[axis] = io->GetSpacing(axis);
+    const std::vector<double> column = io->GetDirection(axis);
+    for (unsigned int row = 0; row < 3; ++row)
+      direction[row][axis] = geometry.direction[row][axis] = row < column.size() ? column[row] : 0.0;
+  }
+  checkGeometry(path, spacing, direction);
+  return geometry;
 }
 
 /** Bytes per voxel a run holds at its peak besides the file's own voxels: the float volume (4), the
@@ -125,16 +136,7 @@ void checkHeader(const std::string& path, const itk::ImageIOBase* io)
     checkMemoryBudget(what.str(), voxels * (fileBytesPerVoxel + bytesPerVoxelOfARun));
   }
 
-  double spacing[3];
-  double direction[3][3];
-  for (unsigned int axis = 0; axis < 3; ++axis)
-  {
-    spacing[axis] = io->GetSpacing(axis);
-    const std::vector<double> column = io->GetDirection(axis);
-    for (unsigned int row = 0; row < 3; ++row)
-      direction[row][axis] = row < column.size() ? column[row] : 0.0;
-  }
-  checkGeometry(path, spacing, direction);
+  checkHeaderGeometry(path, io);
 }
 
 /** Whether a gzip file decompresses to its end. ITK 5.2's NIfTI reader accepts a truncated .nii.gz
@@ -251,11 +253,9 @@ void checkNiftiSpacing(const std::string& path)
   }
 }
 
-ScalarVolume::Pointer readImageFile(const std::string& path)
+/** The header of an image file through the ImageIO ITK picks for it. */
+itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
 {
-  if (endsWith(path, ".gz") || endsWith(path, ".GZ"))
-    checkGzipStream(path);
-
   itk::ImageIOBase::Pointer io =
     itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::FileModeEnum::ReadMode);
   if (!io)
@@ -268,8 +268,16 @@ ScalarVolume::Pointer readImageFile(const std::string& path)
   }
   catch (const itk::ExceptionObject& error)
   {
-    throw Error(path + ": cannot read the image header: " + describe(error));
+    throw Error(path + ": cannot read the image header: " + itkErrorText(error));
   }
+  return io;
+}
+
+ScalarVolume::Pointer readImageFile(const std::string& path)
+{
+  if (endsWith(path, ".gz") || endsWith(path, ".GZ"))
+    checkGzipStream(path);
+  itk::ImageIOBase::Pointer io = readImageHeader(path);
   checkHeader(path, io);
   checkNiftiFileSize(path, io);
   checkNiftiSpacing(path);
@@ -287,7 +295,7 @@ ScalarVolume::Pointer readImageFile(const std::string& path)
   }
   catch (const itk::ExceptionObject& error)
   {
-    throw Error(path + ": cannot read the voxels: " + describe(error));
+    throw Error(path + ": cannot read the voxels: " + itkErrorText(error));
   }
   if (!complaints.empty())
     throw Error(path + ": cannot read the voxels (a truncated or damaged file?): " + oneLine(complaints));
@@ -311,7 +319,8 @@ ScalarVolume::Pointer readImageFile(const std::string& path)
   return volume;
 }
 
-ScalarVolume::Pointer readDicomSeries(const std::string& directory)
+/** The files of the first DICOM image series in the directory, in slice order. */
+std::vector<std::string> dicomSeriesFiles(const std::string& directory)
 {
   auto names = itk::GDCMSeriesFileNames::New();
   std::vector<std::string> fileNames;
@@ -326,22 +335,33 @@ ScalarVolume::Pointer readDicomSeries(const std::string& directory)
   }
   catch (const itk::ExceptionObject& error)
   {
-    throw Error(directory + ": cannot list the DICOM series: " + describe(error));
+    throw Error(directory + ": cannot list the DICOM series: " + itkErrorText(error));
   }
   if (fileNames.size() < 2)
     throw Error(directory + ": the DICOM series has a single slice (a 2-D image); SliceMesh needs a 3-D volume");
+  return fileNames;
+}
 
-  using Reader = itk::ImageSeriesReader<ScalarVolume>;
-  auto reader = Reader::New();
+using DicomSeriesReader = itk::ImageSeriesReader<ScalarVolume>;
+
+itk::SmartPointer<DicomSeriesReader> dicomSeriesReader(const std::string& directory)
+{
+  auto reader = DicomSeriesReader::New();
   reader->SetImageIO(itk::GDCMImageIO::New());
-  reader->SetFileNames(fileNames);
+  reader->SetFileNames(dicomSeriesFiles(directory));
+  return reader;
+}
+
+ScalarVolume::Pointer readDicomSeries(const std::string& directory)
+{
+  auto reader = dicomSeriesReader(directory);
   try
   {
     reader->Update();
   }
   catch (const itk::ExceptionObject& error)
   {
-    throw Error(directory + ": cannot read the DICOM series: " + describe(error));
+    throw Error(directory + ": cannot read the DICOM series: " + itkErrorText(error));
   }
   ScalarVolume::Pointer volume = reader->GetOutput();
   volume->DisconnectPipeline();
@@ -362,6 +382,40 @@ void checkVolumeGeometry(const std::string& path, const itk::ImageBase<3>* volum
       direction[i][j] = volume->GetDirection()[i][j];
   }
   checkGeometry(path, spacing, direction);
+}
+
+VolumeGeometry readVolumeGeometry(const std::string& path)
+{
+  std::error_code ignored;
+  if (!std::filesystem::exists(path, ignored))
+    throw Error(path + ": no such file or directory");
+  if (!std::filesystem::is_directory(path, ignored))
+  {
+    itk::ImageIOBase::Pointer io = readImageHeader(path);
+    if (io->GetNumberOfDimensions() < 3)
+      throw Error(path + ": a 2-D image; its slice direction is unknown");
+    return checkHeaderGeometry(path, io);
+  }
+  // The series reader orders the slices and takes the spacing between them from their positions.
+  auto reader = dicomSeriesReader(path);
+  try
+  {
+    reader->UpdateOutputInformation();
+  }
+  catch (const itk::ExceptionObject& error)
+  {
+    throw Error(path + ": cannot read the DICOM series: " + itkErrorText(error));
+  }
+  const ScalarVolume* volume = reader->GetOutput();
+  checkVolumeGeometry(path, volume);
+  VolumeGeometry geometry;
+  for (int i = 0; i < 3; ++i)
+  {
+    geometry.spacing[i] = volume->GetSpacing()[i];
+    for (int j = 0; j < 3; ++j)
+      geometry.direction[i][j] = volume->GetDirection()[i][j];
+  }
+  return geometry;
 }
 
 ScalarVolume::Pointer readVolume(const std::string& path)

@@ -1,4 +1,5 @@
 // 3D Slicer's planar contour representation: a VTK polydata of closed polylines, one ROI per file.
+#include "LegacyCellLists.h"
 #include "StructureSet.h"
 
 #include <vtkCallbackCommand.h>
@@ -71,6 +72,8 @@ StructureSet readContourPolyData(const std::string& path)
   }
   else
   {
+    if (const auto fault = legacyCellListFault(path))
+      throw Error("cannot read '" + path + "' as VTK polydata: " + *fault);
     vtkNew<vtkPolyDataReader> reader;
     reader->AddObserver(vtkCommand::ErrorEvent, onError);
     reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, onError);
@@ -99,6 +102,9 @@ StructureSet readContourPolyData(const std::string& path)
       Polygon3 contour;
       for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
       {
+        if (ids->GetId(i) < 0 || ids->GetId(i) >= polyData->GetNumberOfPoints())
+          throw Error("'" + path + "': a cell refers to point " + std::to_string(ids->GetId(i)) + " of " +
+                      std::to_string(polyData->GetNumberOfPoints()));
         double p[3];
         polyData->GetPoint(ids->GetId(i), p);
         contour.push_back({ sign * p[0], sign * p[1], p[2] });

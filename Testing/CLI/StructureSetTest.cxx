@@ -298,8 +298,17 @@ TEST(StructureSet, FilesThatAreNoStructureSetOrAreCutShortFailWithOneLineAndWrit
   fs::resize_file(folder / "cut.dcm", fs::file_size(folder / "RS.dcm") / 2);
   std::ofstream(folder / "text.json") << "{ \"rois\": 12 }";
   std::ofstream(folder / "plain.txt") << "not contours";
+  // Legacy VTK cell lists shorter than declared (VTK 9.1's reader crashed on it), with a cell
+  // running past the list's end, or naming a point the file does not have.
+  const std::string points = "# vtk DataFile Version 4.2\nRing\nASCII\nDATASET POLYDATA\nPOINTS 4 double\n"
+                             "0 0 0 4 0 0 4 4 0 0 4 0\n";
+  std::ofstream(folder / "short.vtk") << points << "LINES 1 34\n5 0 1 2 3 0\n";
+  std::ofstream(folder / "overrun.vtk") << points << "LINES 1 6\n9 0 1 2 3 0\n";
+  std::ofstream(folder / "point.vtk") << points << "LINES 1 6\n5 0 1 2 7 0\n";
   for (const std::string& arguments :
        { quoted((folder / "cut.dcm").string()), "--inputContours " + quoted((folder / "plain.txt").string()),
+         quoted((folder / "short.vtk").string()), quoted((folder / "overrun.vtk").string()),
+         quoted((folder / "point.vtk").string()),
          "--contourFormat RTSTRUCT " + quoted((folder / "text.json").string()), quoted((folder / "text.json").string()) })
   {
     const fs::path out = folder / "out";
@@ -311,6 +320,128 @@ TEST(StructureSet, FilesThatAreNoStructureSetOrAreCutShortFailWithOneLineAndWrit
     EXPECT_FALSE(fs::exists(folder / "mesh.vtp")) << arguments;
     EXPECT_TRUE(!fs::exists(out) || fs::is_empty(out)) << arguments;
   }
+}
+
+/** An oblique slice frame: the slices tilted 30 degrees about x and 20 about z (LPS). */
+struct ObliqueFrame
+{
+  Vector3 e1, e2, normal;
+  ObliqueFrame()
+  {
+    const double a = 30.0 * Pi / 180.0, b = 20.0 * Pi / 180.0;
+    e1 = { std::cos(b), std::sin(b), 0.0 };
+    e2 = { -std::sin(b) * std::cos(a), std::cos(b) * std::cos(a), std::sin(a) };
+    normal = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0] };
+  }
+};
+
+/** A cylinder of radius r on the oblique slices: circles on the slices `ks` (3 mm apart, the first
+ *  about `centre`), the points rounded to 0.01 mm as a planning system writes them. */
+PlanarStructure obliqueCylinder(int number, const std::string& name, const Vector3& centre, double r,
+                                const std::vector<int>& ks = { 0, 1, 2, 3, 4, 5, 6, 7, 8, 9 })
+{
+  const ObliqueFrame f;
+  PlanarStructure s = roi(number, name, { 200, 100, 0 });
+  for (int k : ks)
+  {
+    Polygon3 contour;
+    for (int i = 0; i < 96; ++i)
+    {
+      const double c = r * std::cos(2.0 * Pi * i / 96), t = r * std::sin(2.0 * Pi * i / 96), h = Spacing * k;
+      Vector3 p;
+      for (int row = 0; row < 3; ++row)
+        p[row] = std::round(100.0 * (centre[row] + c * f.e1[row] + t * f.e2[row] + h * f.normal[row])) / 100.0;
+      contour.push_back({ p[0], p[1], p[2] });
+    }
+    s.contours.push_back(contour);
+  }
+  return s;
+}
+
+/** A small NRRD image (LPS) whose voxel axes are the columns of `axes`, `spacing` mm apart. */
+void writeReferenceImage(const fs::path& path, const std::array<Vector3, 3>& axes, const Vector3& spacing)
+{
+  std::ofstream file(path, std::ios::binary);
+  file << "NRRD0004\ntype: unsigned char\ndimension: 3\nspace: left-posterior-superior\nsizes: 4 4 4\n"
+       << "space directions:";
+  file.precision(17);
+  for (int axis = 0; axis < 3; ++axis)
+    file << " (" << spacing[axis] * axes[axis][0] << "," << spacing[axis] * axes[axis][1] << ","
+         << spacing[axis] * axes[axis][2] << ")";
+  file << "\nspace origin: (-30,20,50)\nencoding: raw\n\n" << std::string(64, '\0');
+}
+
+TEST(StructureSet, ObliqueContoursStackAlongTheSlicesOfTheImageTheyWereDrawnOn)
+{
+  // The CT the structure set was drawn on, given beside it: its slice direction and spacing stack
+  // the contours; the mesh lies on the contours and holds the planning-system volume. Contoured on
+  // every other slice but one, the contours alone would tell a 6 mm spacing (the ends 3 mm
+  // beyond the end contours, 10% more volume); the image tells 3 mm, the gaps one slice missing.
+  const ObliqueFrame f;
+  const Vector3 centre{ -20.0, 40.0, 60.0 };
+  const double r = 15.0;
+  const fs::path folder = freshFolder("StructureSetOblique");
+  writeRTStructureSet((folder / "RS.dcm").string(), { obliqueCylinder(1, "Oblique", centre, r, { 0, 1, 3, 5, 7, 9 }) });
+  writeReferenceImage(folder / "ct.nrrd", { f.e1, f.e2, f.normal }, { 0.8, 0.8, Spacing });
+  const RunResult run = runSliceMesh("--inputContours " + quoted((folder / "RS.dcm").string()) + " " +
+                                     quoted((folder / "ct.nrrd").string()) + " " + quoted((folder / "mesh.vtp").string()));
+  ASSERT_EQ(run.exitCode, cli::Success) << run.err;
+  EXPECT_FALSE(hasLine(run.err, "not on the slices")) << run.err;
+  EXPECT_TRUE(hasLine(run.err, "one slice missing, tiled across it")) << run.err;
+  const MeshValidation v = expectValid(folder / "mesh.vtp");
+  EXPECT_EQ(v.components, 1u);
+  const double expected = polygonArea(r) * 10 * Spacing; // half a slice beyond each end contour
+  EXPECT_NEAR(v.volume, expected, 0.02 * expected); // 2%: as the annulus (the caps' bevelled rims)
+  // Where the contours are: along the normal from half a slice before the first contour to half a
+  // slice after the last, within the circles' radius of their axis (0.5 mm: the finishing's
+  // smoothing of the rims).
+  double lowest = 1e9, highest = -1e9, widest = 0.0;
+  for (const Point3& p : readMesh((folder / "mesh.vtp").string()).mesh.points)
+  {
+    const Vector3 d{ p.x - centre[0], p.y - centre[1], p.z - centre[2] };
+    const double h = d[0] * f.normal[0] + d[1] * f.normal[1] + d[2] * f.normal[2];
+    lowest = std::min(lowest, h);
+    highest = std::max(highest, h);
+    widest = std::max(widest, std::hypot(d[0] - h * f.normal[0], d[1] - h * f.normal[1], d[2] - h * f.normal[2]));
+  }
+  EXPECT_NEAR(lowest, -0.5 * Spacing, 0.5);
+  EXPECT_NEAR(highest, 9.5 * Spacing, 0.5);
+  EXPECT_NEAR(widest, r, 0.5);
+}
+
+TEST(StructureSet, AnImageWhoseSlicesTheContoursAreNotOnGivesOneWarningAndTheContoursAreFollowed)
+{
+  const ObliqueFrame f;
+  const fs::path folder = freshFolder("StructureSetOtherImage");
+  writeRTStructureSet((folder / "RS.dcm").string(), { obliqueCylinder(1, "First", { -20.0, 40.0, 60.0 }, 10.0),
+                                                      obliqueCylinder(2, "Second", { 30.0, 40.0, 60.0 }, 10.0) });
+  writeReferenceImage(folder / "axial.nrrd", { Vector3{ 1, 0, 0 }, Vector3{ 0, 1, 0 }, Vector3{ 0, 0, 1 } },
+                      { 1.0, 1.0, 2.0 });
+  const RunResult run = runSliceMesh("--inputContours " + quoted((folder / "RS.dcm").string()) + " " +
+                                     quoted((folder / "axial.nrrd").string()) + " " + quoted((folder / "mesh.vtp").string()));
+  ASSERT_EQ(run.exitCode, cli::Success) << run.err;
+  std::size_t warnings = 0;
+  for (const std::string& line : linesOf(run.err))
+    if (line.find("are not on the slices of") != std::string::npos)
+    {
+      ++warnings;
+      EXPECT_EQ(line.rfind("SliceMesh: warning: the contours of ROI 1 (First), 2 (Second)", 0), 0u) << line;
+      EXPECT_NE(line.find("axial.nrrd"), std::string::npos) << line;
+    }
+  EXPECT_EQ(warnings, 1u) << "one line for the set: " << run.err;
+  // Followed along their own normal and spacing, the cylinders are whole (3 mm slices, not 2).
+  const MeshValidation v = expectValid(folder / "mesh.vtp");
+  EXPECT_EQ(v.components, 2u);
+  const double expected = 2.0 * polygonArea(10.0) * 10 * Spacing;
+  EXPECT_NEAR(v.volume, expected, 0.02 * expected);
+
+  // An image that cannot be read: one line, nothing written.
+  const RunResult missing = runSliceMesh("--inputContours " + quoted((folder / "RS.dcm").string()) + " " +
+                                         quoted((folder / "missing.nrrd").string()) + " " +
+                                         quoted((folder / "none.vtp").string()));
+  EXPECT_EQ(missing.exitCode, cli::UnreadableInput) << missing.err;
+  EXPECT_EQ(linesOf(missing.err).size(), 1u) << missing.err;
+  EXPECT_FALSE(fs::exists(folder / "none.vtp"));
 }
 
 TEST(StructureSet, JsonContoursThroughInputContoursWithTheVolumeLeftOutAndReturnParameters)

@@ -14,6 +14,7 @@
 #include <limits>
 #include <sstream>
 #include <unistd.h>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -144,6 +145,42 @@ TEST(ErrorHandling, TruncatedOrCorruptFiles)
   expectFailure(f.outputs, (f.inputs / "cut.nii").string(), cli::UnreadableInput, "truncated");
   writeMetaImageWith(f.inputs / "cut.mha", "NDims = 3\nDimSize = 8 8 8\nElementSpacing = 1 1 1\n", 300);
   expectFailure(f.outputs, (f.inputs / "cut.mha").string(), cli::UnreadableInput, "cannot read the voxels");
+}
+
+TEST(ErrorHandling, AMalformedNrrdIsOneLineNamingTheFileAndTheFault)
+{
+  // ITK reports a bad NRRD as its reader's class and address followed by the NRRD library's chain
+  // of messages; the user gets the file and the NRRD library's reason, and nothing is written.
+  const Folders f = foldersFor("malformed-nrrd");
+  const std::string voxels(512, '\1');
+  struct File
+  {
+    std::string name, content, fault;
+  };
+  const std::vector<File> files{
+    { "type.nrrd", "NRRD0004\ntype: floot\ndimension: 3\nsizes: 8 8 8\nencoding: raw\n\n" + voxels,
+      "couldn't parse type \"floot\"" },
+    { "sizes.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 8 8\nencoding: raw\n\n" + voxels,
+      "parsed 2 values, but dimension is 3" },
+    { "short.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 8 8 8\nencoding: raw\n\n" + voxels.substr(0, 100),
+      "cannot read the voxels: fread got only 100 1-sized things, not 512" },
+    { "gzip.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 8 8 8\nencoding: gzip\n\n" + voxels.substr(0, 100),
+      "cannot read the voxels: expected 512 bytes but received 100" },
+  };
+  for (const auto& [name, content, fault] : files)
+  {
+    writeText(f.inputs / name, content);
+    const RunResult r = runSliceMesh(quoted((f.inputs / name).string()) + " " + quoted((f.outputs / "out.vtp").string()));
+    SCOPED_TRACE(name);
+    EXPECT_EQ(r.exitCode, cli::UnreadableInput) << r.err;
+    const std::vector<std::string> lines = linesOf(r.err);
+    ASSERT_EQ(lines.size(), 1u) << r.err;
+    EXPECT_EQ(lines[0].rfind("SliceMesh: error: " + (f.inputs / name).string() + ": ", 0), 0u) << lines[0];
+    EXPECT_NE(lines[0].find(fault), std::string::npos) << lines[0];
+    for (const std::string noise : { "0x", "itk::", "ITK ERROR", "[nrrd]", "NrrdImageIO", "trouble" })
+      EXPECT_EQ(lines[0].find(noise), std::string::npos) << "'" << noise << "' in: " << lines[0];
+    EXPECT_TRUE(fs::is_empty(f.outputs)) << "nothing written";
+  }
 }
 
 TEST(ErrorHandling, TwoAndFourDimensionalImages)

@@ -175,6 +175,71 @@ TEST(ContourStacking, ASingleSliceNeedsASpacingFromElsewhere)
   EXPECT_TRUE(mentions(stacked.notes, "one slice"));
 }
 
+TEST(ContourStacking, TheImageSliceDirectionAndSpacingAreUsedWhenTheContoursLieOnItsSlices)
+{
+  // Contours on an oblique image's slices, written with the planner's rounding to 0.01 mm: the
+  // image's direction is exact, theirs an estimate; a gap of two image slices is one missing slice.
+  const double a = 25.0 * Pi / 180.0;
+  const Vector3 e1{ 1.0, 0.0, 0.0 }, e2{ 0.0, std::cos(a), std::sin(a) }, normal{ 0.0, -std::sin(a), std::cos(a) };
+  std::vector<Polygon3> contours;
+  for (double k : { 0.0, 1.0, 3.0, 4.0 })
+  {
+    Polygon3 s = square({ 5.0 + 2.5 * k * normal[0], 2.5 * k * normal[1], 2.5 * k * normal[2] }, e1, e2, 6.0);
+    for (Point3& p : s)
+      p = { std::round(p.x * 100.0) / 100.0, std::round(p.y * 100.0) / 100.0, std::round(p.z * 100.0) / 100.0 };
+    contours.push_back(s);
+  }
+  ContourStackingOptions options;
+  options.sliceNormal = Vector3{ 0.0, 2.0 * std::sin(a), -2.0 * std::cos(a) }; // any length, either sign
+  options.expectedSliceSpacing = 2.5;
+  const StackedContours stacked = stackContours(contours, options);
+  ASSERT_TRUE(stacked.normalDeviationDegrees.has_value());
+  EXPECT_LT(*stacked.normalDeviationDegrees, 0.2);
+  EXPECT_TRUE(stacked.givenNormalUsed);
+  for (int row = 0; row < 3; ++row)
+    EXPECT_NEAR(std::abs(stacked.frame.direction[row][2]), std::abs(normal[row]), 1e-12) << "the image's normal exactly";
+  EXPECT_EQ(stacked.stack.sliceSpacing, 2.5);
+  EXPECT_EQ(stacked.stack.slices.size(), 4u) << "the gap of two image slices is tiled across";
+  EXPECT_TRUE(mentions(stacked.notes, "one slice missing"));
+
+  // Without the image the same contours have a median gap of 2.5 too, but only an estimated normal.
+  const StackedContours own = stackContours(contours);
+  EXPECT_FALSE(own.normalDeviationDegrees.has_value());
+  EXPECT_FALSE(own.givenNormalUsed);
+}
+
+TEST(ContourStacking, ContoursOffTheImageSlicesFollowTheirOwnNormalAndSpacing)
+{
+  std::vector<Polygon3> contours;
+  for (int k = 0; k < 4; ++k)
+    contours.push_back(square({ 0.0, 0.0, 4.0 * k }, { 1, 0, 0 }, { 0, 1, 0 }, 5.0));
+  ContourStackingOptions options;
+  const double tilt = 3.0 * Pi / 180.0; // over the 1 degree allowed
+  options.sliceNormal = Vector3{ std::sin(tilt), 0.0, std::cos(tilt) };
+  options.expectedSliceSpacing = 2.0; // off the image's slices, its spacing says nothing
+  const StackedContours stacked = stackContours(contours, options);
+  ASSERT_TRUE(stacked.normalDeviationDegrees.has_value());
+  EXPECT_NEAR(*stacked.normalDeviationDegrees, 3.0, 1e-9);
+  EXPECT_FALSE(stacked.givenNormalUsed);
+  EXPECT_NEAR(stacked.frame.direction[2][2], 1.0, 1e-12) << "the contours' own normal";
+  EXPECT_NEAR(stacked.stack.sliceSpacing, 4.0, 1e-12) << "the contours' own spacing";
+
+  // On the image's planes but never one of its slices apart: their own spacing, with a note.
+  ContourStackingOptions parallel;
+  parallel.sliceNormal = Vector3{ 0.0, 0.0, 1.0 };
+  parallel.expectedSliceSpacing = 3.0;
+  const StackedContours sparse = stackContours(contours, parallel);
+  EXPECT_TRUE(sparse.givenNormalUsed);
+  EXPECT_NEAR(sparse.stack.sliceSpacing, 4.0, 1e-12);
+  EXPECT_TRUE(mentions(sparse.notes, "their own spacing"));
+
+  // A single slice takes the image's spacing as its thickness.
+  ContourStackingOptions single;
+  single.expectedSliceSpacing = 2.0;
+  const StackedContours slab = stackContours({ contours.front() }, single);
+  EXPECT_EQ(slab.stack.sliceSpacing, 2.0);
+}
+
 TEST(ContourStacking, ContoursWithoutAreaAreNoSlicePlane)
 {
   const std::vector<Polygon3> lines{ { { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 } } };

@@ -107,6 +107,15 @@ TEST_F(VolumeReaderTest, RoundTripKeepsGeometryAndVoxels)
         EXPECT_NEAR(read->GetDirection()[row][column], written->GetDirection()[row][column], 1e-5);
     }
     EXPECT_TRUE(std::equal(read->GetBufferPointer(), read->GetBufferPointer() + 60, written->GetBufferPointer()));
+    // The header alone tells the same geometry (what contours drawn on the image are stacked by).
+    const VolumeGeometry geometry = readVolumeGeometry(path(name));
+    for (unsigned int row = 0; row < 3; ++row)
+    {
+      EXPECT_NEAR(geometry.spacing[row], written->GetSpacing()[row], 1e-6);
+      EXPECT_NEAR(geometry.sliceDirection()[row], written->GetDirection()[row][2], 1e-5);
+      for (unsigned int column = 0; column < 3; ++column)
+        EXPECT_NEAR(geometry.direction[row][column], written->GetDirection()[row][column], 1e-5);
+    }
   }
 }
 
@@ -290,6 +299,14 @@ TEST_F(VolumeReaderTest, DicomSeriesDirectoryRoundTrip)
   }
   for (long n = 0; n < 120; ++n)
     ASSERT_EQ(read->GetBufferPointer()[n], n * 3.0f) << "voxel " << n;
+  // Without the voxels: the slice direction and the spacing between the slices' positions.
+  const VolumeGeometry geometry = readVolumeGeometry(dicom.string());
+  for (unsigned int row = 0; row < 3; ++row)
+  {
+    EXPECT_NEAR(geometry.spacing[row], volume->GetSpacing()[row], 1e-3);
+    EXPECT_NEAR(geometry.sliceDirection()[row], direction[row][2], 1e-4);
+  }
+  EXPECT_NE(errorMessageOf([&] { readVolumeGeometry(path("none.nrrd")); }).find("no such file"), std::string::npos);
 }
 
 TEST_F(VolumeReaderTest, DirectoryWithoutDicomIsAnError)
