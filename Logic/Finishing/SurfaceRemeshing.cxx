@@ -1,6 +1,7 @@
 #include "Finishing/SurfaceRemeshing.h"
 
 #include "Core/ParallelFor.h"
+#include "Finishing/RemeshingRegions.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/SurfaceMeshConversion.h"
 
@@ -153,22 +154,32 @@ struct NoProjection
   Kernel::Point_3 operator()(Vertex) const { return CGAL::ORIGIN; }
 };
 
-/** Remeshes one connected, closed piece: per round, CGAL's split, collapse and flip, then our own
- *  relaxation sweep and the projection of every vertex onto the input piece. */
-TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads)
+/** Remeshes one region of the input piece (all of it, or a slab or band of it): per round, CGAL's
+ *  split, collapse and flip, then our own relaxation sweep and the projection onto the input piece
+ *  (`tree`). The region's border, where it meets the rest of the piece, is kept exactly: its edges
+ *  are neither split nor collapsed, its vertices not moved. Throws Error if the region does not fit
+ *  a manifold surface. */
+MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions& options, const Tree& tree,
+                        unsigned int threads)
 {
-  SurfaceMesh surface = surfaceOf(mesh);
-  const SurfaceMesh input = surface;
-  Tree tree(faces(input).first, faces(input).second, input);
-  tree.accelerate_distance_queries();
-  tree.build(); // before the queries run side by side
+  SurfaceMesh surface = surfaceOf(region.mesh);
+  auto origin = surface.add_property_map<Vertex, std::int32_t>("v:origin", -1).first;
+  for (Vertex v : surface.vertices())
+    origin[v] = region.origin[v.idx()];
+  auto constrained = surface.add_property_map<SurfaceMesh::Edge_index, bool>("e:constrained", false).first;
+  bool bordered = false;
+  for (SurfaceMesh::Edge_index e : surface.edges())
+    if (surface.is_border(e))
+      bordered = constrained[e] = true;
   for (int round = 0; round < options.iterations; ++round)
   {
     PMP::isotropic_remeshing(faces(surface), options.targetEdgeLength, surface,
                              CGAL::parameters::number_of_iterations(1)
                                .number_of_relaxation_steps(0)
                                .do_project(false)
-                               .projection_functor(NoProjection()));
+                               .projection_functor(NoProjection())
+                               .edge_is_constrained_map(constrained)
+                               .protect_constraints(bordered));
     surface.collect_garbage(); // the next round's face index map must be dense
     relaxTangentially(surface, threads);
     parallelForRanges(surface.number_of_vertices(), threads,
@@ -177,11 +188,80 @@ TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions
                         for (std::size_t index = first; index < last; ++index)
                         {
                           const Vertex v(static_cast<SurfaceMesh::size_type>(index));
-                          surface.point(v) = tree.closest_point(surface.point(v));
+                          if (!surface.is_border(v))
+                            surface.point(v) = tree.closest_point(surface.point(v));
                         }
                       });
   }
-  return toTriangleMesh(surface);
+  MeshRegion result;
+  result.mesh = toTriangleMesh(surface);
+  for (Vertex v : surface.vertices())
+    result.origin.push_back(origin[v]);
+  return result;
+}
+
+/** Remeshes the regions of `mesh` (regionOf, -1: left alone) side by side; a region that cannot be
+ *  remeshed is kept as it was when `keepFailed`, else the whole call throws. */
+TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& regionOf, int count,
+                           const SurfaceRemeshingOptions& options, const Tree& tree, unsigned int threads,
+                           bool keepFailed)
+{
+  std::vector<MeshRegion> regions(static_cast<std::size_t>(count));
+  parallelFor(regions.size(), threads,
+              [&](std::size_t r)
+              {
+                const MeshRegion region = extractRegion(mesh, regionOf, static_cast<int>(r));
+                try
+                {
+                  regions[r] = remeshRegion(region, options, tree, 1);
+                }
+                catch (const std::exception&)
+                {
+                  if (!keepFailed)
+                    throw;
+                  regions[r] = region;
+                }
+              });
+  return reassembleRegions(mesh, regionOf, regions);
+}
+
+/** Remeshes one connected, closed piece, projecting onto it. A large piece is remeshed in slabs
+ *  side by side, their seams kept, then in bands around the seams, side by side, so that no trace of
+ *  the seams is left; the slabs and bands depend on the piece only, never on the threads. */
+TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads)
+{
+  const SurfaceMesh input = surfaceOf(mesh);
+  Tree tree(faces(input).first, faces(input).second, input);
+  tree.accelerate_distance_queries();
+  tree.build(); // before the queries run side by side
+  const std::size_t perRegion = options.trianglesPerRegion;
+  if (perRegion == 0 || mesh.triangles.size() < 2 * perRegion)
+  {
+    MeshRegion whole{ mesh, {} };
+    for (std::size_t v = 0; v < mesh.points.size(); ++v)
+      whole.origin.push_back(static_cast<std::int32_t>(v));
+    return withoutUnusedVertices(reassembleRegions(mesh, std::vector<int>(mesh.triangles.size(), 0),
+                                                   { remeshRegion(whole, options, tree, threads) }));
+  }
+  int slabs = 0;
+  const std::vector<int> slabOf = slabRegions(mesh, perRegion, slabs);
+  TriangleMesh slabbed;
+  try
+  {
+    slabbed = remeshRegions(mesh, slabOf, slabs, options, tree, threads, /*keepFailed=*/false);
+  }
+  catch (const std::exception&) // a slab that is no manifold surface on its own (two fans at a vertex)
+  {
+    SurfaceRemeshingOptions whole = options;
+    whole.trianglesPerRegion = 0;
+    return remeshPiece(mesh, whole, threads);
+  }
+  // Three rings each side of a seam: the band's own border then lies among remeshed triangles.
+  std::vector<char> seam = seamVertices(mesh, slabOf); // the slabs' own vertices come after the piece's
+  seam.resize(slabbed.points.size(), 0);
+  int bands = 0;
+  const std::vector<int> bandOf = seamBands(slabbed, seam, 3, bands);
+  return withoutUnusedVertices(remeshRegions(slabbed, bandOf, bands, options, tree, threads, /*keepFailed=*/true));
 }
 
 } // namespace

@@ -13,6 +13,9 @@ struct SurfaceRemeshingOptions
 {
   double targetEdgeLength = 1.0; ///< mm
   int iterations = 3;            ///< rounds of split, collapse, flip, relax and project
+  /** A piece of at least twice this many triangles is remeshed in slabs of about this many, side by
+   *  side, then in bands around their seams; 0: always whole. */
+  std::size_t trianglesPerRegion = 40000;
 };
 
 /** Remeshes the surface with triangles whose edges are close to the target length: long edges

@@ -142,6 +142,34 @@ TEST(SurfaceRemeshing, GivesEdgesOfTheTargetLengthOnTheSameSurface)
   }
 }
 
+TEST(SurfaceRemeshing, InSlabsAndSeamBandsLikeAWholeRemesh)
+{
+  // A sphere of about 51,000 triangles in slabs of about 8,000: six slabs remeshed side by side,
+  // then bands around their five seams. No seam may show: the same surface, edge lengths, angles and
+  // triangle count as the sphere remeshed whole.
+  const double radius = 10.0;
+  const TriangleMesh sphere = octaSphere(80, radius);
+  SurfaceRemeshingOptions whole;
+  whole.targetEdgeLength = 0.4;
+  whole.trianglesPerRegion = 0;
+  SurfaceRemeshingOptions slabbed = whole;
+  slabbed.trianglesPerRegion = 8000;
+  const TriangleMesh reference = remeshSurface(sphere, whole);
+  const TriangleMesh remeshed = remeshSurface(sphere, slabbed, 2);
+  const MeshValidation v = validateMesh(remeshed), r = validateMesh(reference);
+  std::printf("slabs: %zu triangles (whole: %zu), %.2f%% under 30 deg (whole: %.2f%%), smallest %.1f deg (whole: %.1f)\n",
+              remeshed.triangles.size(), reference.triangles.size(), 100.0 * v.fractionAnglesBelow30,
+              100.0 * r.fractionAnglesBelow30, v.minAngleDegrees, r.minAngleDegrees);
+  EXPECT_TRUE(v.valid()) << v.summary();
+  EXPECT_EQ(v.eulerCharacteristic, 2);
+  EXPECT_NEAR(static_cast<double>(remeshed.triangles.size()) / reference.triangles.size(), 1.0, 0.03);
+  EXPECT_GT(meanEdgeLength(remeshed), 0.8 * whole.targetEdgeLength);
+  EXPECT_LT(meanEdgeLength(remeshed), 4.0 / 3.0 * whole.targetEdgeLength);
+  EXPECT_LT(v.fractionAnglesBelow30, r.fractionAnglesBelow30 + 0.005);
+  EXPECT_GT(v.minAngleDegrees, 0.8 * r.minAngleDegrees);
+  EXPECT_LT(meanRadiusError(remeshed, radius), 0.02);
+}
+
 TEST(SurfaceRemeshing, RefusesANonManifoldMeshAndABadLength)
 {
   TriangleMesh fan;
@@ -301,8 +329,9 @@ TEST(SurfaceFinishing, TheSameBitForBitOnOneTwoAndEightThreads)
   ASSERT_GT(rippled.points.size(), 20000u);
   SurfaceRemeshingOptions remeshing;
   remeshing.targetEdgeLength = 0.4;
+  remeshing.trianglesPerRegion = 8000; // in slabs too
   SurfaceFinishingOptions finishing;
-  finishing.remeshing.targetEdgeLength = 0.4;
+  finishing.remeshing = remeshing;
   finishing.smoothing.maxDisplacement = 0.1;
   const TriangleMesh remeshedOnOne = remeshSurface(rippled, remeshing, 1);
   TriangleMesh smoothedOnOne = rippled;

@@ -1,0 +1,175 @@
+#include "Finishing/RemeshingRegions.h"
+
+#include "Core/DisjointSets.h"
+
+#include <algorithm>
+#include <array>
+#include <tuple>
+
+namespace slicemesh
+{
+
+std::vector<int> slabRegions(const TriangleMesh& mesh, std::size_t trianglesPerRegion, int& count)
+{
+  const std::size_t n = mesh.triangles.size();
+  std::vector<double> height(n);
+  for (std::size_t t = 0; t < n; ++t)
+  {
+    const Triangle& tri = mesh.triangles[t];
+    height[t] = (mesh.points[tri[0]].z + mesh.points[tri[1]].z + mesh.points[tri[2]].z) / 3.0;
+  }
+  const std::size_t slabs = std::max<std::size_t>(1, trianglesPerRegion > 0 ? n / trianglesPerRegion : 1);
+  std::vector<double> sorted = height;
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<double> cuts;
+  for (std::size_t k = 1; k < slabs; ++k)
+  {
+    const double cut = sorted[k * n / slabs];
+    if (cuts.empty() || cut > cuts.back())
+      cuts.push_back(cut);
+  }
+  count = static_cast<int>(cuts.size()) + 1;
+  std::vector<int> regionOf(n);
+  for (std::size_t t = 0; t < n; ++t)
+    regionOf[t] = static_cast<int>(std::upper_bound(cuts.begin(), cuts.end(), height[t]) - cuts.begin());
+  return regionOf;
+}
+
+std::vector<char> seamVertices(const TriangleMesh& mesh, const std::vector<int>& regionOf)
+{
+  constexpr int none = -2;
+  std::vector<int> first(mesh.points.size(), none);
+  std::vector<char> seam(mesh.points.size(), 0);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (std::int32_t v : mesh.triangles[t])
+    {
+      int& seen = first[static_cast<std::size_t>(v)];
+      if (seen == none)
+        seen = regionOf[t];
+      else if (seen != regionOf[t])
+        seam[static_cast<std::size_t>(v)] = 1;
+    }
+  return seam;
+}
+
+std::vector<int> seamBands(const TriangleMesh& mesh, const std::vector<char>& seam, int rings, int& count)
+{
+  std::vector<char> near = seam;
+  for (int ring = 0; ring < rings; ++ring)
+  {
+    std::vector<char> grown = near;
+    for (const Triangle& t : mesh.triangles)
+      if (near[t[0]] || near[t[1]] || near[t[2]])
+        for (std::int32_t v : t)
+          grown[static_cast<std::size_t>(v)] = 1;
+    near.swap(grown);
+  }
+  // Band triangles joined by their edges: (smaller vertex, larger vertex, triangle), sorted.
+  std::vector<std::tuple<std::int32_t, std::int32_t, std::size_t>> edges;
+  std::vector<char> inBand(mesh.triangles.size(), 0);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+  {
+    const Triangle& tri = mesh.triangles[t];
+    if (!(near[tri[0]] || near[tri[1]] || near[tri[2]]))
+      continue;
+    inBand[t] = 1;
+    for (int corner = 0; corner < 3; ++corner)
+    {
+      const std::int32_t a = tri[corner], b = tri[(corner + 1) % 3];
+      edges.emplace_back(std::min(a, b), std::max(a, b), t);
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  DisjointSets sets(mesh.triangles.size());
+  for (std::size_t i = 1; i < edges.size(); ++i)
+    if (std::get<0>(edges[i]) == std::get<0>(edges[i - 1]) && std::get<1>(edges[i]) == std::get<1>(edges[i - 1]))
+      sets.unite(std::get<2>(edges[i]), std::get<2>(edges[i - 1]));
+  std::vector<int> regionOf(mesh.triangles.size(), -1), numberOfRoot(mesh.triangles.size(), -1);
+  count = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (inBand[t])
+    {
+      int& number = numberOfRoot[sets.find(t)];
+      if (number < 0)
+        number = count++;
+      regionOf[t] = number;
+    }
+  return regionOf;
+}
+
+MeshRegion extractRegion(const TriangleMesh& mesh, const std::vector<int>& regionOf, int region)
+{
+  MeshRegion result;
+  std::vector<std::int32_t> local(mesh.points.size(), -1);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+  {
+    if (regionOf[t] != region)
+      continue;
+    Triangle tri{};
+    for (int corner = 0; corner < 3; ++corner)
+    {
+      const std::int32_t v = mesh.triangles[t][corner];
+      std::int32_t& id = local[static_cast<std::size_t>(v)];
+      if (id < 0)
+      {
+        id = static_cast<std::int32_t>(result.mesh.points.size());
+        result.mesh.points.push_back(mesh.points[static_cast<std::size_t>(v)]);
+        result.origin.push_back(v);
+      }
+      tri[corner] = id;
+    }
+    result.mesh.triangles.push_back(tri);
+  }
+  return result;
+}
+
+TriangleMesh reassembleRegions(const TriangleMesh& mesh, const std::vector<int>& regionOf,
+                               const std::vector<MeshRegion>& regions)
+{
+  TriangleMesh result;
+  result.points = mesh.points;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (regionOf[t] < 0)
+      result.triangles.push_back(mesh.triangles[t]);
+  for (const MeshRegion& region : regions)
+  {
+    std::vector<std::int32_t> global(region.mesh.points.size());
+    for (std::size_t v = 0; v < region.mesh.points.size(); ++v)
+    {
+      if (region.origin[v] >= 0)
+      {
+        global[v] = region.origin[v];
+        result.points[static_cast<std::size_t>(region.origin[v])] = region.mesh.points[v];
+      }
+      else
+      {
+        global[v] = static_cast<std::int32_t>(result.points.size());
+        result.points.push_back(region.mesh.points[v]);
+      }
+    }
+    for (const Triangle& t : region.mesh.triangles)
+      result.triangles.push_back({ global[t[0]], global[t[1]], global[t[2]] });
+  }
+  return result;
+}
+
+TriangleMesh withoutUnusedVertices(const TriangleMesh& mesh)
+{
+  std::vector<std::int32_t> index(mesh.points.size(), -1);
+  for (const Triangle& t : mesh.triangles)
+    for (std::int32_t v : t)
+      index[static_cast<std::size_t>(v)] = 0;
+  TriangleMesh result;
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    if (index[v] == 0)
+    {
+      index[v] = static_cast<std::int32_t>(result.points.size());
+      result.points.push_back(mesh.points[v]);
+    }
+  result.triangles.reserve(mesh.triangles.size());
+  for (const Triangle& t : mesh.triangles)
+    result.triangles.push_back({ index[t[0]], index[t[1]], index[t[2]] });
+  return result;
+}
+
+} // namespace slicemesh

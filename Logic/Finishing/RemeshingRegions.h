@@ -1,0 +1,50 @@
+// Regions of one closed piece remeshed side by side: slabs along the slice axis first, then bands
+// around the seams between them. Internal to the finishing; the remeshing itself is
+// SurfaceRemeshing.cxx's.
+#ifndef RemeshingRegions_h
+#define RemeshingRegions_h
+
+#include "Core/SliceMeshTypes.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace slicemesh
+{
+
+/** Triangles of one region of a mesh, with the index in the whole mesh of each of its vertices
+ *  (-1: a vertex the region's remesh created). */
+struct MeshRegion
+{
+  TriangleMesh mesh;
+  std::vector<std::int32_t> origin;
+};
+
+/** The region of every triangle: slabs along z (the slice axis) of about `trianglesPerRegion`
+ *  triangles each, cut at quantiles of the triangles' centroid heights. Depends on the mesh only. */
+std::vector<int> slabRegions(const TriangleMesh& mesh, std::size_t trianglesPerRegion, int& count);
+
+/** Whether each vertex lies on a seam: between triangles of two regions, or of a region and the
+ *  rest (region -1). */
+std::vector<char> seamVertices(const TriangleMesh& mesh, const std::vector<int>& regionOf);
+
+/** The region of every triangle within `rings` rings of a seam vertex (`seam`: one flag per vertex), one region per set of such
+ *  triangles joined by edges, numbered in the order of their first triangle; -1 elsewhere. */
+std::vector<int> seamBands(const TriangleMesh& mesh, const std::vector<char>& seam, int rings, int& count);
+
+/** The triangles of region `region`, its vertices numbered in the order they first appear. */
+MeshRegion extractRegion(const TriangleMesh& mesh, const std::vector<int>& regionOf, int region);
+
+/** The mesh with every region's triangles replaced by `regions[r]`'s: vertices with an origin keep
+ *  their index (their new position written there), new ones are appended region by region. The
+ *  triangles of region -1 stay as they are; vertices no triangle uses any more stay too (see
+ *  withoutUnusedVertices). */
+TriangleMesh reassembleRegions(const TriangleMesh& mesh, const std::vector<int>& regionOf,
+                               const std::vector<MeshRegion>& regions);
+
+/** The mesh without the vertices no triangle uses, the others in their order. */
+TriangleMesh withoutUnusedVertices(const TriangleMesh& mesh);
+
+} // namespace slicemesh
+
+#endif
