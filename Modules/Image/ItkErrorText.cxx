@@ -4,11 +4,8 @@
 
 namespace slicemesh
 {
-namespace
-{
 
-/** Runs of white space (line breaks included) as one space, trimmed. */
-std::string collapsed(const std::string& text)
+std::string collapsedWhitespace(const std::string& text)
 {
   std::string line;
   bool pendingSpace = false;
@@ -26,6 +23,9 @@ std::string collapsed(const std::string& text)
   }
   return line;
 }
+
+namespace
+{
 
 /** The text after a leading "itk::ERROR: Class(0x...): " (ITK 5) or "ITK ERROR: Class(0x...): ". */
 std::string withoutItkPrefix(std::string text)
@@ -48,7 +48,7 @@ std::string withoutItkPrefix(std::string text)
 std::string itkErrorText(const itk::ExceptionObject& error)
 {
   const char* description = error.GetDescription();
-  std::string text = withoutItkPrefix(collapsed(description && *description ? description : error.what()));
+  std::string text = withoutItkPrefix(collapsedWhitespace(description && *description ? description : error.what()));
   const std::string link = "[nrrd] ";
   if (const std::size_t last = text.rfind(link); last != std::string::npos)
   {

@@ -16,6 +16,10 @@ namespace slicemesh
  *  characters; "unknown ITK error" when the exception says nothing. */
 std::string itkErrorText(const itk::ExceptionObject& error);
 
+/** Runs of white space (line breaks included) as one space, trimmed: several lines of a library's
+ *  complaints on one. */
+std::string collapsedWhitespace(const std::string& text);
+
 } // namespace slicemesh
 
 #endif

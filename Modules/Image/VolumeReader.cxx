@@ -30,20 +30,7 @@ namespace
 /** Several lines (MetaIO's complaints) on one, short enough to read in a terminal. */
 std::string oneLine(const std::string& text)
 {
-  std::string line;
-  bool pendingSpace = false;
-  for (char c : text)
-  {
-    if (c == '\n' || c == '\r' || c == '\t' || c == ' ')
-    {
-      pendingSpace = !line.empty();
-      continue;
-    }
-    if (pendingSpace)
-      line += ' ';
-    pendingSpace = false;
-    line += c;
-  }
+  std::string line = collapsedWhitespace(text);
   constexpr std::size_t maxLength = 200;
   if (line.size() > maxLength)
     line = line.substr(0, maxLength - 3) + "...";
