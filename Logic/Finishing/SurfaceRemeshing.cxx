@@ -166,11 +166,20 @@ MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions&
   auto origin = surface.add_property_map<Vertex, std::int32_t>("v:origin", -1).first;
   for (Vertex v : surface.vertices())
     origin[v] = region.origin[v.idx()];
+  // Kept: the border and every edge of a triangle that touches it. A flip or collapse next to the
+  // border could otherwise join two border vertices by a new edge, which the neighbouring region may
+  // have too: four triangles on one edge once the regions are put back together.
   auto constrained = surface.add_property_map<SurfaceMesh::Edge_index, bool>("e:constrained", false).first;
   bool bordered = false;
-  for (SurfaceMesh::Edge_index e : surface.edges())
-    if (surface.is_border(e))
-      bordered = constrained[e] = true;
+  for (Vertex v : surface.vertices())
+    if (surface.is_border(v))
+    {
+      bordered = true;
+      for (SurfaceMesh::Face_index f : CGAL::faces_around_target(surface.halfedge(v), surface))
+        if (f != SurfaceMesh::null_face())
+          for (SurfaceMesh::Halfedge_index h : CGAL::halfedges_around_face(surface.halfedge(f), surface))
+            constrained[surface.edge(h)] = true;
+    }
   for (int round = 0; round < options.iterations; ++round)
   {
     PMP::isotropic_remeshing(faces(surface), options.targetEdgeLength, surface,
