@@ -1,5 +1,7 @@
 #include "Meshing/MeshingOptions.h"
 
+#include <algorithm>
+
 namespace slicemesh
 {
 
@@ -15,13 +17,17 @@ MeshingOptions resolvedMeshingOptions(const MeshingOptions& options, const std::
     finishing.remeshing.targetEdgeLength = automatic.remeshing.targetEdgeLength;
   if (!(finishing.smoothing.maxDisplacement > 0.0))
     finishing.smoothing.maxDisplacement = automatic.smoothing.maxDisplacement;
-  // A surface that is remeshed anyway is tiled from contours already spaced for its edge length:
-  // traced contours (a point every half pixel or so) make a tiling three to four times denser than
-  // the remesh's target, which the remesh then spends most of its time collapsing. A little over the
-  // target edge leaves the remesh splitting rather than collapsing, which kept the triangle count
-  // furthest under 3D Slicer's on the benchmark's extra grids and shapes (at or closer to the surface
-  // than the traced points, every target met).
-  if (finishing.finish == SurfaceFinish::Remeshed && !(resolved.contours.pointSpacing > 0.0))
+  // Between thick slices, a surface that is remeshed anyway is tiled from contours already spaced
+  // for its edge length: traced contours (a point every half pixel or so) make a tiling three to four
+  // times denser than the remesh's target, which the remesh then spends most of its time collapsing.
+  // A little over the target edge leaves the remesh splitting rather than collapsing, which kept the
+  // triangle count furthest under 3D Slicer's on the benchmark's extra grids and shapes (every target
+  // met). On near-isotropic grids the traced contours of adjacent slices coincide along the voxel
+  // walls, which the tiling meshes cheaply; resampled, they cross everywhere, and an atlas at 1 mm
+  // took three times as long to tile.
+  const double pixel = std::min(spacing[0], spacing[1]);
+  if (finishing.finish == SurfaceFinish::Remeshed && !(resolved.contours.pointSpacing > 0.0) &&
+      spacing[2] >= resampledSliceRatio * pixel)
     resolved.contours.pointSpacing = remeshedContourSpacing * finishing.remeshing.targetEdgeLength;
   return resolved;
 }

@@ -28,14 +28,17 @@ struct MeshingOptions
   unsigned int threads = 0;
 };
 
-/** The contour point spacing of a remeshed surface, in target edge lengths, when none is given. */
+/** The contour point spacing of a remeshed surface, in target edge lengths, when none is given and
+ *  the slices are at least resampledSliceRatio times as thick as the pixels. */
 constexpr double remeshedContourSpacing = 1.2;
+constexpr double resampledSliceRatio = 1.5;
 
 /** The options with every automatic value replaced by its value for a grid of this spacing (x, y,
  *  slice; mm): the contour preparation (resolvedContourPreparation), the finishing
  *  (finishingOptionsFor: the target edge length, the smoothing's displacement bound) and, for a
- *  remeshed surface, a contour point spacing of remeshedContourSpacing target edges where none is
- *  given (the traced contours' points are kept otherwise). */
+ *  remeshed surface between slices resampledSliceRatio pixels thick or more, a contour point spacing
+ *  of remeshedContourSpacing target edges where none is given (the traced contours' points are kept
+ *  otherwise). */
 MeshingOptions resolvedMeshingOptions(const MeshingOptions& options, const std::array<double, 3>& spacing);
 
 } // namespace slicemesh
