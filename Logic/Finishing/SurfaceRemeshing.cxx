@@ -96,7 +96,8 @@ void relaxTangentially(SurfaceMesh& surface, unsigned int threads)
   // Vertex indices are dense here (the caller collected the garbage); every vertex's normal and
   // target is its own, computed from the unmoved surface, so the ranges run side by side.
   const std::size_t vertexCount = surface.number_of_vertices();
-  auto [faceNormals, facesCreated] = surface.add_property_map<SurfaceMesh::Face_index, Kernel::Vector_3>("f:relaxation_normal");
+  // Not a structured binding: the lambdas below capture it (C++17 does not allow that for bindings).
+  auto faceNormals = surface.add_property_map<SurfaceMesh::Face_index, Kernel::Vector_3>("f:relaxation_normal").first;
   parallelForRanges(surface.number_of_faces(), threads,
                     [&](std::size_t first, std::size_t last)
                     {
