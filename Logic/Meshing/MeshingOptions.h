@@ -31,7 +31,7 @@ struct MeshingOptions
 /** The contour point spacing of a remeshed surface, in target edge lengths, when none is given and
  *  the slices are at least resampledSliceRatio times as thick as the pixels. */
 constexpr double remeshedContourSpacing = 1.2;
-constexpr double resampledSliceRatio = 1.5;
+constexpr double resampledSliceRatio = 1.2;
 
 /** The options with every automatic value replaced by its value for a grid of this spacing (x, y,
  *  slice; mm): the contour preparation (resolvedContourPreparation), the finishing

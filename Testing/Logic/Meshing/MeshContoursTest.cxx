@@ -33,7 +33,7 @@ TEST(MeshingOptions, AutomaticValuesComeFromTheGrid)
   // Remeshed (the default): the traced contours are resampled to a little over the target edge.
   EXPECT_NEAR(resolved.contours.pointSpacing, remeshedContourSpacing * resolved.finishing.remeshing.targetEdgeLength, 1e-12);
   // Near-isotropic voxels: the traced contours, which coincide along the voxel walls, are kept.
-  EXPECT_EQ(resolvedMeshingOptions({}, { 1.0, 1.0, 1.2 }).contours.pointSpacing, 0.0);
+  EXPECT_EQ(resolvedMeshingOptions({}, { 1.0, 1.0, 1.1 }).contours.pointSpacing, 0.0);
   MeshingOptions smoothedOnly;
   smoothedOnly.finishing.finish = SurfaceFinish::Smoothed;
   EXPECT_EQ(resolvedMeshingOptions(smoothedOnly, { 0.8, 0.8, 3.0 }).contours.pointSpacing, 0.0); // traced points kept
