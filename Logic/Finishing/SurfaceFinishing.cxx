@@ -104,22 +104,14 @@ const char* finishName(SurfaceFinish finish)
 namespace
 {
 
-/** Whether a piece is a speck: its area under that of specksTargetTriangles equilateral triangles of
- *  the target edge (a cube of two voxels a side, about). Measured in the target's units, not in the
- *  tiling's triangles, whose size follows the contours' point spacing. */
+/** Whether a piece (`tiled`, its validation) is a speck: its area under that of speckTargetTriangles
+ *  equilateral triangles of the target edge (a cube of two voxels a side, about). Measured in the
+ *  target's units, not in the tiling's triangles, whose size follows the contours' point spacing. */
 constexpr double speckTargetTriangles = 48.0;
 
-bool isSpeck(const TriangleMesh& piece, double targetEdgeLength)
+bool isSpeck(const MeshValidation& tiled, double targetEdgeLength)
 {
-  double area = 0.0;
-  for (const Triangle& t : piece.triangles)
-  {
-    const Point3 &a = piece.points[t[0]], &b = piece.points[t[1]], &c = piece.points[t[2]];
-    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
-    area += 0.5 * std::sqrt((uy * vz - uz * vy) * (uy * vz - uz * vy) + (uz * vx - ux * vz) * (uz * vx - ux * vz) +
-                            (ux * vy - uy * vx) * (ux * vy - uy * vx));
-  }
-  return area < speckTargetTriangles * 0.25 * std::sqrt(3.0) * targetEdgeLength * targetEdgeLength;
+  return tiled.area < speckTargetTriangles * 0.25 * std::sqrt(3.0) * targetEdgeLength * targetEdgeLength;
 }
 
 /** One connected piece of the tiling, finished as far as it stays a valid surface of its own
@@ -142,9 +134,9 @@ MeshValidation asTiled(const TriangleMesh& piece)
   return v;
 }
 
-FinishedPiece keptAsTiled(const TriangleMesh& piece, SurfaceFinish finish, std::string why)
+FinishedPiece keptAsTiled(const TriangleMesh& piece, const MeshValidation& tiled, SurfaceFinish finish, std::string why)
 {
-  return { piece, finish, std::move(why), 0, asTiled(piece) };
+  return { piece, finish, std::move(why), 0, tiled };
 }
 
 /** The remeshed, smoothed piece, if it is a valid surface of the tiled piece's topology (`reference`);
@@ -178,11 +170,11 @@ std::optional<FinishedPiece> remeshedPiece(const TriangleMesh& tiled, const Mesh
   return FinishedPiece{ std::move(remeshed), SurfaceFinish::Remeshed, {}, unsmoothedVertices, validation };
 }
 
-/** `volumeScale`: the piece's finished volume over its tiled one; `threads`: for the work inside the piece. */
-FinishedPiece finishPiece(const TriangleMesh& tiled, const SurfaceFinishingOptions& options, double volumeScale,
-                          unsigned int threads)
+/** `reference`: the piece's validation as tiled (asTiled); `volumeScale`: its finished volume over
+ *  its tiled one; `threads`: for the work inside the piece. */
+FinishedPiece finishPiece(const TriangleMesh& tiled, const MeshValidation& reference, const SurfaceFinishingOptions& options,
+                          double volumeScale, unsigned int threads)
 {
-  const MeshValidation reference = asTiled(tiled);
   FinishedPiece result{ tiled, SurfaceFinish::Tiled, {}, 0, {} };
   if (options.finish == SurfaceFinish::Remeshed)
   {
@@ -247,9 +239,8 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   const double volumeScale = targetVolume > 0.0 && std::abs(scale - 1.0) <= 0.25 ? scale : 1.0;
   const std::vector<TriangleMesh> tiledPieces = splitIntoPieces(tiling);
   std::vector<FinishedPiece> pieces(tiledPieces.size());
+  std::vector<MeshValidation> tiledValidations(tiledPieces.size());
   std::vector<char> speck(tiledPieces.size());
-  for (std::size_t p = 0; p < tiledPieces.size(); ++p)
-    speck[p] = isSpeck(tiledPieces[p], options.remeshing.targetEdgeLength);
   // The piece that holds most of the surface (often the only one) would keep one thread busy long
   // after the others are done: it gets the threads for the work inside it.
   auto innerThreads = [&](std::size_t p) {
@@ -258,12 +249,14 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   parallelFor(tiledPieces.size(), threads,
               [&](std::size_t p)
               {
+                tiledValidations[p] = asTiled(tiledPieces[p]);
                 // A speck of a few voxels is a couple of target edges across: remeshing or smoothing
                 // can only collapse it. It stays as tiled, as asked.
+                speck[p] = isSpeck(tiledValidations[p], options.remeshing.targetEdgeLength);
                 if (speck[p])
-                  pieces[p] = keptAsTiled(tiledPieces[p], options.finish, {});
+                  pieces[p] = keptAsTiled(tiledPieces[p], tiledValidations[p], options.finish, {});
                 else
-                  pieces[p] = finishPiece(tiledPieces[p], options, volumeScale, innerThreads(p));
+                  pieces[p] = finishPiece(tiledPieces[p], tiledValidations[p], options, volumeScale, innerThreads(p));
               });
   result.smallPiecesAsTiled = static_cast<std::size_t>(std::count(speck.begin(), speck.end(), 1));
 
@@ -282,7 +275,8 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
     for (const auto& [first, second] : crossing)
       for (const std::size_t p : { first, second })
         if (pieces[p].finish != SurfaceFinish::Tiled)
-          pieces[p] = keptAsTiled(tiledPieces[p], SurfaceFinish::Tiled, "it crossed another piece once finished");
+          pieces[p] = keptAsTiled(tiledPieces[p], tiledValidations[p], SurfaceFinish::Tiled,
+                                  "it crossed another piece once finished");
   }
   std::vector<MeshValidation> validations;
   std::vector<const TriangleMesh*> finishedPieces;

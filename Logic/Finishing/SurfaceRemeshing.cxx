@@ -250,8 +250,7 @@ TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions
     MeshRegion whole{ mesh, {} };
     for (std::size_t v = 0; v < mesh.points.size(); ++v)
       whole.origin.push_back(static_cast<std::int32_t>(v));
-    return withoutUnusedVertices(reassembleRegions(mesh, std::vector<int>(mesh.triangles.size(), 0),
-                                                   { remeshRegion(whole, options, tree, threads) }));
+    return remeshRegion(whole, options, tree, threads).mesh;
   }
   int slabs = 0;
   const std::vector<int> slabOf = slabRegions(mesh, perRegion, slabs);

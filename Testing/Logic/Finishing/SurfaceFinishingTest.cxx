@@ -168,6 +168,9 @@ TEST(SurfaceRemeshing, InSlabsAndSeamBandsLikeAWholeRemesh)
   EXPECT_LT(v.fractionAnglesBelow30, r.fractionAnglesBelow30 + 0.005);
   EXPECT_GT(v.minAngleDegrees, 0.8 * r.minAngleDegrees);
   EXPECT_LT(meanRadiusError(remeshed, radius), 0.02);
+  // Volume: within 0.5% of the sphere's (the triangles are chords of it) and 0.1% of the whole remesh's.
+  EXPECT_NEAR(v.volume / (4.0 / 3.0 * M_PI * radius * radius * radius), 1.0, 0.005);
+  EXPECT_NEAR(v.volume / r.volume, 1.0, 0.001);
 }
 
 TEST(SurfaceRemeshing, RefusesANonManifoldMeshAndABadLength)
