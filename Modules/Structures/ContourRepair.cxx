@@ -19,6 +19,10 @@ constexpr double Scale = 1e4;
 // Where pieces meet at a point they are pulled apart by this much (mm).
 constexpr double Separation = 1.5e-3;
 
+// Farthest a contour point may lie from the origin (mm): Clipper holds integers up to 4.6e18,
+// and the points are scaled by Scale. A kilometre's worth of margin over any anatomy in a file.
+constexpr double Reach = 1e6;
+
 ClipperLib::Paths toPaths(const std::vector<Polygon2>& contours)
 {
   ClipperLib::Paths paths;
@@ -26,6 +30,10 @@ ClipperLib::Paths toPaths(const std::vector<Polygon2>& contours)
   {
     ClipperLib::Path path;
     path.reserve(contour.size());
+    for (const Point2& p : contour)
+      if (!(std::abs(p.x) <= Reach && std::abs(p.y) <= Reach))
+        throw Error("a contour point lies " + std::to_string(std::max(std::abs(p.x), std::abs(p.y))) +
+                    " mm from the origin, beyond the 1 km any anatomy lies within");
     for (const Point2& p : contour)
       path.push_back({ static_cast<ClipperLib::cInt>(std::llround(p.x * Scale)),
                        static_cast<ClipperLib::cInt>(std::llround(p.y * Scale)) });

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace slicemesh::testing
 {
 namespace
@@ -87,6 +89,16 @@ TEST(ContourRepair, OverlappingContoursFollowTheEvenOddRule)
   const std::vector<Polygon2> region = evenOddRegion({ a, b });
   EXPECT_TRUE(contourCrossings(region).empty());
   EXPECT_NEAR(nestedArea(region), 100.0, 0.1);
+}
+
+TEST(ContourRepair, APointFarBeyondAnyAnatomyIsAnErrorNotACrash)
+{
+  // 6.7e31 mm (a fuzzed file's coordinate): too large for the integers of the polygon booleans.
+  const Polygon2 far{ { 0, 0 }, { 4, 0 }, { 6.7e31, 4 }, { 0, 4 } };
+  EXPECT_THROW(evenOddRegion({ far }), Error);
+  const Polygon2 notANumber{ { 0, 0 }, { 4, 0 }, { std::nan(""), 4 }, { 0, 4 } };
+  EXPECT_THROW(evenOddRegion({ notANumber }), Error);
+  EXPECT_NO_THROW(evenOddRegion({ Polygon2{ { 9e5, 0 }, { 9e5 + 4, 0 }, { 9e5 + 4, 4 }, { 9e5, 4 } } }));
 }
 
 TEST(ContourRepair, CleanSlicesAreKeptExactly)
