@@ -61,9 +61,16 @@ std::optional<std::string> legacyCellListFault(const std::string& path)
     keyword = lowercase(keyword);
     if (keyword != "vertices" && keyword != "lines" && keyword != "polygons" && keyword != "triangle_strips")
       continue;
-    if (!(words >> cells >> size))
-      continue; // VTK stops there with an error of its own
     const std::string list = "the " + keyword + " list";
+    std::string cellsWord, sizeWord, extra;
+    if (!(words >> cellsWord >> sizeWord))
+      continue; // VTK stops there with an error of its own
+    // Two whole numbers and nothing else: VTK takes the digits of "12@" and then reads past the list.
+    const std::optional<long long> declaredCells = integer(cellsWord), declaredSize = integer(sizeWord);
+    if (!declaredCells || !declaredSize || (words >> extra))
+      return list + " does not begin with two whole numbers";
+    cells = *declaredCells;
+    size = *declaredSize;
     if (size < 0 || cells < 0)
       return list + " declares a negative size";
     // The values, read one by one: a declared size larger than the file costs no memory.

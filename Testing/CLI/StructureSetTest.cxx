@@ -305,10 +305,12 @@ TEST(StructureSet, FilesThatAreNoStructureSetOrAreCutShortFailWithOneLineAndWrit
   std::ofstream(folder / "short.vtk") << points << "LINES 1 34\n5 0 1 2 3 0\n";
   std::ofstream(folder / "overrun.vtk") << points << "LINES 1 6\n9 0 1 2 3 0\n";
   std::ofstream(folder / "point.vtk") << points << "LINES 1 6\n5 0 1 2 7 0\n";
+  // A list header with a stray character after its size (VTK 9.1 read past the list and crashed).
+  std::ofstream(folder / "header.vtk") << points << "LINES 1 6@\n5 0 1 2 3 0\n";
   for (const std::string& arguments :
        { quoted((folder / "cut.dcm").string()), "--inputContours " + quoted((folder / "plain.txt").string()),
          quoted((folder / "short.vtk").string()), quoted((folder / "overrun.vtk").string()),
-         quoted((folder / "point.vtk").string()),
+         quoted((folder / "point.vtk").string()), quoted((folder / "header.vtk").string()),
          "--contourFormat RTSTRUCT " + quoted((folder / "text.json").string()), quoted((folder / "text.json").string()) })
   {
     const fs::path out = folder / "out";
