@@ -62,12 +62,17 @@ std::optional<std::string> legacyCellListFault(const std::string& path)
     if (keyword != "vertices" && keyword != "lines" && keyword != "polygons" && keyword != "triangle_strips")
       continue;
     const std::string list = "the " + keyword + " list";
-    std::string cellsWord, sizeWord, extra;
-    if (!(words >> cellsWord >> sizeWord))
-      continue; // VTK stops there with an error of its own
-    // Two whole numbers and nothing else: VTK takes the digits of "12@" and then reads past the list.
+    // The header's two numbers, as VTK reads them: the next two words, on this line or the next ones.
+    std::string cellsWord, sizeWord;
+    if (!(words >> cellsWord))
+      in >> cellsWord;
+    if (!(words >> sizeWord))
+      in >> sizeWord;
+    std::string rest;
+    std::getline(words, rest);
+    // Two whole numbers and nothing after them: VTK takes the digits of "12@" and then reads past the list.
     const std::optional<long long> declaredCells = integer(cellsWord), declaredSize = integer(sizeWord);
-    if (!declaredCells || !declaredSize || (words >> extra))
+    if (!declaredCells || !declaredSize || rest.find_first_not_of(" \t\r") != std::string::npos)
       return list + " does not begin with two whole numbers";
     cells = *declaredCells;
     size = *declaredSize;
