@@ -53,6 +53,13 @@ std::string headerField(const itk::MetaDataDictionary& dictionary, const std::st
   return value;
 }
 
+/** A field's value as an error message quotes it: on one line, at most 60 characters. */
+std::string quoted(const std::string& text)
+{
+  const std::string line = collapsedWhitespace(text);
+  return "'" + (line.size() > 60 ? line.substr(0, 57) + "..." : line) + "'";
+}
+
 /** An integer field; throws naming the field when it is not one. */
 long integerField(const std::string& path, const std::string& key, const std::string& text)
 {
@@ -60,7 +67,7 @@ long integerField(const std::string& path, const std::string& key, const std::st
   long value = 0;
   std::string rest;
   if (!(in >> value) || (in >> rest))
-    throw Error(path + ": header field " + key + " is '" + text + "', not an integer");
+    throw Error(path + ": header field " + key + " is " + quoted(text) + ", not an integer");
   return value;
 }
 
@@ -69,7 +76,7 @@ std::array<unsigned char, 4> colorField(const std::string& path, const std::stri
   std::istringstream in(text);
   double rgb[3];
   if (!(in >> rgb[0] >> rgb[1] >> rgb[2]))
-    throw Error(path + ": header field " + key + " is '" + text + "', not three numbers 0..1 (red green blue)");
+    throw Error(path + ": header field " + key + " is " + quoted(text) + ", not three numbers 0..1 (red green blue)");
   std::array<unsigned char, 4> rgba{ 0, 0, 0, 255 };
   for (int c = 0; c < 3; ++c)
     rgba[c] = static_cast<unsigned char>(std::lround(std::clamp(rgb[c], 0.0, 1.0) * 255.0));
