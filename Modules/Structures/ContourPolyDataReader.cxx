@@ -1,5 +1,6 @@
-// 3D Slicer's planar contour representation: a VTK polydata of closed polylines, one ROI per file.
-#include "LegacyCellLists.h"
+// 3D Slicer's planar contour representation: a VTK polydata of closed polylines, one ROI per file,
+// XML (.vtp, read by VTK) or legacy (.vtk, read by SliceMesh's own reader).
+#include "LegacyPolyDataReader.h"
 #include "StructureSet.h"
 
 #include <vtkCallbackCommand.h>
@@ -10,7 +11,6 @@
 #include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
-#include <vtkPolyDataReader.h>
 #include <vtkStringArray.h>
 #include <vtkXMLPolyDataReader.h>
 
@@ -37,12 +37,49 @@ std::string lowercase(std::string text)
   return text;
 }
 
-/** The ROI's name: the LabelName field SliceMesh writes, else the file name without its extensions. */
-std::string structureName(vtkPolyData* polyData, const std::string& path)
+/** The geometry of a VTK XML polydata file (.vtp), through VTK's reader. */
+PolyDataGeometry readXmlPolyData(const std::string& path)
 {
-  if (auto* names = vtkStringArray::SafeDownCast(polyData->GetFieldData()->GetAbstractArray("LabelName")))
-    if (names->GetNumberOfValues() > 0 && !names->GetValue(0).empty())
-      return names->GetValue(0);
+  std::string error;
+  vtkNew<vtkCallbackCommand> onError;
+  onError->SetCallback(recordError);
+  onError->SetClientData(&error);
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->AddObserver(vtkCommand::ErrorEvent, onError);
+  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, onError);
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPolyData* polyData = reader->GetOutput();
+  if (!error.empty() || !polyData)
+    throw Error("cannot read '" + path + "' as VTK polydata: " + (error.empty() ? "no data" : error.substr(0, error.find('\n'))));
+  PolyDataGeometry geometry;
+  geometry.points.resize(static_cast<std::size_t>(polyData->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < polyData->GetNumberOfPoints(); ++i)
+    polyData->GetPoint(i, geometry.points[static_cast<std::size_t>(i)].data());
+  auto cells = [](vtkCellArray* from, std::vector<std::vector<std::int64_t>>& to)
+  {
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType c = 0; from && c < from->GetNumberOfCells(); ++c)
+    {
+      from->GetCellAtId(c, ids);
+      to.emplace_back(ids->begin(), ids->end());
+    }
+  };
+  cells(polyData->GetLines(), geometry.lines);
+  cells(polyData->GetPolys(), geometry.polygons);
+  vtkFieldData* fields = polyData->GetFieldData();
+  for (int a = 0; a < fields->GetNumberOfArrays(); ++a)
+    if (auto* strings = vtkStringArray::SafeDownCast(fields->GetAbstractArray(a)))
+      if (strings->GetName() && strings->GetNumberOfValues() > 0)
+        geometry.fieldStrings.emplace(strings->GetName(), strings->GetValue(0));
+  return geometry;
+}
+
+/** The ROI's name: the LabelName field SliceMesh writes, else the file name without its extensions. */
+std::string structureName(const PolyDataGeometry& geometry, const std::string& path)
+{
+  if (const auto name = geometry.fieldStrings.find("LabelName"); name != geometry.fieldStrings.end() && !name->second.empty())
+    return name->second;
   std::string stem = std::filesystem::path(path).filename().string();
   return stem.substr(0, stem.find('.'));
 }
@@ -53,66 +90,35 @@ StructureSet readContourPolyData(const std::string& path)
 {
   if (!std::filesystem::is_regular_file(path))
     throw Error("cannot read '" + path + "': no such file");
-  std::string error;
-  vtkNew<vtkCallbackCommand> onError;
-  onError->SetCallback(recordError);
-  onError->SetClientData(&error);
-  vtkSmartPointer<vtkPolyData> polyData;
-  bool ras = false;
-  if (lowercase(std::filesystem::path(path).extension().string()) == ".vtp")
-  {
-    vtkNew<vtkXMLPolyDataReader> reader;
-    reader->AddObserver(vtkCommand::ErrorEvent, onError);
-    reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, onError);
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    polyData = reader->GetOutput();
-    if (auto* space = vtkStringArray::SafeDownCast(polyData->GetFieldData()->GetAbstractArray("SPACE")))
-      ras = space->GetNumberOfValues() > 0 && lowercase(space->GetValue(0)) == "ras";
-  }
-  else
-  {
-    if (const auto fault = legacyCellListFault(path))
-      throw Error("cannot read '" + path + "' as VTK polydata: " + *fault);
-    vtkNew<vtkPolyDataReader> reader;
-    reader->AddObserver(vtkCommand::ErrorEvent, onError);
-    reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, onError);
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    polyData = reader->GetOutput();
-    if (reader->GetHeader())
-      ras = lowercase(reader->GetHeader()).find("space=ras") != std::string::npos;
-  }
-  if (!error.empty() || !polyData)
-    throw Error("cannot read '" + path + "' as VTK polydata: " + (error.empty() ? "no data" : error.substr(0, error.find('\n'))));
+  const bool xml = lowercase(std::filesystem::path(path).extension().string()) == ".vtp";
+  const PolyDataGeometry geometry = xml ? readXmlPolyData(path) : readLegacyPolyData(path);
+  // 3D Slicer marks its scene space (RAS) by a SPACE field (XML) or in the title (legacy).
+  const auto space = geometry.fieldStrings.find("SPACE");
+  const bool ras = (space != geometry.fieldStrings.end() && lowercase(space->second) == "ras") ||
+                   lowercase(geometry.title).find("space=ras") != std::string::npos;
 
   PlanarStructure roi;
   roi.number = 1;
-  roi.name = structureName(polyData, path);
+  roi.name = structureName(geometry, path);
   std::size_t open = 0;
-  // RAS files (3D Slicer's scene space) are turned to LPS: x and y change sign.
+  // RAS files are turned to LPS: x and y change sign.
   const double sign = ras ? -1.0 : 1.0;
-  auto take = [&](vtkCellArray* cells, bool polygons)
+  auto take = [&](const std::vector<std::vector<std::int64_t>>& cells, bool polygons)
   {
-    if (!cells)
-      return;
-    vtkNew<vtkIdList> ids;
-    for (cells->InitTraversal(); cells->GetNextCell(ids);)
+    for (const std::vector<std::int64_t>& ids : cells)
     {
       Polygon3 contour;
-      for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
+      for (const std::int64_t id : ids)
       {
-        if (ids->GetId(i) < 0 || ids->GetId(i) >= polyData->GetNumberOfPoints())
-          throw Error("'" + path + "': a cell refers to point " + std::to_string(ids->GetId(i)) + " of " +
-                      std::to_string(polyData->GetNumberOfPoints()));
-        double p[3];
-        polyData->GetPoint(ids->GetId(i), p);
+        if (id < 0 || id >= static_cast<std::int64_t>(geometry.points.size()))
+          throw Error("'" + path + "': a cell refers to point " + std::to_string(id) + " of " +
+                      std::to_string(geometry.points.size()));
+        const std::array<double, 3>& p = geometry.points[static_cast<std::size_t>(id)];
         contour.push_back({ sign * p[0], sign * p[1], p[2] });
       }
-      const bool closed = polygons || (ids->GetNumberOfIds() > 3 &&
-                                       (ids->GetId(0) == ids->GetId(ids->GetNumberOfIds() - 1) ||
-                                        (contour.front().x == contour.back().x && contour.front().y == contour.back().y &&
-                                         contour.front().z == contour.back().z)));
+      const bool closed = polygons || (ids.size() > 3 && (ids.front() == ids.back() || (contour.front().x == contour.back().x &&
+                                                                                         contour.front().y == contour.back().y &&
+                                                                                         contour.front().z == contour.back().z)));
       if (!closed)
       {
         ++open;
@@ -121,8 +127,8 @@ StructureSet readContourPolyData(const std::string& path)
       roi.contours.push_back(std::move(contour));
     }
   };
-  take(polyData->GetLines(), false);
-  take(polyData->GetPolys(), true);
+  take(geometry.lines, false);
+  take(geometry.polygons, true);
   if (open > 0)
     roi.notes.push_back(std::to_string(open) + " open polyline(s) skipped: only closed contours enclose a volume");
   StructureSet set;

@@ -309,11 +309,13 @@ TEST(StructureSet, FilesThatAreNoStructureSetOrAreCutShortFailWithOneLineAndWrit
   std::ofstream(folder / "header.vtk") << points << "LINES 1 6@\n5 0 1 2 3 0\n";
   // The header's size on the next line, as VTK reads it, and the list then short of it.
   std::ofstream(folder / "split.vtk") << points << "LINES 52\n 12 0 1 2 3 0\n5 0 1 2 3\n";
+  // A keyword with a stray character (VTK 9.1 took it for LINES and read past its buffer).
+  std::ofstream(folder / "keyword.vtk") << points << "LINES^ 2 12\n5 0 1 2 300\n5 4 5 6 7 4\n";
   for (const std::string& arguments :
        { quoted((folder / "cut.dcm").string()), "--inputContours " + quoted((folder / "plain.txt").string()),
          quoted((folder / "short.vtk").string()), quoted((folder / "overrun.vtk").string()),
          quoted((folder / "point.vtk").string()), quoted((folder / "header.vtk").string()),
-         quoted((folder / "split.vtk").string()),
+         quoted((folder / "split.vtk").string()), quoted((folder / "keyword.vtk").string()),
          "--contourFormat RTSTRUCT " + quoted((folder / "text.json").string()), quoted((folder / "text.json").string()) })
   {
     const fs::path out = folder / "out";

@@ -7,6 +7,8 @@
 #include "StructureSetWriter.h"
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -42,10 +44,40 @@ void writeStructureSet(const fs::path& path)
   writeRTStructureSet(path.string(), { ring, keyhole }, { { 2, "POINT", { { 23, 3, 0 } } } });
 }
 
-void writePolyData(const fs::path& legacy, const fs::path& xml)
+/** Appends the value's bytes, most significant first, as the legacy binary format stores them. */
+template <typename T>
+void appendBigEndian(std::string& bytes, T value)
 {
-  std::ofstream(legacy) << "# vtk DataFile Version 4.2\nRing SPACE=LPS\nASCII\nDATASET POLYDATA\nPOINTS 8 double\n"
-                           "0 0 0 4 0 0 4 4 0 0 4 0 0 0 2 4 0 2 4 4 2 0 4 2\nLINES 2 12\n5 0 1 2 3 0\n5 4 5 6 7 4\n";
+  unsigned char raw[sizeof(T)];
+  std::memcpy(raw, &value, sizeof(T));
+  for (std::size_t i = sizeof(T); i-- > 0;)
+    bytes += static_cast<char>(raw[i]);
+}
+
+/** Two square contours as legacy polydata of format 4 (ASCII and binary) and 5, and as XML. */
+void writePolyData(const fs::path& folder)
+{
+  const int corners[8][3] = { { 0, 0, 0 }, { 4, 0, 0 }, { 4, 4, 0 }, { 0, 4, 0 }, { 0, 0, 2 }, { 4, 0, 2 }, { 4, 4, 2 }, { 0, 4, 2 } };
+  const int cells[12] = { 5, 0, 1, 2, 3, 0, 5, 4, 5, 6, 7, 4 };
+  std::ofstream(folder / "contours.vtk") << "# vtk DataFile Version 4.2\nRing SPACE=LPS\nASCII\nDATASET POLYDATA\nPOINTS 8 double\n"
+                                            "0 0 0 4 0 0 4 4 0 0 4 0 0 0 2 4 0 2 4 4 2 0 4 2\nLINES 2 12\n5 0 1 2 3 0\n5 4 5 6 7 4\n";
+  std::ofstream(folder / "contours-5.vtk") << "# vtk DataFile Version 5.1\nRing\nASCII\nDATASET POLYDATA\nFIELD FieldData 1\n"
+                                              "LabelName 1 1 string\nLeft%20ring\n\nPOINTS 8 float\n"
+                                              "0 0 0 4 0 0 4 4 0 0 4 0 0 0 2 4 0 2 4 4 2 0 4 2\nLINES 3 10\n"
+                                              "OFFSETS vtktypeint64\n0 5 10\nCONNECTIVITY vtktypeint64\n0 1 2 3 0 4 5 6 7 4\n"
+                                              "POINT_DATA 8\n";
+  std::string binary = "# vtk DataFile Version 4.2\nRing\nBINARY\nDATASET POLYDATA\nFIELD FieldData 1\nLabelName 1 1 string\n";
+  binary += static_cast<char>(0xC0 | 4); // a string of 4 bytes
+  binary += "Ring\nPOINTS 8 float\n";
+  for (const auto& corner : corners)
+    for (const int c : corner)
+      appendBigEndian(binary, static_cast<float>(c));
+  binary += "\nLINES 2 12\n";
+  for (const int value : cells)
+    appendBigEndian(binary, static_cast<std::int32_t>(value));
+  binary += "\n";
+  std::ofstream(folder / "contours-binary.vtk", std::ios::binary) << binary;
+  const fs::path xml = folder / "contours.vtp";
   std::ofstream(xml) << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
                         "<PolyData><Piece NumberOfPoints=\"8\" NumberOfVerts=\"0\" NumberOfLines=\"2\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
                         "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">"
@@ -89,7 +121,7 @@ int main(int argc, char** argv)
   const fs::path folder(argv[1]);
   fs::create_directories(folder);
   writeStructureSet(folder / "structure-set.dcm");
-  writePolyData(folder / "contours.vtk", folder / "contours.vtp");
+  writePolyData(folder);
   writeJson(folder / "contours.json");
   writeSegmentations(folder / "segmentation.seg.nrrd", folder / "segmentation-seg.dcm");
   return 0;

@@ -12,6 +12,8 @@
 #include <dcmtk/dcmdata/dcuid.h>
 
 #include <vtkCellArray.h>
+#include <vtkIntArray.h>
+#include <vtkPointData.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -245,6 +247,129 @@ TEST(StructureSetReader, ReadsSlicerPlanarContoursFromLegacyAndXmlPolyData)
     EXPECT_NEAR(roi.contours[1][0].x, sign * 9.0, 1e-6);
     EXPECT_NEAR(roi.contours[1][0].y, sign * 5.0, 1e-6);
     EXPECT_NEAR(roi.contours[1][0].z, 2.0, 1e-6);
+  }
+}
+
+TEST(StructureSetReader, ReadsLegacyPolyDataAsVtkWritesItInEitherFormatAsciiOrBinary)
+{
+  const fs::path dir = folder("legacyFormats");
+  // Two closed contours, one as a polygon, in float and double points, with a named ROI and an
+  // integer field and per-point values the reader reads past.
+  for (const int dataType : { VTK_FLOAT, VTK_DOUBLE })
+  {
+    vtkNew<vtkPoints> points;
+    points->SetDataType(dataType);
+    vtkNew<vtkCellArray> lines, polygons;
+    for (int k = 0; k < 2; ++k)
+    {
+      std::vector<vtkIdType> ids;
+      for (const Point3& p : circle(-3.25, 7.5, -1.5 + 2.0 * k, 6.0, 24))
+        ids.push_back(points->InsertNextPoint(p.x, p.y, p.z));
+      if (k == 0)
+      {
+        ids.push_back(ids.front());
+        lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+      }
+      else
+        polygons->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    }
+    vtkNew<vtkPolyData> polyData;
+    polyData->SetPoints(points);
+    polyData->SetLines(lines);
+    polyData->SetPolys(polygons);
+    vtkNew<vtkStringArray> name;
+    name->SetName("LabelName");
+    name->InsertNextValue("Left lung 2%");
+    polyData->GetFieldData()->AddArray(name);
+    vtkNew<vtkIntArray> label;
+    label->SetName("Label");
+    label->InsertNextValue(12);
+    polyData->GetFieldData()->AddArray(label);
+    vtkNew<vtkIntArray> perPoint;
+    perPoint->SetName("index");
+    for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+      perPoint->InsertNextValue(static_cast<int>(i));
+    polyData->GetPointData()->AddArray(perPoint);
+
+    for (const int version : { vtkDataWriter::VTK_LEGACY_READER_VERSION_4_2, vtkDataWriter::VTK_LEGACY_READER_VERSION_5_1 })
+      for (const bool binary : { false, true })
+      {
+        const std::string file = "roi" + std::to_string(dataType) + "_" + std::to_string(version) + (binary ? "b" : "a") + ".vtk";
+        vtkNew<vtkPolyDataWriter> writer;
+        writer->SetFileName((dir / file).c_str());
+        writer->SetFileVersion(version);
+        if (binary)
+          writer->SetFileTypeToBinary();
+        writer->SetInputData(polyData);
+        ASSERT_EQ(writer->Write(), 1) << file;
+
+        const StructureSet set = readStructureSet((dir / file).string());
+        ASSERT_EQ(set.structures.size(), 1u) << file;
+        const PlanarStructure& roi = set.structures[0];
+        EXPECT_EQ(roi.name, "Left lung 2%") << file;
+        ASSERT_EQ(roi.contours.size(), 2u) << file;
+        EXPECT_EQ(roi.contours[0].size(), 25u) << file;
+        EXPECT_EQ(roi.contours[1].size(), 24u) << file;
+        EXPECT_TRUE(roi.notes.empty()) << file;
+        for (std::size_t c = 0; c < 2; ++c)
+          for (std::size_t i = 0; i < 24; ++i)
+          {
+            double expected[3];
+            points->GetPoint(static_cast<vtkIdType>(24 * c + i), expected);
+            // Binary values are exact; VTK writes ASCII floats with 6 digits and doubles with 11.
+            const double tolerance = binary ? 0.0 : dataType == VTK_FLOAT ? 1e-4 : 1e-9;
+            EXPECT_NEAR(roi.contours[c][i].x, expected[0], tolerance) << file;
+            EXPECT_NEAR(roi.contours[c][i].y, expected[1], tolerance) << file;
+            EXPECT_NEAR(roi.contours[c][i].z, expected[2], tolerance) << file;
+          }
+      }
+  }
+}
+
+TEST(StructureSetReader, MalformedLegacyPolyDataIsAOneLineError)
+{
+  const fs::path dir = folder("legacyMalformed");
+  const std::string header = "# vtk DataFile Version 4.2\nRing\nASCII\nDATASET POLYDATA\n";
+  const std::string points = header + "POINTS 4 double\n0 0 0 4 0 0 4 4 0 0 4 0\n";
+  const std::string header5 = "# vtk DataFile Version 5.1\nRing\nASCII\nDATASET POLYDATA\n";
+  const std::vector<std::pair<std::string, std::string>> files = {
+    { "keyword", points + "LINES^ 2 12\n5 0 1 2 300\n5 4 5 6 7 4\n" }, // VTK 9.1 read past its buffer
+    { "short", points + "LINES 1 34\n5 0 1 2 3 0\n" },
+    { "overrun", points + "LINES 1 6\n9 0 1 2 3 0\n" },
+    { "cellCount", points + "LINES 2 6\n5 0 1 2 3 0\n" },
+    { "stray", points + "LINES 1 6@\n5 0 1 2 3 0\n" },
+    { "negative", points + "LINES -1 6\n5 0 1 2 3 0\n" },
+    { "fewPoints", header + "POINTS 4 double\n0 0 0 4 0 0 4\n" },
+    { "pointType", header + "POINTS 4 bit\n0 0 0 4 0 0 4 4 0 0 4 0\n" },
+    { "notANumber", header + "POINTS 1 double\n0 zero 0\n" },
+    { "grid", "# vtk DataFile Version 4.2\nRing\nASCII\nDATASET STRUCTURED_POINTS\n" },
+    { "encoding", "# vtk DataFile Version 4.2\nRing\nEBCDIC\nDATASET POLYDATA\n" },
+    { "noHeader", "vtk DataFile Version 4.2\nRing\nASCII\nDATASET POLYDATA\n" },
+    { "titleOnly", "# vtk DataFile Version 4.2\n" },
+    { "offsetsFall", header5 + "POINTS 4 double\n0 0 0 4 0 0 4 4 0 0 4 0\nLINES 3 5\nOFFSETS vtktypeint64\n0 5 2\n"
+                                "CONNECTIVITY vtktypeint64\n0 1 2 3 0\n" },
+    { "offsetsBeyond", header5 + "POINTS 4 double\n0 0 0 4 0 0 4 4 0 0 4 0\nLINES 2 5\nOFFSETS vtktypeint64\n0 9\n"
+                                  "CONNECTIVITY vtktypeint64\n0 1 2 3 0\n" },
+    { "noOffsets", header5 + "POINTS 4 double\n0 0 0 4 0 0 4 4 0 0 4 0\nLINES 2 5\n0 5\n" },
+    { "binaryBeyond", "# vtk DataFile Version 4.2\nRing\nBINARY\nDATASET POLYDATA\nPOINTS 100000000 float\n\x01\x02\n" },
+    { "stringBeyond", "# vtk DataFile Version 4.2\nRing\nBINARY\nDATASET POLYDATA\nFIELD FieldData 1\n"
+                      "LabelName 1 1 string\n\x7f\xff\xff\xff\x01\n" },
+  };
+  for (const auto& [name, text] : files)
+  {
+    const fs::path path = dir / (name + ".vtk");
+    writeText(path, text);
+    try
+    {
+      const StructureSet set = readStructureSet(path.string());
+      ADD_FAILURE() << name << ": read without an error";
+    }
+    catch (const Error& error)
+    {
+      const std::string message = error.what();
+      EXPECT_EQ(message.find('\n'), std::string::npos) << name << ": " << message;
+      EXPECT_NE(message.find(path.string()), std::string::npos) << name << ": " << message;
+    }
   }
 }
 
