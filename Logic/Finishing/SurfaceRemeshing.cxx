@@ -12,6 +12,8 @@
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 
 #include <cmath>
+#include <deque>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -155,6 +157,64 @@ struct NoProjection
   Kernel::Point_3 operator()(Vertex) const { return CGAL::ORIGIN; }
 };
 
+Kernel::Point_3 unknownPoint()
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return { nan, nan, nan };
+}
+
+bool known(const Kernel::Point_3& p)
+{
+  return !std::isnan(p.x());
+}
+
+/** Moves every vertex but the border's to its closest point on the input piece (`tree`), and records
+ *  it in `onInput`. The search starts from the vertex's last point on the input, or for a vertex a
+ *  split made, a neighbour's: the relaxation moved it a fraction of an edge from there, so the tree
+ *  is searched only within that distance. (Without a hint CGAL first looks for one in a k-d tree of
+ *  all triangles, which took most of the projection's time.) A vertex with no hint at all (none in
+ *  its connected piece has one, which the remesh does not make) is still projected right, only slowly. */
+template <typename PointMap>
+void projectOntoInput(SurfaceMesh& surface, PointMap onInput, const Tree& tree, unsigned int threads)
+{
+  const std::size_t vertexCount = surface.number_of_vertices();
+  std::vector<Kernel::Point_3> hints(vertexCount);
+  std::deque<Vertex> reached;
+  for (Vertex v : surface.vertices())
+  {
+    hints[v.idx()] = onInput[v];
+    if (known(hints[v.idx()]))
+      reached.push_back(v);
+  }
+  // A long edge split several times leaves new vertices whose neighbours are new too: each takes
+  // the hint of the nearest vertex, in edges, that has one.
+  for (; !reached.empty(); reached.pop_front())
+  {
+    const Vertex v = reached.front();
+    if (surface.is_isolated(v))
+      continue;
+    for (Vertex u : CGAL::vertices_around_target(surface.halfedge(v), surface))
+      if (!known(hints[u.idx()]))
+      {
+        hints[u.idx()] = hints[v.idx()];
+        reached.push_back(u);
+      }
+  }
+  parallelForRanges(vertexCount, threads,
+                    [&](std::size_t first, std::size_t last)
+                    {
+                      for (std::size_t index = first; index < last; ++index)
+                      {
+                        const Vertex v(static_cast<SurfaceMesh::size_type>(index));
+                        if (surface.is_border(v))
+                          continue;
+                        const Kernel::Point_3& p = surface.point(v);
+                        surface.point(v) = known(hints[index]) ? tree.closest_point(p, hints[index]) : tree.closest_point(p);
+                        onInput[v] = surface.point(v);
+                      }
+                    });
+}
+
 /** Remeshes one region of the input piece (all of it, or a slab or band of it): per round, CGAL's
  *  split, collapse and flip, then our own relaxation sweep and the projection onto the input piece
  *  (`tree`). The region's border, where it meets the rest of the piece, is kept exactly: its edges
@@ -181,6 +241,10 @@ MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions&
           for (SurfaceMesh::Halfedge_index h : CGAL::halfedges_around_face(surface.halfedge(f), surface))
             constrained[surface.edge(h)] = true;
     }
+  // Every vertex starts on the input piece (the tiling, or slabs already projected onto it).
+  auto onInput = surface.add_property_map<Vertex, Kernel::Point_3>("v:on_input", unknownPoint()).first;
+  for (Vertex v : surface.vertices())
+    onInput[v] = surface.point(v);
   for (int round = 0; round < options.iterations; ++round)
   {
     PMP::isotropic_remeshing(faces(surface), options.targetEdgeLength, surface,
@@ -192,16 +256,7 @@ MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions&
                                .protect_constraints(bordered));
     surface.collect_garbage(); // the next round's face index map must be dense
     relaxTangentially(surface, threads);
-    parallelForRanges(surface.number_of_vertices(), threads,
-                      [&](std::size_t first, std::size_t last)
-                      {
-                        for (std::size_t index = first; index < last; ++index)
-                        {
-                          const Vertex v(static_cast<SurfaceMesh::size_type>(index));
-                          if (!surface.is_border(v))
-                            surface.point(v) = tree.closest_point(surface.point(v));
-                        }
-                      });
+    projectOntoInput(surface, onInput, tree, threads);
   }
   MeshRegion result;
   result.mesh = toTriangleMesh(surface);
@@ -242,7 +297,8 @@ TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions
 {
   const SurfaceMesh input = surfaceOf(mesh);
   Tree tree(faces(input).first, faces(input).second, input);
-  tree.accelerate_distance_queries();
+  // No k-d tree of hints: every query brings its own (projectOntoInput).
+  tree.do_not_accelerate_distance_queries();
   tree.build(); // before the queries run side by side
   const std::size_t perRegion = options.trianglesPerRegion;
   if (perRegion == 0 || mesh.triangles.size() < 2 * perRegion)
