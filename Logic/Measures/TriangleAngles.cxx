@@ -33,8 +33,12 @@ std::array<double, 3> triangleAngles(const Point3& a, const Point3& b, const Poi
 
 double smallestAngle(const Point3& a, const Point3& b, const Point3& c)
 {
-  const std::array<double, 3> angles = triangleAngles(a, b, c);
-  return std::min({ angles[0], angles[1], angles[2] });
+  // The corner opposite the shortest edge (law of sines): one arc tangent instead of three, in the
+  // tiling's refinement and flips, which ask for it of every triangle, round after round.
+  const double ab = squaredDistance(a, b), bc = squaredDistance(b, c), ca = squaredDistance(c, a);
+  if (bc <= ca && bc <= ab)
+    return angleAt(a, b, c);
+  return ca <= ab ? angleAt(b, c, a) : angleAt(c, a, b);
 }
 
 bool angleUnder(double radians, double boundDegrees)

@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 
 using namespace slicemesh;
 
@@ -41,6 +43,29 @@ TEST(TriangleAngles, RightEquilateralAndSliverTrianglesInSpace)
   const Point3 u{ -1, 0, 0 }, v{ 1, 0, 0 }, w{ 0, 1e-7, 0 };
   EXPECT_NEAR(smallestAngle(u, v, w) / std::atan(1e-7), 1.0, 1e-12);
   EXPECT_NEAR(degrees(triangleAngles(u, v, w)[2]), 180.0 - degrees(2.0 * std::atan(1e-7)), 1e-9);
+}
+
+TEST(TriangleAngles, TheSmallestAngleIsTheOneOppositeTheShortestEdge)
+{
+  // smallestAngle measures only that corner: the same as the least of the three, to rounding, on
+  // triangles of every shape (slivers, needles, nearly equilateral ones) in random position.
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> coordinate(-10.0, 10.0), squash(1e-6, 1.0);
+  for (int n = 0; n < 20000; ++n)
+  {
+    const Point3 a{ coordinate(random), coordinate(random), coordinate(random) };
+    Point3 b{ coordinate(random), coordinate(random), coordinate(random) };
+    Point3 c{ coordinate(random), coordinate(random), coordinate(random) };
+    if (n % 2 == 1) // c pulled towards ab's midpoint: a flat triangle
+    {
+      const double t = squash(random);
+      c = { 0.5 * (a.x + b.x) + t * (c.x - 0.5 * (a.x + b.x)), 0.5 * (a.y + b.y) + t * (c.y - 0.5 * (a.y + b.y)),
+            0.5 * (a.z + b.z) + t * (c.z - 0.5 * (a.z + b.z)) };
+    }
+    const std::array<double, 3> angles = triangleAngles(a, b, c);
+    const double least = std::min({ angles[0], angles[1], angles[2] });
+    EXPECT_NEAR(smallestAngle(a, b, c), least, 1e-13 * std::max(1.0, least)) << n;
+  }
 }
 
 TEST(TriangleAngles, DegenerateTriangles)
