@@ -125,18 +125,25 @@ struct FinishedPiece
   MeshValidation validation; ///< of `mesh`
 };
 
-/** The validation of a piece of a valid tiling as it was tiled: its self-intersections were checked
- *  with the whole tiling (none), so only the rest is measured. */
-MeshValidation asTiled(const TriangleMesh& piece)
+/** The validation of a piece of the tiling as it was tiled, without its self-intersection test:
+ *  when the whole tiling was checked (and had none) the piece has none either; otherwise the test is
+ *  run only if the piece is kept as tiled (complete). */
+MeshValidation asTiled(const TriangleMesh& piece, bool tilingChecked)
 {
   MeshValidation v = validateMeshTopology(piece);
-  v.selfIntersectionChecked = true;
+  v.selfIntersectionChecked = tilingChecked;
   return v;
+}
+
+/** The validation `v` of `mesh`, with its self-intersection test run if it was not. */
+MeshValidation complete(const TriangleMesh& mesh, const MeshValidation& v)
+{
+  return v.selfIntersectionChecked ? v : validateMesh(mesh);
 }
 
 FinishedPiece keptAsTiled(const TriangleMesh& piece, const MeshValidation& tiled, SurfaceFinish finish, std::string why)
 {
-  return { piece, finish, std::move(why), 0, tiled };
+  return { piece, finish, std::move(why), 0, complete(piece, tiled) };
 }
 
 /** The remeshed, smoothed piece, if it is a valid surface of the tiled piece's topology (`reference`);
@@ -203,7 +210,7 @@ FinishedPiece finishPiece(const TriangleMesh& tiled, const MeshValidation& refer
     return result;
   }
   result.why += (result.why.empty() ? "" : "; ") + std::string("smoothed: ") + why;
-  result.validation = reference;
+  result.validation = complete(tiled, reference);
   return result;
 }
 
@@ -221,11 +228,17 @@ TriangleMesh joinPieces(const std::vector<FinishedPiece>& pieces, std::vector<st
 FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& tilingValidation,
                               const SurfaceFinishingOptions& options, unsigned int threads, double targetVolume)
 {
+  // The tiling's self-intersections may not have been looked for yet (MeshedContours): it is
+  // checked here where it is handed back, and piece by piece where a piece is kept as tiled.
   FinishedSurface result{ tiling, tilingValidation, SurfaceFinish::Tiled, {} };
   if (options.finish == SurfaceFinish::Tiled)
-    return result;
-  if (!tilingValidation.valid())
   {
+    result.validation = complete(tiling, tilingValidation);
+    return result;
+  }
+  if (!tilingValidation.soundTopology() || (tilingValidation.selfIntersectionChecked && tilingValidation.selfIntersections > 0))
+  {
+    result.validation = complete(tiling, tilingValidation);
     result.fallback = "the tiling is not a valid surface, so it is not finished";
     return result;
   }
@@ -249,7 +262,7 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   parallelFor(tiledPieces.size(), threads,
               [&](std::size_t p)
               {
-                tiledValidations[p] = asTiled(tiledPieces[p]);
+                tiledValidations[p] = asTiled(tiledPieces[p], tilingValidation.selfIntersectionChecked);
                 // A speck of a few voxels is a couple of target edges across: remeshing or smoothing
                 // can only collapse it. It stays as tiled, as asked.
                 speck[p] = isSpeck(tiledValidations[p], options.remeshing.targetEdgeLength);
@@ -295,6 +308,7 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   if (!validation.valid() || validation.components != tilingValidation.components ||
       validation.eulerCharacteristic != tilingValidation.eulerCharacteristic)
   {
+    result.validation = complete(tiling, tilingValidation);
     result.fallback = "the finished pieces do not make a valid surface together (" + validation.summary() +
                       "), so the tiling is written";
     result.piecesByFinish[static_cast<std::size_t>(SurfaceFinish::Tiled)] = pieces.size();

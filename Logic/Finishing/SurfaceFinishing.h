@@ -62,8 +62,11 @@ SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing
  *  otherwise it is smoothed only (put back to the tiling where sheets cross, likewise), else left
  *  as tiled. Pieces that cross each other once finished go
  *  back to their tiled shape. `fallback` says how many pieces got less than asked, and why the first
- *  did. An invalid tiling is returned as it is. Pieces are finished on up to `threads` threads (0:
- *  every core); the result does not depend on the number. */
+ *  did. `tilingValidation` may be without the self-intersection test (validateMeshTopology): then
+ *  only what is kept as tiled is tested, and the finished pieces are tested in any case. A tiling
+ *  that is not a closed, manifold, oriented surface (or that crosses itself, when tested) is
+ *  returned as it is. The returned validation is always complete. Pieces are finished on up to
+ *  `threads` threads (0: every core); the result does not depend on the number. */
 FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& tilingValidation,
                               const SurfaceFinishingOptions& options, unsigned int threads = 0,
                               double targetVolume = 0.0);

@@ -36,11 +36,10 @@ struct MeshValidation
   bool closed() const { return boundaryEdges == 0; }
   bool manifold() const { return nonManifoldEdges == 0 && nonManifoldVertices == 0; }
   bool oriented() const { return inconsistentEdges == 0 && misorientedComponents == 0 && volume > 0.0; }
-  bool valid() const
-  {
-    return closed() && manifold() && oriented() && degenerateTriangles == 0 && selfIntersectionChecked &&
-           selfIntersections == 0;
-  }
+  /** Closed, manifold, oriented, without degenerate triangles: valid but for what the self-intersection
+   *  test says (or would say, when it was not run). */
+  bool soundTopology() const { return closed() && manifold() && oriented() && degenerateTriangles == 0; }
+  bool valid() const { return soundTopology() && selfIntersectionChecked && selfIntersections == 0; }
   /** One line such as "12840 triangles, closed, manifold, no self-intersections, volume 33400.1 mm^3". */
   std::string summary() const;
 };

@@ -74,7 +74,11 @@ void runMeshingStage(MeshingStage stage, MeshedContours& meshing, const std::fun
       break;
     }
     case MeshingStage::Validation:
-      meshing.tilingValidation = validateMesh(meshing.tiling);
+      // A tiling that is finished is not written as it is: its self-intersections are looked for
+      // only in what of it is kept (finishSurface). The test costs as much as the rest of the
+      // validation many times over.
+      meshing.tilingValidation = meshing.options.finishing.finish == SurfaceFinish::Tiled ? validateMesh(meshing.tiling)
+                                                                                        : validateMeshTopology(meshing.tiling);
       break;
     case MeshingStage::Finishing:
       meshing.surface =

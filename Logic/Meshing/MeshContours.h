@@ -51,6 +51,8 @@ struct MeshedContours
    *  intermediate sections (their shape between the slices is the implicit function's). */
   double targetVolume = 0.0;
   TriangleMesh tiling;             ///< stack frame, mm
+  /** The tiling's validation; its self-intersection test is run only when the tiling is the
+   *  surface asked for (finish Tiled); finishSurface checks what of a finished tiling it keeps. */
   MeshValidation tilingValidation;
   FinishedSurface surface;         ///< the finished mesh, its validation and what was applied
   MeshMeasures measures;

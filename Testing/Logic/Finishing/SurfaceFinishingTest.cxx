@@ -258,6 +258,48 @@ TEST(SurfaceFinishing, WhateverIsKeptIsValidWithTheTilingsTopology)
   }
 }
 
+TEST(SurfaceFinishing, ATilingNotYetTestedForSelfIntersectionsIsTestedWhereItIsKept)
+{
+  // The pipeline hands a tiling it finishes over without its self-intersection test. Finished, the
+  // result is what the fully tested tiling gives; kept as tiled, its validation is completed.
+  const TriangleMesh sphere = octaSphere(16, 5.0, 0.01, 1.0);
+  SurfaceFinishingOptions options;
+  options.remeshing.targetEdgeLength = 1.0;
+  const MeshValidation topology = validateMeshTopology(sphere);
+  ASSERT_FALSE(topology.selfIntersectionChecked);
+  const FinishedSurface untested = finishSurface(sphere, topology, options);
+  const FinishedSurface tested = finishSurface(sphere, validateMesh(sphere), options);
+  EXPECT_EQ(untested.finish, SurfaceFinish::Remeshed) << untested.fallback;
+  EXPECT_TRUE(untested.validation.valid()) << untested.validation.summary();
+  EXPECT_EQ(untested.mesh.triangles, tested.mesh.triangles);
+  options.finish = SurfaceFinish::Tiled;
+  const FinishedSurface tiled = finishSurface(sphere, topology, options);
+  EXPECT_TRUE(tiled.validation.selfIntersectionChecked);
+  EXPECT_TRUE(tiled.validation.valid()) << tiled.validation.summary();
+
+  // Two spheres that pass through each other, each closed and manifold: whatever is written comes
+  // with a complete validation that is the written mesh's own, and is valid or says why not.
+  TriangleMesh crossing = sphere;
+  const auto offset = static_cast<std::int32_t>(crossing.points.size());
+  for (const Point3& p : sphere.points)
+    crossing.points.push_back({ p.x + 5.0, p.y, p.z });
+  for (const Triangle& t : sphere.triangles)
+    crossing.triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+  for (const SurfaceFinish finish : { SurfaceFinish::Remeshed, SurfaceFinish::Smoothed, SurfaceFinish::Tiled })
+  {
+    options.finish = finish;
+    const MeshValidation crossingTopology = validateMeshTopology(crossing);
+    ASSERT_TRUE(crossingTopology.soundTopology()) << crossingTopology.summary();
+    const FinishedSurface finished = finishSurface(crossing, crossingTopology, options);
+    const MeshValidation own = validateMesh(finished.mesh);
+    EXPECT_TRUE(finished.validation.selfIntersectionChecked) << finishName(finish);
+    EXPECT_EQ(finished.validation.selfIntersections, own.selfIntersections) << finishName(finish);
+    EXPECT_EQ(finished.validation.valid(), own.valid()) << finishName(finish);
+    EXPECT_TRUE(own.valid() || !finished.fallback.empty() || finish == SurfaceFinish::Tiled) << finishName(finish);
+    EXPECT_GT(own.selfIntersections, 0u) << finishName(finish) << ": two spheres a radius apart cross whatever the finish";
+  }
+}
+
 TEST(SurfaceSmoothing, ASpeckTheFilterWouldCollapseKeepsItsShape)
 {
   // An octahedron: every vertex's neighbours average to the centre, so each lambda/mu pair scales
