@@ -6,6 +6,7 @@
 #include "Core/SpatialHash.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -27,6 +28,57 @@ std::vector<CDT::Edge> slab::finiteEdgesInStableOrder(const CDT& cdt)
       if (cdt.is_infinite(f->neighbor(i)) || f->vertex(CDT::cw(i))->info() < f->vertex(CDT::ccw(i))->info())
         edges.emplace_back(f, i);
   return edges;
+}
+
+std::vector<CDT::Edge> slab::finiteEdgesAround(const CDT& cdt, const std::vector<VertexHandle>& around)
+{
+  // Keyed by their ends' ids; an edge between two finite faces is taken from the face where it runs
+  // from the smaller id to the larger, as finiteEdgesInStableOrder takes it.
+  std::vector<std::pair<std::pair<int, int>, CDT::Edge>> keyed;
+  for (const FaceHandle f : finiteFacesAround(cdt, around))
+    for (int i = 0; i < 3; ++i)
+    {
+      const int a = f->vertex(CDT::cw(i))->info(), b = f->vertex(CDT::ccw(i))->info();
+      CDT::Edge edge(f, i);
+      if (a > b && !cdt.is_infinite(f->neighbor(i)))
+        edge = CDT::Edge(f->neighbor(i), cdt.mirror_index(f, i));
+      keyed.push_back({ { std::min(a, b), std::max(a, b) }, edge });
+    }
+  std::sort(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  keyed.erase(std::unique(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return x.first == y.first; }),
+              keyed.end());
+  std::vector<CDT::Edge> edges;
+  edges.reserve(keyed.size());
+  for (const auto& [key, edge] : keyed)
+    edges.push_back(edge);
+  return edges;
+}
+
+std::vector<FaceHandle> slab::finiteFacesAround(const CDT& cdt, const std::vector<VertexHandle>& around)
+{
+  std::vector<std::pair<std::array<int, 3>, FaceHandle>> keyed;
+  for (const VertexHandle v : around)
+  {
+    auto face = cdt.incident_faces(v), done = face;
+    if (face == nullptr)
+      continue;
+    do
+      if (!cdt.is_infinite(face))
+      {
+        std::array<int, 3> key{ face->vertex(0)->info(), face->vertex(1)->info(), face->vertex(2)->info() };
+        std::sort(key.begin(), key.end());
+        keyed.push_back({ key, face });
+      }
+    while (++face != done);
+  }
+  std::sort(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  keyed.erase(std::unique(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return x.first == y.first; }),
+              keyed.end());
+  std::vector<FaceHandle> faces;
+  faces.reserve(keyed.size());
+  for (const auto& [key, face] : keyed)
+    faces.push_back(face);
+  return faces;
 }
 
 void SlabOverlay::Impl::buildVertices()

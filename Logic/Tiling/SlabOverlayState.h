@@ -112,6 +112,12 @@ struct Sector
  *  addresses), so that flips and Steiner points, and so the mesh, are the same in every run. */
 std::vector<CDT::Edge> finiteEdgesInStableOrder(const CDT& cdt);
 
+/** The finite edges of the finite faces around `around`, each once, in the same kind of order. */
+std::vector<CDT::Edge> finiteEdgesAround(const CDT& cdt, const std::vector<VertexHandle>& around);
+
+/** The finite faces around `around`, each once, in an order that depends only on the triangulation. */
+std::vector<FaceHandle> finiteFacesAround(const CDT& cdt, const std::vector<VertexHandle>& around);
+
 class SpacingGrid; // SteinerPlacement.cxx: points placed so far, to keep new Steiner points apart
 
 } // namespace slab
@@ -213,7 +219,11 @@ struct SlabOverlay::Impl
   std::size_t refineBadTriangles(MeshBuilder& mesh, double minAngle, double edgeLength, std::size_t budget);
 
   // SurfaceMetricFlips.cxx: Lawson flips judged on the lifted triangles.
-  std::size_t flipTowardsSurfaceQuality(const MeshBuilder& mesh);
+  /** Flips every improving edge, or where the triangulation just changed, only those that the
+   *  change can have made improving: the edges around `around` to begin with, then wherever flips
+   *  lead. `touched`, when given, gets the vertices of every flipped pair of triangles. */
+  std::size_t flipTowardsSurfaceQuality(const MeshBuilder& mesh, const std::vector<slab::VertexHandle>* around = nullptr,
+                                        std::vector<slab::VertexHandle>* touched = nullptr);
 
   // SlabEmission.cxx: the lifted triangles, the switch fans and the walls, appended to the mesh.
   void emitTriangles(MeshBuilder& mesh, int rows, ReconstructionStatistics& statistics);

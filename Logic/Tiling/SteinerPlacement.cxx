@@ -332,27 +332,41 @@ std::size_t SlabOverlay::Impl::refineBadTriangles(MeshBuilder& mesh, double minA
   // the target gets the projection of its 3D circumcentre, lifted by the interpolant. Points go
   // only inside difference polygons (contour edges are shared with the next slab and stay whole),
   // so triangles held by short contour edges may stay bad; the budget bounds the work.
+  // The first round looks at every triangle; each later one only at the triangles around the
+  // vertices the round before inserted or flipped: elsewhere nothing changed, and a triangle that
+  // stayed bad had its candidate turned down already (the points placed only grow).
   std::size_t inserted = 0;
+  SpacingGrid placed(edgeLength);
+  std::vector<VertexHandle> changed;
   for (int round = 0; round < 12 && inserted < budget; ++round)
   {
-    SpacingGrid placed(edgeLength);
     std::vector<std::pair<Point2, double>> candidates; // point, the bad triangle's circumradius
-    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    auto consider = [&](FaceHandle f)
     {
       if (!isDifference(f))
-        continue;
+        return;
       const Point3 a = approximateLift(f, 0, mesh), b = approximateLift(f, 1, mesh), c = approximateLift(f, 2, mesh);
-      placed.add(a);
-      placed.add(b);
-      placed.add(c);
+      if (round == 0)
+      {
+        placed.add(a);
+        placed.add(b);
+        placed.add(c);
+      }
       if (smallestAngle(a, b, c) >= minAngle)
-        continue;
+        return;
       const Point3 center = circumcenter(a, b, c);
       const double radius = std::hypot(center.x - a.x, center.y - a.y, center.z - a.z);
       if (!std::isfinite(radius) || radius < 0.3 * edgeLength)
-        continue;
+        return;
       candidates.push_back({ { center.x, center.y }, radius });
-    }
+    };
+    if (round == 0)
+      for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+        consider(f);
+    else
+      for (const FaceHandle f : finiteFacesAround(cdt, changed))
+        consider(f);
+    const int firstNew = static_cast<int>(vertices.size());
     std::size_t added = 0;
     for (const auto& [p, radius] : candidates)
     {
@@ -372,9 +386,17 @@ std::size_t SlabOverlay::Impl::refineBadTriangles(MeshBuilder& mesh, double minA
       break;
     inserted += added;
     classify();
+    changed.clear();
+    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+      if (v->info() >= firstNew)
+        changed.push_back(v);
+    std::sort(changed.begin(), changed.end(), [](VertexHandle x, VertexHandle y) { return x->info() < y->info(); });
     // Insertion restores planar Delaunay around each new point; restore the surface metric too.
     if (liftOptions && liftOptions->surfaceMetricFlips)
-      flipTowardsSurfaceQuality(mesh);
+    {
+      const std::vector<VertexHandle> newVertices = changed;
+      flipTowardsSurfaceQuality(mesh, &newVertices, &changed);
+    }
   }
   return inserted;
 }

@@ -33,7 +33,8 @@ double normalsCosine(const Point3& a, const Point3& b, const Point3& c, const Po
 
 } // namespace
 
-std::size_t SlabOverlay::Impl::flipTowardsSurfaceQuality(const MeshBuilder& mesh)
+std::size_t SlabOverlay::Impl::flipTowardsSurfaceQuality(const MeshBuilder& mesh, const std::vector<VertexHandle>* around,
+                                                         std::vector<VertexHandle>* touched)
 {
   // The planar CDT minimises the Dirichlet energy of the height field (Rippa), but where the surface
   // climbs steeply between nearly parallel contours its triangles are slivers in 3D: Delaunay in
@@ -81,7 +82,9 @@ std::size_t SlabOverlay::Impl::flipTowardsSurfaceQuality(const MeshBuilder& mesh
   // The worst triangles' edges are taken first (the queue pops from the back): the flips then settle
   // in a better local optimum than in mesh order.
   std::vector<std::pair<double, CDT::Edge>> ranked;
-  for (const CDT::Edge& e : finiteEdgesInStableOrder(cdt))
+  // Away from a change every edge was left where no flip improves it: only the edges around the
+  // change are looked at first (the refinement's rounds, which insert a few points each).
+  for (const CDT::Edge& e : around ? finiteEdgesAround(cdt, *around) : finiteEdgesInStableOrder(cdt))
     if (!e.first->is_constrained(e.second) && isDifference(e.first) && !cdt.is_infinite(e.first->neighbor(e.second)))
     {
       const FaceHandle f = e.first, g = f->neighbor(e.second);
@@ -107,6 +110,8 @@ std::size_t SlabOverlay::Impl::flipTowardsSurfaceQuality(const MeshBuilder& mesh
     const VertexHandle a = f->vertex(i), b = g->vertex(cdt.mirror_index(f, i));
     cdt.flip(f, i);
     ++flips;
+    if (touched)
+      touched->insert(touched->end(), { a, b, u, v });
     for (VertexHandle w : { u, v })
     {
       queue.emplace_back(a, w);
