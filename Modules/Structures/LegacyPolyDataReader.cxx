@@ -135,62 +135,27 @@ public:
   /** count values of the type, ASCII or binary, as doubles. */
   std::vector<double> values(std::int64_t count, const ValueType& type, bool binary, const std::string& what)
   {
-    std::vector<double> read;
-    if (binary)
+    auto fromWord = [](const std::string& text) -> std::optional<double>
     {
-      skipLine();
-      checkBinaryRoom(count, type, what);
-      read.reserve(static_cast<std::size_t>(count));
-      for (std::int64_t n = 0; n < count; ++n, m_At += type.bytes)
-        read.push_back(binaryValue(type));
-      return read;
-    }
-    for (std::int64_t n = 0; n < count; ++n)
-    {
-      skipSpace();
-      if (m_At >= m_Bytes.size())
-        fail(what + " declares " + std::to_string(count) + " values but holds " + std::to_string(n));
-      const std::string text = word(what);
       char* end = nullptr;
       const double value = std::strtod(text.c_str(), &end);
-      if (end != text.c_str() + text.size())
-        fail(what + " holds '" + quotable(text) + "', not a number");
-      read.push_back(value);
-    }
-    return read;
+      return end == text.c_str() + text.size() ? std::optional<double>(value) : std::nullopt;
+    };
+    return valuesOf<double>(count, type, binary, what, "a number", fromWord, [&] { return binaryValue(type); });
   }
 
   /** count whole numbers of an integer type (point ids, offsets), ASCII or binary. */
   std::vector<std::int64_t> integers(std::int64_t count, const ValueType& type, bool binary, const std::string& what)
   {
-    std::vector<std::int64_t> read;
-    if (binary)
+    auto fromBytes = [&]
     {
-      skipLine();
-      checkBinaryRoom(count, type, what);
-      read.reserve(static_cast<std::size_t>(count));
-      for (std::int64_t n = 0; n < count; ++n, m_At += type.bytes)
-      {
-        const std::uint64_t raw = bigEndian(type.bytes);
-        if (!type.isSigned && raw > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
-          fail(what + " holds an id beyond any file's size");
-        const unsigned shift = static_cast<unsigned>(64 - 8 * type.bytes); // sign-extend
-        read.push_back(type.isSigned ? static_cast<std::int64_t>(raw << shift) >> shift : static_cast<std::int64_t>(raw));
-      }
-      return read;
-    }
-    for (std::int64_t n = 0; n < count; ++n)
-    {
-      skipSpace();
-      if (m_At >= m_Bytes.size())
-        fail(what + " declares " + std::to_string(count) + " values but holds " + std::to_string(n));
-      const std::string text = word(what);
-      const std::optional<std::int64_t> value = wholeNumber(text);
-      if (!value)
-        fail(what + " holds '" + quotable(text) + "', not a whole number");
-      read.push_back(*value);
-    }
-    return read;
+      const std::uint64_t raw = bigEndian(type.bytes);
+      if (!type.isSigned && raw > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
+        fail(what + " holds an id beyond any file's size");
+      const unsigned shift = static_cast<unsigned>(64 - 8 * type.bytes); // sign-extend
+      return type.isSigned ? static_cast<std::int64_t>(raw << shift) >> shift : static_cast<std::int64_t>(raw);
+    };
+    return valuesOf<std::int64_t>(count, type, binary, what, "a whole number", wholeNumber, fromBytes);
   }
 
   /** count strings of an array: one per line, %XX-escaped, in ASCII; length-prefixed in binary. */
@@ -208,6 +173,36 @@ private:
   {
     while (m_At < m_Bytes.size() && std::isspace(static_cast<unsigned char>(m_Bytes[m_At])))
       ++m_At;
+  }
+
+  /** count values: in ASCII the next words, each parsed by fromWord (empty: not a value of this kind);
+   *  in binary, from the next line on, each converted by fromBytes at the read position. */
+  template <typename T, typename FromWord, typename FromBytes>
+  std::vector<T> valuesOf(std::int64_t count, const ValueType& type, bool binary, const std::string& what,
+                          const char* kind, FromWord fromWord, FromBytes fromBytes)
+  {
+    std::vector<T> read;
+    if (binary)
+    {
+      skipLine();
+      checkBinaryRoom(count, type, what);
+      read.reserve(static_cast<std::size_t>(count));
+      for (std::int64_t n = 0; n < count; ++n, m_At += type.bytes)
+        read.push_back(fromBytes());
+      return read;
+    }
+    for (std::int64_t n = 0; n < count; ++n)
+    {
+      skipSpace();
+      if (m_At >= m_Bytes.size())
+        fail(what + " declares " + std::to_string(count) + " values but holds " + std::to_string(n));
+      const std::string text = word(what);
+      const std::optional<T> value = fromWord(text);
+      if (!value)
+        fail(what + " holds '" + quotable(text) + "', not " + kind);
+      read.push_back(*value);
+    }
+    return read;
   }
 
   void checkBinaryRoom(std::int64_t count, const ValueType& type, const std::string& what) const
