@@ -32,6 +32,8 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -107,10 +109,41 @@ Row slicerPipeline(const Phantom& phantom, const MaskVolume* mask)
   return row;
 }
 
+/** The grids of the targets table beyond the quality table's two: isotropic, near-isotropic
+ *  (slices up to 1.4 pixels thick, where the traced contours are or are just no longer resampled)
+ *  and thick-slice grids. */
+std::vector<BenchmarkGrid> targetGrids()
+{
+  return { { "0.5x0.5x0.5", { 0.5, 0.5, 0.5 } }, { "0.7x0.7x0.7", { 0.7, 0.7, 0.7 } },
+           { "0.5x0.5x0.7", { 0.5, 0.5, 0.7 } }, { "0.8x0.8x0.9", { 0.8, 0.8, 0.9 } },
+           { "0.7x0.7x1.5", { 0.7, 0.7, 1.5 } }, { "0.8x0.8x3", { 0.8, 0.8, 3.0 } },
+           { "0.9x0.9x2", { 0.9, 0.9, 2.0 } },   { "1x1x3", { 1.0, 1.0, 3.0 } } };
+}
+
+/** Grids written as "0.5x0.5x0.7,1x1x2.5" (mm, x by y by slice); empty when a grid does not parse. */
+std::optional<std::vector<BenchmarkGrid>> parsedGrids(const std::string& text)
+{
+  std::vector<BenchmarkGrid> grids;
+  std::stringstream list(text);
+  for (std::string name; std::getline(list, name, ',');)
+  {
+    BenchmarkGrid grid{ name, {} };
+    char x1 = 0, x2 = 0;
+    std::istringstream in(name);
+    if (!(in >> grid.spacing[0] >> x1 >> grid.spacing[1] >> x2 >> grid.spacing[2]) || x1 != 'x' || x2 != 'x' ||
+        !(in >> std::ws).eof() || !(grid.spacing[0] > 0.0 && grid.spacing[1] > 0.0 && grid.spacing[2] > 0.0))
+      return std::nullopt;
+    grids.push_back(grid);
+  }
+  if (grids.empty())
+    return std::nullopt;
+  return grids;
+}
+
 /** The default against Slicer's pipeline on grids and shapes beyond the table's: whether each
  *  target of the default holds (mean distance and triangles at most Slicer's, under 1% of triangles
  *  under 30 degrees, valid, enclosed volume at least as close to the voxels' as Slicer's). */
-std::string targetsTable()
+std::string targetsTable(const std::vector<BenchmarkGrid>& grids)
 {
   std::vector<NamedPhantom> phantoms = benchmarkPhantoms();
   phantoms.push_back({ "branching tubes r3", std::make_shared<TubeTree>(
@@ -120,11 +153,6 @@ std::string targetsTable()
                                                 3.0) });
   phantoms.push_back({ "thin plate 40x30x3 tilted", std::make_shared<Box>(Vector3(0, 0, 0), Vector3(20, 15, 1.5),
                                                                           Eigen::AngleAxisd(0.4, Vector3(1, 0, 0)).toRotationMatrix()) });
-  const std::vector<BenchmarkGrid> grids{ { "0.5x0.5x0.5", { 0.5, 0.5, 0.5 } },
-                                          { "0.7x0.7x1.5", { 0.7, 0.7, 1.5 } },
-                                          { "0.8x0.8x3", { 0.8, 0.8, 3.0 } },
-                                          { "0.9x0.9x2", { 0.9, 0.9, 2.0 } },
-                                          { "1x1x3", { 1.0, 1.0, 3.0 } } };
   std::string table = "| phantom | grid (mm) | mean dist: SliceMesh / Slicer (mm) | triangles: SliceMesh / Slicer | < 30° | "
                       "volume vs voxels: SliceMesh / Slicer | valid | targets |\n|---|---|---:|---:|---:|---:|---|---|\n";
   std::size_t met = 0, cases = 0;
@@ -203,7 +231,8 @@ std::string benchmarkDocument(const std::string& table, const std::string& ratio
          "and on shapes it does not list (branching tubes, a thin tilted plate). A case meets its targets when\n"
          "SliceMesh's mean distance and triangle count are at most Slicer's, under 1% of its triangles have an\n"
          "angle under 30°, it is valid, and its enclosed volume is at least as close to the voxels' volume as\n"
-         "Slicer's.\n\n" +
+         "Slicer's. `SliceMeshBenchmark --targets` prints this table alone, and `--targets --grids\n"
+         "0.6x0.6x1,1.2x1.2x2.5` the same for other grids (mm, x by y by slice).\n\n" +
          targets +
          "\nIntermediate sections (variational implicit function) on two circles 12 mm apart, sections until the\n"
          "slab is no thicker than twice the point spacing: the fit uses at most 600 centres, so its time does\n"
@@ -216,11 +245,32 @@ std::string benchmarkDocument(const std::string& table, const std::string& ratio
 int main(int argc, char* argv[])
 {
   // --targets: only the default's targets on the extra grids and shapes, printed, nothing written
-  // (the quick check of a change to the default).
+  // (the quick check of a change to the default); --grids picks other grids for it.
   if (argc > 1 && std::string(argv[1]) == "--targets")
   {
-    std::printf("%s", targetsTable().c_str());
+    std::vector<BenchmarkGrid> grids = targetGrids();
+    if (argc == 4 && std::string(argv[2]) == "--grids")
+    {
+      const auto parsed = parsedGrids(argv[3]);
+      if (!parsed)
+      {
+        std::fprintf(stderr, "SliceMeshBenchmark: --grids wants spacings such as 0.5x0.5x0.7,1x1x2.5 (mm)\n");
+        return 2;
+      }
+      grids = *parsed;
+    }
+    else if (argc != 2)
+    {
+      std::fprintf(stderr, "usage: SliceMeshBenchmark [document.md] | --targets [--grids 0.5x0.5x0.7,...]\n");
+      return 2;
+    }
+    std::printf("%s", targetsTable(grids).c_str());
     return 0;
+  }
+  if (argc > 2 || (argc == 2 && std::string(argv[1]).rfind("--", 0) == 0))
+  {
+    std::fprintf(stderr, "usage: SliceMeshBenchmark [document.md] | --targets [--grids 0.5x0.5x0.7,...]\n");
+    return 2;
   }
   const std::vector<NamedPhantom> phantoms = benchmarkPhantoms();
   const std::vector<BenchmarkGrid> grids = benchmarkGrids();
@@ -291,7 +341,7 @@ int main(int argc, char* argv[])
     sections += line;
   }
 
-  const std::string document = benchmarkDocument(table, ratios, targetsTable(), sections);
+  const std::string document = benchmarkDocument(table, ratios, targetsTable(targetGrids()), sections);
   std::printf("%s", document.c_str());
   const std::string path = argc > 1 ? argv[1] : SLICEMESH_SOURCE_DIR "/Documentation/Benchmark.md";
   // The scaling section (Utilities/scaling-benchmark.sh's) and what follows it (the profile) are kept.
