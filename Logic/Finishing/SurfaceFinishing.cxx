@@ -274,7 +274,8 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   result.smallPiecesAsTiled = static_cast<std::size_t>(std::count(speck.begin(), speck.end(), 1));
 
   // Pieces finished apart may meet (two pieces a voxel apart, each smoothed towards the other):
-  // those go back to their tiled shape, which the valid tiling keeps apart, until none cross. Each
+  // those go back to their tiled shape, which a valid tiling keeps apart, until none cross (pieces
+  // of a tiling that crosses itself still cross then, and the tiling is handed back below). Each
   // piece is checked already; only pieces whose boxes overlap are checked against each other.
   std::size_t crossingTriangles = 0;
   for (int round = 0;; ++round)
