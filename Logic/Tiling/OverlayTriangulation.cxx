@@ -30,6 +30,26 @@ std::vector<CDT::Edge> slab::finiteEdgesInStableOrder(const CDT& cdt)
   return edges;
 }
 
+namespace
+{
+
+/** The values, one per key, in key order: an order that depends on the vertex ids only, never on
+ *  where the triangulation's faces lie in memory. */
+template <typename Key, typename Value>
+std::vector<Value> inKeyOrder(std::vector<std::pair<Key, Value>> keyed)
+{
+  std::sort(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  keyed.erase(std::unique(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return x.first == y.first; }),
+              keyed.end());
+  std::vector<Value> values;
+  values.reserve(keyed.size());
+  for (auto& [key, value] : keyed)
+    values.push_back(value);
+  return values;
+}
+
+} // namespace
+
 std::vector<CDT::Edge> slab::finiteEdgesAround(const CDT& cdt, const std::vector<VertexHandle>& around)
 {
   // Keyed by their ends' ids; an edge between two finite faces is taken from the face where it runs
@@ -44,14 +64,7 @@ std::vector<CDT::Edge> slab::finiteEdgesAround(const CDT& cdt, const std::vector
         edge = CDT::Edge(f->neighbor(i), cdt.mirror_index(f, i));
       keyed.push_back({ { std::min(a, b), std::max(a, b) }, edge });
     }
-  std::sort(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  keyed.erase(std::unique(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return x.first == y.first; }),
-              keyed.end());
-  std::vector<CDT::Edge> edges;
-  edges.reserve(keyed.size());
-  for (const auto& [key, edge] : keyed)
-    edges.push_back(edge);
-  return edges;
+  return inKeyOrder(std::move(keyed));
 }
 
 std::vector<FaceHandle> slab::finiteFacesAround(const CDT& cdt, const std::vector<VertexHandle>& around)
@@ -71,14 +84,7 @@ std::vector<FaceHandle> slab::finiteFacesAround(const CDT& cdt, const std::vecto
       }
     while (++face != done);
   }
-  std::sort(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  keyed.erase(std::unique(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return x.first == y.first; }),
-              keyed.end());
-  std::vector<FaceHandle> faces;
-  faces.reserve(keyed.size());
-  for (const auto& [key, face] : keyed)
-    faces.push_back(face);
-  return faces;
+  return inKeyOrder(std::move(keyed));
 }
 
 void SlabOverlay::Impl::buildVertices()

@@ -1,6 +1,7 @@
 // 3D Slicer's planar contour representation: a VTK polydata of closed polylines, one ROI per file,
 // XML (.vtp, read by VTK) or legacy (.vtk, read by SliceMesh's own reader).
 #include "LegacyPolyDataReader.h"
+#include "Lowercase.h"
 #include "StructureSet.h"
 
 #include <vtkCallbackCommand.h>
@@ -29,12 +30,6 @@ void recordError(vtkObject*, unsigned long, void* clientData, void* callData)
   std::string& message = *static_cast<std::string*>(clientData);
   if (message.empty() && callData)
     message = static_cast<const char*>(callData);
-}
-
-std::string lowercase(std::string text)
-{
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
 }
 
 /** The geometry of a VTK XML polydata file (.vtp), through VTK's reader. */

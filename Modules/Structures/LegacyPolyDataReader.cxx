@@ -1,4 +1,5 @@
 #include "LegacyPolyDataReader.h"
+#include "Lowercase.h"
 
 #include "Core/SliceMeshTypes.h"
 
@@ -19,12 +20,6 @@ namespace slicemesh
 {
 namespace
 {
-
-std::string lowercase(std::string text)
-{
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
 
 /** A word of the file as it may be quoted in a one-line error: printable and short. */
 std::string quotable(const std::string& word)

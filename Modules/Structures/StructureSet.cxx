@@ -1,5 +1,6 @@
 // What kind of contour file a path holds, reading by kind, and choosing ROIs.
 #include "StructureSet.h"
+#include "Lowercase.h"
 
 #include <algorithm>
 #include <cctype>
@@ -19,12 +20,6 @@ std::string fileStart(const std::string& path, std::size_t bytes)
   in.read(start.data(), static_cast<std::streamsize>(bytes));
   start.resize(static_cast<std::size_t>(std::max<std::streamsize>(0, in.gcount())));
   return start;
-}
-
-std::string lowercase(std::string text)
-{
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
 }
 
 } // namespace
