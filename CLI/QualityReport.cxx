@@ -221,7 +221,8 @@ void writeMeshBlocks(std::ostream& json, const std::string& indent, const MeshVa
   number("targetEdgeLengthMm", q.targetEdgeLength);
   number("smoothingIterations", q.smoothingIterations);
   number("smoothingPassBand", q.smoothingPassBand);
-  number("smoothingMaxDisplacementMm", q.smoothingMaxDisplacement);
+  json << indent << "  \"smoothingMaxDisplacementMm\": [" << jsonNumber(q.smoothingMaxDisplacement[0]) << ", "
+       << jsonNumber(q.smoothingMaxDisplacement[1]) << ", " << jsonNumber(q.smoothingMaxDisplacement[2]) << "],\n";
   number("smallPiecesLeftTiled", static_cast<double>(q.smallPiecesAsTiled));
   json << indent << "  \"pieces\": { \"remeshed\": " << q.piecesByFinish[0] << ", \"smoothedOnly\": "
        << q.piecesByFinish[1] << ", \"leftTiled\": " << q.piecesByFinish[2] << " },\n";

@@ -39,7 +39,7 @@ struct RunQuality
   double targetEdgeLength = 0.0; ///< of the remeshing (mm), when Remeshed was asked; else 0
   int smoothingIterations = 0;   ///< Taubin pairs, when Remeshed or Smoothed was asked; else 0
   double smoothingPassBand = 0.0;
-  double smoothingMaxDisplacement = 0.0; ///< mm; 0: unbounded
+  std::array<double, 3> smoothingMaxDisplacement{}; ///< mm along the image axes; 0: unbounded
   std::string fallback;          ///< why less was applied than asked (SurfaceFinishing.h); empty when all of it was
   std::size_t smallPiecesAsTiled = 0; ///< specks left as tiled (FinishedSurface::smallPiecesAsTiled)
   std::size_t unsmoothedVertices = 0; ///< left at their remeshed positions where smoothing made triangles cross

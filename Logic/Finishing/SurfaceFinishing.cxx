@@ -83,7 +83,10 @@ SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing
 {
   SurfaceFinishingOptions options;
   options.remeshing.targetEdgeLength = automaticEdgeLength(spacing);
-  options.smoothing.maxDisplacement = 0.3 * std::min({ spacing[0], spacing[1], spacing[2] });
+  // A voxel's staircase is a fraction of its side deep along each axis: 1 mm slices of 0.5 mm pixels
+  // leave steps twice as deep across the slices as within them.
+  for (int axis = 0; axis < 3; ++axis)
+    options.smoothing.maxDisplacement[axis] = 0.3 * spacing[axis];
   return options;
 }
 

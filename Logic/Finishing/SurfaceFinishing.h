@@ -49,8 +49,8 @@ struct FinishedSurface
 };
 
 /** The finishing the CLI applies to a mask of this voxel spacing (mm): edges of
- *  automaticEdgeLength(spacing), and smoothing that moves no vertex farther than 0.3 of the smallest
- *  voxel side (the staircase is about that deep; a sharp edge is rounded no more). */
+ *  automaticEdgeLength(spacing), and smoothing that moves no vertex farther than 0.3 of the voxel's
+ *  side along each axis (the staircase is about that deep; a sharp edge is rounded no more). */
 SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing);
 
 /** Finishes a tiling whose validation is given, one connected piece at a time: each piece is

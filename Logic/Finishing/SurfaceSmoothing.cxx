@@ -153,16 +153,19 @@ void restoreVolumes(TriangleMesh& mesh, const std::vector<std::size_t>& componen
   }
 }
 
-/** Pulls every point that has moved farther than `bound` from its start back onto that distance. */
-void clampDisplacements(std::vector<Point3>& points, const std::vector<Point3>& start, double bound)
+/** Pulls every point that has left the ellipsoid of semi-axes `bound` around its start back onto it,
+ *  along its displacement. */
+void clampDisplacements(std::vector<Point3>& points, const std::vector<Point3>& start, const std::array<double, 3>& bound)
 {
   for (std::size_t v = 0; v < points.size(); ++v)
   {
     const double dx = points[v].x - start[v].x, dy = points[v].y - start[v].y, dz = points[v].z - start[v].z;
-    const double distance = std::sqrt(dx * dx + dy * dy + dz * dz);
-    if (distance > bound)
+    // The displacement in units of the bound: 1 on the ellipsoid.
+    const double reach = std::sqrt((dx / bound[0]) * (dx / bound[0]) + (dy / bound[1]) * (dy / bound[1]) +
+                                   (dz / bound[2]) * (dz / bound[2]));
+    if (reach > 1.0)
     {
-      const double f = bound / distance;
+      const double f = 1.0 / reach;
       points[v] = { start[v].x + f * dx, start[v].y + f * dy, start[v].z + f * dz };
     }
   }
@@ -193,11 +196,16 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
   const VertexNeighbours neighbours = neighboursOf(mesh);
   std::vector<Point3> scratch(mesh.points.size());
   const std::vector<Point3> start = mesh.points;
+  const bool bounded = std::any_of(options.maxDisplacement.begin(), options.maxDisplacement.end(),
+                                   [](double axis) { return axis > 0.0; });
+  if (bounded && !std::all_of(options.maxDisplacement.begin(), options.maxDisplacement.end(),
+                              [](double axis) { return axis > 0.0 && std::isfinite(axis); }))
+    throw Error("surface smoothing: the displacement bound must be positive along every axis, or 0 along all");
   for (int i = 0; i < options.iterations; ++i)
   {
     umbrellaStep(mesh.points, neighbours, lambda, scratch, threads);
     umbrellaStep(mesh.points, neighbours, mu, scratch, threads);
-    if (options.maxDisplacement > 0.0)
+    if (bounded)
       clampDisplacements(mesh.points, start, options.maxDisplacement);
   }
   // A component a few edges across has no shape below the pass band: the filter collapses it, and

@@ -5,6 +5,8 @@
 
 #include "Core/SliceMeshTypes.h"
 
+#include <array>
+
 namespace slicemesh
 {
 
@@ -15,10 +17,12 @@ struct SurfaceSmoothingOptions
   /** Taubin's pass band k_PB = 1/lambda + 1/mu: mesh frequencies below it (the shape) pass, the
    *  staircase of a mask (periods of a few edges) is damped. lambda is 0.5; mu follows from k_PB. */
   double passBand = 0.01;
-  /** No vertex ends farther than this from where it started (mm; 0: unbounded), checked after every
-   *  step pair. The staircase of a mask is a fraction of a voxel deep, so a bound of that order
-   *  takes it out but keeps the filter from rounding a sharp edge over more than that. */
-  double maxDisplacement = 0.0;
+  /** No vertex ends outside the ellipsoid of these semi-axes around where it started (mm, along the
+   *  mesh's x, y and z: for a stack, the image's voxel axes; all 0: unbounded), checked after every
+   *  step pair. The staircase of a mask is a fraction of a voxel deep along each axis, so a bound of
+   *  that fraction of each voxel side takes it out but keeps the filter from rounding a sharp edge
+   *  over more than that. */
+  std::array<double, 3> maxDisplacement{ 0.0, 0.0, 0.0 };
 };
 
 /** Smooths every vertex of the mesh: `iterations` pairs of p += lambda * L(p) and p += mu * L(p),

@@ -15,7 +15,7 @@ MeshingOptions resolvedMeshingOptions(const MeshingOptions& options, const std::
   const SurfaceFinishingOptions automatic = finishingOptionsFor(spacing);
   if (!(finishing.remeshing.targetEdgeLength > 0.0))
     finishing.remeshing.targetEdgeLength = automatic.remeshing.targetEdgeLength;
-  if (!(finishing.smoothing.maxDisplacement > 0.0))
+  if (!(finishing.smoothing.maxDisplacement[0] > 0.0))
     finishing.smoothing.maxDisplacement = automatic.smoothing.maxDisplacement;
   // Between thick slices, a surface that is remeshed anyway is tiled from contours already spaced
   // for its edge length: traced contours (a point every half pixel or so) make a tiling three to four

@@ -263,19 +263,28 @@ namespace slicemesh::testing
 namespace
 {
 
-/** The number after "key": in a JSON text (the first one). */
-double jsonValue(const std::string& json, const std::string& key)
+/** The number after "key": in a JSON text (the first one), or the element'th of the array there. */
+double jsonValue(const std::string& json, const std::string& key, int element = -1)
 {
   const std::string marker = "\"" + key + "\": ";
-  const std::size_t at = json.find(marker);
+  std::size_t at = json.find(marker);
   if (at == std::string::npos)
     return std::nan("");
-  return std::stod(json.substr(at + marker.size()));
+  at += marker.size();
+  if (element >= 0)
+  {
+    if (json[at] != '[')
+      return std::nan("");
+    ++at;
+    for (int skipped = 0; skipped < element; ++skipped)
+      at = json.find(',', at) + 1;
+  }
+  return std::stod(json.substr(at));
 }
 
 TEST(AutomaticOptions, TheReportGivesEachAutomaticValueAsResolvedForTheGrid)
 {
-  // 1 x 1 x 2 mm voxels. Finishing: edge 1.1 sqrt(3 / (1 + 1/2 + 1/2)), bound 0.3 of the smallest side.
+  // 1 x 1 x 2 mm voxels. Finishing: edge 1.1 sqrt(3 / (1 + 1/2 + 1/2)), bound 0.3 of each voxel side.
   const fs::path folder = freshFolder("AutomaticOptions");
   const fs::path input = sphereLabelMap(folder);
   for (const std::string preparation : { "Traced", "Automatic" })
@@ -287,7 +296,10 @@ TEST(AutomaticOptions, TheReportGivesEachAutomaticValueAsResolvedForTheGrid)
     ASSERT_EQ(r.exitCode, cli::Success) << r.err;
     const std::string json = fileText(report);
     EXPECT_NEAR(jsonValue(json, "targetEdgeLengthMm"), 1.1 * std::sqrt(1.5), 1e-9) << json;
-    EXPECT_NEAR(jsonValue(json, "smoothingMaxDisplacementMm"), 0.3, 1e-8) << json;
+    // The smoothing's bound: 0.3 of the voxel's side along each axis (the slices' staircase is twice as deep).
+    EXPECT_NEAR(jsonValue(json, "smoothingMaxDisplacementMm", 0), 0.3, 1e-8) << json;
+    EXPECT_NEAR(jsonValue(json, "smoothingMaxDisplacementMm", 1), 0.3, 1e-8) << json;
+    EXPECT_NEAR(jsonValue(json, "smoothingMaxDisplacementMm", 2), 0.6, 1e-8) << json;
     EXPECT_GT(jsonValue(json, "wallRowHeightMm"), 0.0) << json;
     EXPECT_EQ(jsonValue(json, "steinerSpacingMm"), jsonValue(json, "wallRowHeightMm")) << json;
     if (preparation == "Traced")

@@ -186,7 +186,7 @@ TEST(AtlasLabels, EveryAALLabelFinishedIsValidWithItsTilingsTopology)
     const TriangleMesh tiling = reconstructSurface(extractContours(mask));
     const MeshValidation tiled = validateMesh(tiling);
     SurfaceFinishingOptions unbounded = finishingOptionsFor({ 1.0, 1.0, 1.0 });
-    unbounded.smoothing.maxDisplacement = 0.0;
+    unbounded.smoothing.maxDisplacement = { 0.0, 0.0, 0.0 };
     const FinishedSurface finished = finishSurface(tiling, tiled, unbounded);
     std::cout << "label " << label << " smoothed without the bound: " << finished.unsmoothedVertices
               << " vertices left unsmoothed, " << finished.validation.summary() << std::endl;

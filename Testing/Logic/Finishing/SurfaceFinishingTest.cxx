@@ -116,6 +116,32 @@ TEST(SurfaceSmoothing, NoIterationsLeaveTheMeshAndABadPassBandIsRefused)
   SurfaceSmoothingOptions bad;
   bad.passBand = 1.5;
   EXPECT_THROW(smoothSurface(mesh, bad), Error);
+  SurfaceSmoothingOptions partlyBounded; // a bound along one axis only: the others would be 0 mm
+  partlyBounded.maxDisplacement = { 0.1, 0.0, 0.1 };
+  EXPECT_THROW(smoothSurface(mesh, partlyBounded), Error);
+}
+
+TEST(SurfaceSmoothing, NoVertexLeavesTheEllipsoidOfTheBoundAroundItsStart)
+{
+  // A rippled sphere smoothed with a bound ten times as long along z as along x and y: every vertex
+  // ends inside the ellipsoid, up to the one common offset along the normals that gives the sphere its
+  // volume back (measured as the mean radius change, under 0.01 mm here).
+  const TriangleMesh rippled = octaSphere(30, 10.0, 0.03, 1.5);
+  TriangleMesh smoothed = rippled;
+  SurfaceSmoothingOptions options;
+  options.maxDisplacement = { 0.02, 0.02, 0.2 };
+  smoothSurface(smoothed, options);
+  double largestReach = 0.0, largestZ = 0.0;
+  for (std::size_t v = 0; v < rippled.points.size(); ++v)
+  {
+    const double dx = smoothed.points[v].x - rippled.points[v].x, dy = smoothed.points[v].y - rippled.points[v].y,
+                 dz = smoothed.points[v].z - rippled.points[v].z;
+    largestReach = std::max(largestReach, std::hypot(dx / 0.03, dy / 0.03, dz / 0.21));
+    largestZ = std::max(largestZ, std::abs(dz));
+  }
+  EXPECT_LE(largestReach, 1.0);
+  EXPECT_GT(largestZ, 0.05); // the long axis was used: a bound of the smallest side would stop at 0.03
+  EXPECT_TRUE(validateMesh(smoothed).valid());
 }
 
 TEST(SurfaceRemeshing, GivesEdgesOfTheTargetLengthOnTheSameSurface)
@@ -377,7 +403,7 @@ TEST(SurfaceFinishing, TheSameBitForBitOnOneTwoAndEightThreads)
   remeshing.trianglesPerRegion = 8000; // in slabs too
   SurfaceFinishingOptions finishing;
   finishing.remeshing = remeshing;
-  finishing.smoothing.maxDisplacement = 0.1;
+  finishing.smoothing.maxDisplacement = { 0.1, 0.1, 0.1 };
   const TriangleMesh remeshedOnOne = remeshSurface(rippled, remeshing, 1);
   TriangleMesh smoothedOnOne = rippled;
   smoothSurface(smoothedOnOne, SurfaceSmoothingOptions{}, 1);

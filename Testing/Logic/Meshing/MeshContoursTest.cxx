@@ -25,10 +25,12 @@ ContourStack ballStack()
 TEST(MeshingOptions, AutomaticValuesComeFromTheGrid)
 {
   // 0.8 x 0.8 x 3 mm: the finishing's edge is 1.1 times the flying-edges-equivalent edge
-  // sqrt(3 / (1/0.64 + 2/2.4)) mm, its displacement bound 0.3 of the smallest side.
+  // sqrt(3 / (1/0.64 + 2/2.4)) mm, its displacement bound 0.3 of the voxel's side along each axis.
   const MeshingOptions resolved = resolvedMeshingOptions({}, { 0.8, 0.8, 3.0 });
   EXPECT_NEAR(resolved.finishing.remeshing.targetEdgeLength, 1.1 * std::sqrt(3.0 / (1.0 / 0.64 + 2.0 / 2.4)), 1e-12);
-  EXPECT_NEAR(resolved.finishing.smoothing.maxDisplacement, 0.24, 1e-12);
+  EXPECT_NEAR(resolved.finishing.smoothing.maxDisplacement[0], 0.24, 1e-12);
+  EXPECT_NEAR(resolved.finishing.smoothing.maxDisplacement[1], 0.24, 1e-12);
+  EXPECT_NEAR(resolved.finishing.smoothing.maxDisplacement[2], 0.9, 1e-12);
   EXPECT_EQ(resolved.contours.mode, ContourPreparation::Traced); // the default is not automatic
   // Remeshed (the default): the traced contours are resampled to a little over the target edge.
   EXPECT_NEAR(resolved.contours.pointSpacing, remeshedContourSpacing * resolved.finishing.remeshing.targetEdgeLength, 1e-12);
@@ -52,10 +54,10 @@ TEST(MeshingOptions, AutomaticValuesComeFromTheGrid)
   // Given values are kept.
   MeshingOptions given;
   given.finishing.remeshing.targetEdgeLength = 2.5;
-  given.finishing.smoothing.maxDisplacement = 0.1;
+  given.finishing.smoothing.maxDisplacement = { 0.1, 0.1, 0.2 };
   const MeshingOptions kept = resolvedMeshingOptions(given, { 1.0, 1.0, 1.0 });
   EXPECT_EQ(kept.finishing.remeshing.targetEdgeLength, 2.5);
-  EXPECT_EQ(kept.finishing.smoothing.maxDisplacement, 0.1);
+  EXPECT_EQ(kept.finishing.smoothing.maxDisplacement, (std::array<double, 3>{ 0.1, 0.1, 0.2 }));
 }
 
 TEST(MeshContours, StageByStageIsMeshContours)
