@@ -260,7 +260,9 @@ itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
   return io;
 }
 
-ScalarVolume::Pointer readImageFile(const std::string& path)
+/** The header of an image file, checked (dimension, components, geometry, NIfTI's size and
+ *  spacing, memory) before any voxel is read. */
+itk::ImageIOBase::Pointer checkedImageHeader(const std::string& path)
 {
   if (endsWith(path, ".gz") || endsWith(path, ".GZ"))
     checkGzipStream(path);
@@ -268,8 +270,14 @@ ScalarVolume::Pointer readImageFile(const std::string& path)
   checkHeader(path, io);
   checkNiftiFileSize(path, io);
   checkNiftiSpacing(path);
+  return io;
+}
 
-  using Reader = itk::ImageFileReader<ScalarVolume>;
+/** The voxels of the image file whose header `io` holds, as TImage's pixels. */
+template <typename TImage>
+typename TImage::Pointer readImageFileAs(const std::string& path, itk::ImageIOBase* io)
+{
+  using Reader = itk::ImageFileReader<TImage>;
   auto reader = Reader::New();
   reader->SetFileName(path);
   reader->SetImageIO(io);
@@ -286,14 +294,14 @@ ScalarVolume::Pointer readImageFile(const std::string& path)
   }
   if (!complaints.empty())
     throw Error(path + ": cannot read the voxels (a truncated or damaged file?): " + oneLine(complaints));
-  ScalarVolume::Pointer volume = reader->GetOutput();
+  typename TImage::Pointer volume = reader->GetOutput();
   volume->DisconnectPipeline();
 
   if (io->GetNumberOfDimensions() == 4)
   {
     // ITK's reader falls back to the identity direction when it drops a dimension; the first
     // three axes of the file still say where the volume is.
-    ScalarVolume::DirectionType direction;
+    typename TImage::DirectionType direction;
     for (unsigned int axis = 0; axis < 3; ++axis)
     {
       const std::vector<double> column = io->GetDirection(axis);
@@ -413,7 +421,27 @@ ScalarVolume::Pointer readVolume(const std::string& path)
     throw Error(path + ": no such file or directory");
   if (std::filesystem::is_directory(file, ignored))
     return readDicomSeries(path);
-  return readImageFile(path);
+  itk::ImageIOBase::Pointer io = checkedImageHeader(path);
+  return readImageFileAs<ScalarVolume>(path, io);
+}
+
+StoredVolume readStoredVolume(const std::string& path)
+{
+  std::error_code ignored;
+  const std::filesystem::path file(path);
+  if (!std::filesystem::exists(file, ignored))
+    throw Error(path + ": no such file or directory");
+  if (std::filesystem::is_directory(file, ignored))
+    return readDicomSeries(path);
+  itk::ImageIOBase::Pointer io = checkedImageHeader(path);
+  switch (io->GetComponentType())
+  {
+    case itk::IOComponentEnum::UCHAR: return readImageFileAs<itk::Image<std::uint8_t, 3>>(path, io);
+    case itk::IOComponentEnum::CHAR: return readImageFileAs<itk::Image<std::int8_t, 3>>(path, io);
+    case itk::IOComponentEnum::USHORT: return readImageFileAs<itk::Image<std::uint16_t, 3>>(path, io);
+    case itk::IOComponentEnum::SHORT: return readImageFileAs<itk::Image<std::int16_t, 3>>(path, io);
+    default: return readImageFileAs<ScalarVolume>(path, io);
+  }
 }
 
 } // namespace slicemesh
