@@ -182,7 +182,9 @@ std::optional<FinishedPiece> remeshedPiece(const TriangleMesh& tiled, const Mesh
 FinishedPiece finishPiece(const TriangleMesh& tiled, const MeshValidation& reference, const SurfaceFinishingOptions& options,
                           double volumeScale, unsigned int threads)
 {
-  FinishedPiece result{ tiled, SurfaceFinish::Tiled, {}, 0, {} };
+  // The tiled piece is copied only if it is what is kept: a copy held through the remesh would
+  // add a piece's worth to the run's peak memory.
+  FinishedPiece result{ {}, SurfaceFinish::Tiled, {}, 0, {} };
   if (options.finish == SurfaceFinish::Remeshed)
   {
     // One attempt at the asked edge length. (A second one at half the length, where a gap
@@ -210,6 +212,8 @@ FinishedPiece finishPiece(const TriangleMesh& tiled, const MeshValidation& refer
     return result;
   }
   result.why += (result.why.empty() ? "" : "; ") + std::string("smoothed: ") + why;
+  smoothed = TriangleMesh();
+  result.mesh = tiled;
   result.validation = complete(tiled, reference);
   return result;
 }
@@ -230,14 +234,18 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
 {
   // The tiling's self-intersections may not have been looked for yet (MeshedContours): it is
   // checked here where it is handed back, and piece by piece where a piece is kept as tiled.
-  FinishedSurface result{ tiling, tilingValidation, SurfaceFinish::Tiled, {} };
+  // The tiling is copied into the result only where it is handed back: a copy held through the
+  // finishing would add a tiling's worth to the run's peak memory.
+  FinishedSurface result{ {}, tilingValidation, SurfaceFinish::Tiled, {} };
   if (options.finish == SurfaceFinish::Tiled)
   {
+    result.mesh = tiling;
     result.validation = complete(tiling, tilingValidation);
     return result;
   }
   if (!tilingValidation.soundTopology() || (tilingValidation.selfIntersectionChecked && tilingValidation.selfIntersections > 0))
   {
+    result.mesh = tiling;
     result.validation = complete(tiling, tilingValidation);
     result.fallback = "the tiling is not a valid surface, so it is not finished";
     return result;
@@ -250,7 +258,7 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   // a tenth or so; a target farther off than a quarter is not such a shortfall, and is not followed.
   const double scale = targetVolume / tilingValidation.volume;
   const double volumeScale = targetVolume > 0.0 && std::abs(scale - 1.0) <= 0.25 ? scale : 1.0;
-  const std::vector<TriangleMesh> tiledPieces = splitIntoPieces(tiling);
+  std::vector<TriangleMesh> tiledPieces = splitIntoPieces(tiling);
   std::vector<FinishedPiece> pieces(tiledPieces.size());
   std::vector<MeshValidation> tiledValidations(tiledPieces.size());
   std::vector<char> speck(tiledPieces.size());
@@ -304,11 +312,13 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   MeshValidation validation = joinedValidation(validations, crossingTriangles);
   // Each piece faces as its tiled self did; whether that is right depends on which piece lies inside which.
   validation.misorientedComponents = misorientedComponents(finishedPieces, volumes);
+  tiledPieces = {}; // no longer needed: not held beside the joined copy of the pieces
   std::vector<std::size_t> firstTriangle;
   TriangleMesh joined = joinPieces(pieces, firstTriangle);
   if (!validation.valid() || validation.components != tilingValidation.components ||
       validation.eulerCharacteristic != tilingValidation.eulerCharacteristic)
   {
+    result.mesh = tiling;
     result.validation = complete(tiling, tilingValidation);
     result.fallback = "the finished pieces do not make a valid surface together (" + validation.summary() +
                       "), so the tiling is written";

@@ -338,6 +338,11 @@ TriangleMesh remeshSurface(const TriangleMesh& mesh, const SurfaceRemeshingOptio
   if (options.iterations <= 0 || mesh.triangles.empty())
     return mesh;
   // Piece by piece: each vertex is projected back onto its own piece, never onto a neighbour.
+  // A mesh that is one piece (what finishSurface hands over) is its own piece: no copy of it is held.
+  std::size_t components = 0;
+  vertexComponents(mesh, components);
+  if (components == 1)
+    return remeshPiece(mesh, options, threads);
   std::vector<TriangleMesh> pieces = splitIntoPieces(mesh);
   for (TriangleMesh& piece : pieces)
     piece = remeshPiece(piece, options, threads);
