@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <random>
 
@@ -227,6 +228,34 @@ TEST_F(StoredVolumeTest, SegmentationIsTheMaskOfTheFloatVolume)
   }
   EXPECT_NE(floatMessage.find("labels present: 300, 1000, 40000"), std::string::npos) << floatMessage;
   EXPECT_EQ(storedMessage, floatMessage);
+}
+
+TEST_F(StoredVolumeTest, MemoryEstimateCountsTheVolumeAsItIsHeld)
+{
+  // 4 M voxels: 64 MiB + 4 M x (1 + 8) bytes = 98 MiB as stored bytes; as float, 64 MiB + 4 M x
+  // (4 + 1 + 8) bytes = 110 MiB. Under a limit of 108 MiB the label map of bytes is read as stored,
+  // and refused as float.
+  auto bytes = testing::makeImage<Uint8Volume>({ 200, 200, 100 });
+  bytes->FillBuffer(1);
+  write(bytes.GetPointer(), path("large.nrrd"));
+  const char* previous = std::getenv("SLICEMESH_MEMORY_LIMIT_MB");
+  const std::string saved = previous ? previous : "";
+  ::setenv("SLICEMESH_MEMORY_LIMIT_MB", "108", 1);
+  EXPECT_NO_THROW(readStoredVolume(path("large.nrrd")));
+  std::string refused;
+  try
+  {
+    readVolume(path("large.nrrd"));
+  }
+  catch (const Error& e)
+  {
+    refused = e.what();
+  }
+  if (previous)
+    ::setenv("SLICEMESH_MEMORY_LIMIT_MB", saved.c_str(), 1);
+  else
+    ::unsetenv("SLICEMESH_MEMORY_LIMIT_MB");
+  EXPECT_NE(refused.find("200 x 200 x 100 volume needs about"), std::string::npos) << refused;
 }
 
 } // namespace
