@@ -12,8 +12,8 @@
 
 #include <cmath>
 #include <set>
-#include <type_traits>
 #include <sstream>
+#include <type_traits>
 #include <vector>
 
 namespace slicemesh
