@@ -13,7 +13,9 @@
 #include "SegmentationFile.h"
 #include "SmallComponentRemoval.h"
 #include "StructureSet.h"
+#include "StoredVolume.h"
 #include "VolumeReader.h"
+#include "VolumeSegmentation.h"
 
 #include <algorithm>
 #include <cctype>
@@ -117,12 +119,12 @@ struct Structure
 {
   LabelReport report;                              ///< label (the ROI number), name, file, figures, error
   std::array<unsigned char, 4> rgba{ 128, 128, 128, 255 };
-  MaskVolume::Pointer mask;                        ///< null for an ROI
-  StackedContours contours;                        ///< an ROI's stack, frame and grid spacing
+  /** Null for an ROI; released once its contours are traced (the stack frame stays in `contours`). */
+  MaskVolume::Pointer mask;
+  StackedContours contours;                        ///< an ROI's stack, frame and grid spacing; a mask's frame
   MeshedContours meshing;
-  TriangleMesh physical;
   bool live() const { return report.meshed(); } ///< neither failed nor dropped
-  SliceFrame frame() const { return this->mask ? sliceFrameOf(this->mask) : this->contours.frame; }
+  SliceFrame frame() const { return this->contours.frame; }
 };
 
 /** "label 3 (Hippocampus): ", "ROI 2 (PTV): " or nothing (a one-mesh run). */
@@ -132,10 +134,10 @@ std::string who(const Structure& s, const std::string& noun)
 }
 
 /** The single mask of a one-mesh run, after --minimumComponentVolume. */
-Structure maskStructure(const ScalarVolume* volume, const PipelineSettings& settings)
+Structure maskStructure(StoredVolume volume, const PipelineSettings& settings)
 {
   Structure s;
-  s.mask = guarded(EmptySegmentation, [&] { return segmentVolume(volume, settings.segmentation); });
+  s.mask = guarded(EmptySegmentation, [&] { return segmentStoredVolume(std::move(volume), settings.segmentation); });
   if (settings.minimumComponentVolume > 0.0)
   {
     const SmallComponentRemoval removal =
@@ -157,7 +159,7 @@ Structure maskStructure(const ScalarVolume* volume, const PipelineSettings& sett
  *  or a layer of a segmentation file) with its box, and the number, name and colour it goes by. */
 struct LabelSource
 {
-  const ScalarVolume* labelMap = nullptr;
+  StoredVolume labelMap;
   LabelExtent extent; ///< no voxels: an empty segment
   int number = 0;     ///< the label value, or the segment's number
   std::string name;
@@ -166,10 +168,11 @@ struct LabelSource
 
 /** Every non-zero label of a label map, in increasing order, named and coloured by the table; one
  *  pass over the volume finds them all. */
-std::vector<LabelSource> labelMapSources(const ScalarVolume* volume, const ColorTable& colors)
+std::vector<LabelSource> labelMapSources(const StoredVolume& volume, const ColorTable& colors)
 {
   std::vector<LabelSource> sources;
-  for (const LabelExtent& e : guarded(EmptySegmentation, [&] { return indexLabels(volume); }))
+  const auto index = [&] { return std::visit([](const auto& image) { return indexLabels(image.GetPointer()); }, volume); };
+  for (const LabelExtent& e : guarded(EmptySegmentation, index))
   {
     const LabelColor entry = colors.entry(e.label);
     sources.push_back({ volume, e, e.label, entry.name, entry.rgba });
@@ -299,7 +302,8 @@ std::vector<Structure> labelStructures(std::vector<LabelSource> sources, const s
     }
     try
     {
-      s.mask = cropLabelMask(source.labelMap, source.extent);
+      s.mask = std::visit([&](const auto& image) { return cropLabelMask(image.GetPointer(), source.extent); },
+                          source.labelMap);
       if (refinement.any())
         refineMask(s.mask, refinement);
       if (settings.minimumComponentVolume > 0.0)
@@ -520,7 +524,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   };
 
   startStage(Reading);
-  ScalarVolume::Pointer volume;
+  StoredVolume volume; // as its file stores it: a label map of bytes takes a byte a voxel
   SegmentationFile segmentation;
   StructureSet structureSet;
   std::optional<VolumeGeometry> referenceImage;
@@ -539,8 +543,8 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   }
   else
   {
-    volume = guarded(UnreadableInput, [&] { return readVolume(settings.inputVolume); });
-    if (const auto warning = niftiOrientationWarning(settings.inputVolume, volume))
+    volume = guarded(UnreadableInput, [&] { return readStoredVolume(settings.inputVolume); });
+    if (const auto warning = niftiOrientationWarning(settings.inputVolume, imageOf(volume)))
       std::cerr << "SliceMesh: warning: " << *warning << std::endl;
   }
 
@@ -562,7 +566,10 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
     structures = labelStructures(labelMapSources(volume, colors), settings.multiLabel.labels,
                                  settings.multiLabel.labelNames, false, settings);
   else
-    structures.push_back(maskStructure(volume, settings));
+    structures.push_back(maskStructure(std::move(volume), settings));
+  // The masks are cut: the volume (or the segmentation's layers) is no longer needed.
+  volume = StoredVolume();
+  segmentation.layers.clear();
   for (const Structure& s : structures)
     if (!s.report.error.empty())
     {
@@ -626,7 +633,12 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
                 [&](Structure& s, const std::function<void(double)>&)
                 {
                   if (s.mask)
+                  {
                     s.meshing = startMaskMeshing(s.mask, settings.meshing, settings.contourSmoothingSigma);
+                    // Traced: the mask's voxels go, its frame stays to place the mesh.
+                    s.contours.frame = sliceFrameOf(s.mask);
+                    s.mask = nullptr;
+                  }
                   else
                   {
                     // Planning-system contours are irregularly spaced: resampled (keeping their
@@ -663,14 +675,23 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
                                              std::pair{ Finishing, MeshingStage::Finishing } })
   {
     startStage(stage);
-    eachStructure(MeshingFailed, [&, meshingStage = meshingStage](Structure& s, const std::function<void(double)>& fraction)
-                  { runMeshingStage(meshingStage, s.meshing, fraction); });
+    eachStructure(MeshingFailed,
+                  [&, meshingStage = meshingStage](Structure& s, const std::function<void(double)>& fraction)
+                  {
+                    runMeshingStage(meshingStage, s.meshing, fraction);
+                    // Finished and measured: the tiling is not held while the next structures and
+                    // the writing run.
+                    if (meshingStage == MeshingStage::Finishing)
+                      s.meshing.tiling = TriangleMesh();
+                  });
   }
 
   // From here on each mesh is the finished one: what is written, pictured and reported (only the
   // Dirichlet energy stays the tiling's).
   startStage(Writing);
-  std::vector<const TriangleMesh*> physicalMeshes; // merged into the output model, in label order
+  // The output model: the structures' meshes in physical space, in label order. Each is appended
+  // and released as it is done, so that the meshes are not held twice (apart and merged).
+  TriangleMesh merged;
   MeshAttributes mergedAttributes;
   std::vector<LabelReport> reports;
   std::vector<MeshValidation> validations;
@@ -690,21 +711,22 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
       if (!surface.fallback.empty())
         std::cerr << "SliceMesh: warning: " << who(s, noun) << "surface finishing: " << oneLine(surface.fallback)
                   << std::endl;
-      s.physical = guarded(WriteFailed, [&]
+      TriangleMesh physical = guarded(WriteFailed, [&]
                            { return mapToPhysicalSpace(surface.mesh, s.frame(), settings.coordinateSystem); });
+      s.meshing.surface.mesh = TriangleMesh(); // its physical copy is what is written
       validations.push_back(surface.validation);
       if (perLabel)
       {
         MeshAttributes attributes;
         const std::array<unsigned char, 3> rgb{ s.rgba[0], s.rgba[1], s.rgba[2] };
-        attributes.cellLabels.assign(s.physical.triangles.size(), s.report.label);
-        attributes.cellColors.assign(s.physical.triangles.size(), rgb);
+        attributes.cellLabels.assign(physical.triangles.size(), s.report.label);
+        attributes.cellColors.assign(physical.triangles.size(), rgb);
         attributes.structures.push_back({ s.report.label, s.report.name, s.rgba });
         if (!settings.multiLabel.outputDirectory.empty())
         {
           s.report.path = (fs::path(settings.multiLabel.outputDirectory) /
                            labelFileName(s, width, output.extension().string())).string();
-          guarded(WriteFailed, [&] { writeMesh(s.physical, settings.coordinateSystem, s.report.path, attributes); });
+          guarded(WriteFailed, [&] { writeMesh(physical, settings.coordinateSystem, s.report.path, attributes); });
         }
         mergedAttributes.cellLabels.insert(mergedAttributes.cellLabels.end(), attributes.cellLabels.begin(),
                                            attributes.cellLabels.end());
@@ -712,11 +734,13 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
                                            attributes.cellColors.end());
         mergedAttributes.structures.push_back(attributes.structures.front());
       }
-      physicalMeshes.push_back(&s.physical);
+      if (merged.points.empty())
+        merged = std::move(physical); // the same as appending it to nothing, without a copy
+      else
+        appendMesh(merged, physical);
     }
     reports.push_back(s.report);
   }
-  const TriangleMesh merged = joinMeshes(physicalMeshes);
   if (merged.triangles.empty() && failures.empty())
   {
     std::ostringstream message;

@@ -126,8 +126,21 @@ MeshRegion extractRegion(const TriangleMesh& mesh, const std::vector<int>& regio
 TriangleMesh reassembleRegions(const TriangleMesh& mesh, const std::vector<int>& regionOf,
                                const std::vector<MeshRegion>& regions)
 {
+  // Sized up front: vectors grown one element at a time hold up to twice their size, and the
+  // reassembled piece is among the largest things a run holds.
+  std::size_t points = mesh.points.size(), triangles = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    triangles += regionOf[t] < 0;
+  for (const MeshRegion& region : regions)
+  {
+    points += static_cast<std::size_t>(
+      std::count_if(region.origin.begin(), region.origin.end(), [](std::int32_t o) { return o < 0; }));
+    triangles += region.mesh.triangles.size();
+  }
   TriangleMesh result;
-  result.points = mesh.points;
+  result.points.reserve(points);
+  result.points.assign(mesh.points.begin(), mesh.points.end());
+  result.triangles.reserve(triangles);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     if (regionOf[t] < 0)
       result.triangles.push_back(mesh.triangles[t]);
@@ -160,6 +173,7 @@ TriangleMesh withoutUnusedVertices(const TriangleMesh& mesh)
     for (std::int32_t v : t)
       index[static_cast<std::size_t>(v)] = 0;
   TriangleMesh result;
+  result.points.reserve(static_cast<std::size_t>(std::count(index.begin(), index.end(), 0)));
   for (std::size_t v = 0; v < mesh.points.size(); ++v)
     if (index[v] == 0)
     {

@@ -33,9 +33,10 @@ std::string rejection(const MeshValidation& candidate, const MeshValidation& til
   return {};
 }
 
-/** Puts back where `unsmoothed` has them the vertices of every triangle in a crossing pair and
- *  `rings` rings of triangles around them. Returns how many vertices moved back. */
-std::size_t unsmoothAround(TriangleMesh& mesh, const TriangleMesh& unsmoothed,
+/** Puts back where `unsmoothed` (the mesh's points before smoothing) has them the vertices of every
+ *  triangle in a crossing pair and `rings` rings of triangles around them. Returns how many vertices
+ *  moved back. */
+std::size_t unsmoothAround(TriangleMesh& mesh, const std::vector<Point3>& unsmoothed,
                            const std::vector<std::pair<std::size_t, std::size_t>>& crossings, int rings)
 {
   std::vector<bool> marked(mesh.points.size(), false);
@@ -54,10 +55,10 @@ std::size_t unsmoothAround(TriangleMesh& mesh, const TriangleMesh& unsmoothed,
   }
   std::size_t moved = 0;
   for (std::size_t v = 0; v < mesh.points.size(); ++v)
-    if (marked[v] && (mesh.points[v].x != unsmoothed.points[v].x || mesh.points[v].y != unsmoothed.points[v].y ||
-                      mesh.points[v].z != unsmoothed.points[v].z))
+    if (marked[v] && (mesh.points[v].x != unsmoothed[v].x || mesh.points[v].y != unsmoothed[v].y ||
+                      mesh.points[v].z != unsmoothed[v].z))
     {
-      mesh.points[v] = unsmoothed.points[v];
+      mesh.points[v] = unsmoothed[v];
       ++moved;
     }
   return moved;
@@ -66,7 +67,7 @@ std::size_t unsmoothAround(TriangleMesh& mesh, const TriangleMesh& unsmoothed,
 /** Two sheets a voxel apart (a thin gap between gyri, a thin wall) can be smoothed into each other:
  *  there, and only there, the vertices go back to where `unsmoothed` has them (growing rings, three
  *  tries). `validation` is the mesh's, kept up to date. Returns how many vertices went back. */
-std::size_t unsmoothCrossings(TriangleMesh& mesh, const TriangleMesh& unsmoothed, MeshValidation& validation)
+std::size_t unsmoothCrossings(TriangleMesh& mesh, const std::vector<Point3>& unsmoothed, MeshValidation& validation)
 {
   std::size_t moved = 0;
   for (int rings = 1; rings <= 4 && validation.selfIntersections > 0; rings *= 2)
@@ -168,7 +169,7 @@ std::optional<FinishedPiece> remeshedPiece(const TriangleMesh& tiled, const Mesh
     why = e.what();
     return std::nullopt;
   }
-  const TriangleMesh unsmoothed = remeshed;
+  const std::vector<Point3> unsmoothed = remeshed.points; // smoothing moves points only
   smoothSurface(remeshed, options.smoothing, threads);
   // The remesh's chords cut the corners of structures a few edges across: the piece gets its volume back.
   offsetToVolume(remeshed, volume);
@@ -185,7 +186,9 @@ std::optional<FinishedPiece> remeshedPiece(const TriangleMesh& tiled, const Mesh
 FinishedPiece finishPiece(const TriangleMesh& tiled, const MeshValidation& reference, const SurfaceFinishingOptions& options,
                           double volumeScale, unsigned int threads)
 {
-  FinishedPiece result{ tiled, SurfaceFinish::Tiled, {}, 0, {} };
+  // The tiled piece is copied only if it is what is kept: a copy held through the remesh would
+  // add a piece's worth to the run's peak memory.
+  FinishedPiece result{ {}, SurfaceFinish::Tiled, {}, 0, {} };
   if (options.finish == SurfaceFinish::Remeshed)
   {
     // One attempt at the asked edge length. (A second one at half the length, where a gap
@@ -202,7 +205,7 @@ FinishedPiece finishPiece(const TriangleMesh& tiled, const MeshValidation& refer
   if (volumeScale != 1.0 && options.smoothing.iterations > 0) // no iterations asked: the tiling itself
     offsetToVolume(smoothed, volumeScale * reference.volume);
   MeshValidation validation = validateMesh(smoothed);
-  const std::size_t unsmoothedVertices = unsmoothCrossings(smoothed, tiled, validation);
+  const std::size_t unsmoothedVertices = unsmoothCrossings(smoothed, tiled.points, validation);
   const std::string why = rejection(validation, reference);
   if (why.empty())
   {
@@ -213,6 +216,8 @@ FinishedPiece finishPiece(const TriangleMesh& tiled, const MeshValidation& refer
     return result;
   }
   result.why += (result.why.empty() ? "" : "; ") + std::string("smoothed: ") + why;
+  smoothed = TriangleMesh();
+  result.mesh = tiled;
   result.validation = complete(tiled, reference);
   return result;
 }
@@ -233,14 +238,18 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
 {
   // The tiling's self-intersections may not have been looked for yet (MeshedContours): it is
   // checked here where it is handed back, and piece by piece where a piece is kept as tiled.
-  FinishedSurface result{ tiling, tilingValidation, SurfaceFinish::Tiled, {} };
+  // The tiling is copied into the result only where it is handed back: a copy held through the
+  // finishing would add a tiling's worth to the run's peak memory.
+  FinishedSurface result{ {}, tilingValidation, SurfaceFinish::Tiled, {} };
   if (options.finish == SurfaceFinish::Tiled)
   {
+    result.mesh = tiling;
     result.validation = complete(tiling, tilingValidation);
     return result;
   }
   if (!tilingValidation.soundTopology() || (tilingValidation.selfIntersectionChecked && tilingValidation.selfIntersections > 0))
   {
+    result.mesh = tiling;
     result.validation = complete(tiling, tilingValidation);
     result.fallback = "the tiling is not a valid surface, so it is not finished";
     return result;
@@ -253,26 +262,35 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   // a tenth or so; a target farther off than a quarter is not such a shortfall, and is not followed.
   const double scale = targetVolume / tilingValidation.volume;
   const double volumeScale = targetVolume > 0.0 && std::abs(scale - 1.0) <= 0.25 ? scale : 1.0;
-  const std::vector<TriangleMesh> tiledPieces = splitIntoPieces(tiling);
+  // A tiling of one piece (the usual case) is its own piece: no copy of it is held.
+  std::size_t components = 0;
+  vertexComponents(tiling, components);
+  const bool onePiece = components == 1 && !tiling.triangles.empty();
+  std::vector<TriangleMesh> split = onePiece ? std::vector<TriangleMesh>() : splitIntoPieces(tiling);
+  std::vector<const TriangleMesh*> tiledPieces;
+  if (onePiece)
+    tiledPieces.push_back(&tiling);
+  for (const TriangleMesh& piece : split)
+    tiledPieces.push_back(&piece);
   std::vector<FinishedPiece> pieces(tiledPieces.size());
   std::vector<MeshValidation> tiledValidations(tiledPieces.size());
   std::vector<char> speck(tiledPieces.size());
   // The piece that holds most of the surface (often the only one) would keep one thread busy long
   // after the others are done: it gets the threads for the work inside it.
   auto innerThreads = [&](std::size_t p) {
-    return 2 * tiledPieces[p].triangles.size() > tiling.triangles.size() ? threads : 1u;
+    return 2 * tiledPieces[p]->triangles.size() > tiling.triangles.size() ? threads : 1u;
   };
   parallelFor(tiledPieces.size(), threads,
               [&](std::size_t p)
               {
-                tiledValidations[p] = asTiled(tiledPieces[p], tilingValidation.selfIntersectionChecked);
+                tiledValidations[p] = asTiled(*tiledPieces[p], tilingValidation.selfIntersectionChecked);
                 // A speck of a few voxels is a couple of target edges across: remeshing or smoothing
                 // can only collapse it. It stays as tiled, as asked.
                 speck[p] = isSpeck(tiledValidations[p], options.remeshing.targetEdgeLength);
                 if (speck[p])
-                  pieces[p] = keptAsTiled(tiledPieces[p], tiledValidations[p], options.finish, {});
+                  pieces[p] = keptAsTiled(*tiledPieces[p], tiledValidations[p], options.finish, {});
                 else
-                  pieces[p] = finishPiece(tiledPieces[p], tiledValidations[p], options, volumeScale, innerThreads(p));
+                  pieces[p] = finishPiece(*tiledPieces[p], tiledValidations[p], options, volumeScale, innerThreads(p));
               });
   result.smallPiecesAsTiled = static_cast<std::size_t>(std::count(speck.begin(), speck.end(), 1));
 
@@ -292,7 +310,7 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
     for (const auto& [first, second] : crossing)
       for (const std::size_t p : { first, second })
         if (pieces[p].finish != SurfaceFinish::Tiled)
-          pieces[p] = keptAsTiled(tiledPieces[p], tiledValidations[p], SurfaceFinish::Tiled,
+          pieces[p] = keptAsTiled(*tiledPieces[p], tiledValidations[p], SurfaceFinish::Tiled,
                                   "it crossed another piece once finished");
   }
   std::vector<MeshValidation> validations;
@@ -307,11 +325,13 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   MeshValidation validation = joinedValidation(validations, crossingTriangles);
   // Each piece faces as its tiled self did; whether that is right depends on which piece lies inside which.
   validation.misorientedComponents = misorientedComponents(finishedPieces, volumes);
+  split = {}; // no longer needed: not held beside the joined copy of the pieces
   std::vector<std::size_t> firstTriangle;
   TriangleMesh joined = joinPieces(pieces, firstTriangle);
   if (!validation.valid() || validation.components != tilingValidation.components ||
       validation.eulerCharacteristic != tilingValidation.eulerCharacteristic)
   {
+    result.mesh = tiling;
     result.validation = complete(tiling, tilingValidation);
     result.fallback = "the finished pieces do not make a valid surface together (" + validation.summary() +
                       "), so the tiling is written";

@@ -2,12 +2,10 @@
 
 #include "Core/ParallelFor.h"
 #include "Finishing/RemeshingRegions.h"
+#include "Finishing/TriangleMeshTree.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/SurfaceMeshConversion.h"
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 
@@ -27,8 +25,7 @@ namespace
 using Kernel = CgalKernel;
 using SurfaceMesh = CgalSurfaceMesh;
 using Vertex = SurfaceMesh::Vertex_index;
-using Primitive = CGAL::AABB_face_graph_triangle_primitive<SurfaceMesh>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+using Tree = TriangleMeshTree;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 SurfaceMesh surfaceOf(const TriangleMesh& mesh)
@@ -295,8 +292,11 @@ TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& reg
  *  the seams is left; the slabs and bands depend on the piece only, never on the threads. */
 TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads)
 {
-  const SurfaceMesh input = surfaceOf(mesh);
-  Tree tree(faces(input).first, faces(input).second, input);
+  // The piece must fit a manifold surface (surfaceOf throws otherwise); the tree is built on the
+  // piece itself, not on that surface, which would double what the tree holds.
+  surfaceOf(mesh);
+  Tree tree;
+  insertTriangles(tree, mesh);
   // No k-d tree of hints: every query brings its own (projectOntoInput).
   tree.do_not_accelerate_distance_queries();
   tree.build(); // before the queries run side by side
@@ -326,7 +326,9 @@ TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions
   seam.resize(slabbed.points.size(), 0);
   int bands = 0;
   const std::vector<int> bandOf = seamBands(slabbed, seam, 3, bands);
-  return withoutUnusedVertices(remeshRegions(slabbed, bandOf, bands, options, tree, threads, /*keepFailed=*/true));
+  const TriangleMesh banded = remeshRegions(slabbed, bandOf, bands, options, tree, threads, /*keepFailed=*/true);
+  slabbed = TriangleMesh(); // not held beside the banded mesh and its copy without unused vertices
+  return withoutUnusedVertices(banded);
 }
 
 } // namespace
@@ -338,6 +340,11 @@ TriangleMesh remeshSurface(const TriangleMesh& mesh, const SurfaceRemeshingOptio
   if (options.iterations <= 0 || mesh.triangles.empty())
     return mesh;
   // Piece by piece: each vertex is projected back onto its own piece, never onto a neighbour.
+  // A mesh that is one piece (what finishSurface hands over) is its own piece: no copy of it is held.
+  std::size_t components = 0;
+  vertexComponents(mesh, components);
+  if (components == 1)
+    return remeshPiece(mesh, options, threads);
   std::vector<TriangleMesh> pieces = splitIntoPieces(mesh);
   for (TriangleMesh& piece : pieces)
     piece = remeshPiece(piece, options, threads);

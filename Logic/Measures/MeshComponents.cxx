@@ -59,6 +59,14 @@ std::vector<TriangleMesh> splitIntoPieces(const TriangleMesh& mesh)
 }
 
 
+void appendMesh(TriangleMesh& joined, const TriangleMesh& mesh)
+{
+  const auto offset = static_cast<std::int32_t>(joined.points.size());
+  joined.points.insert(joined.points.end(), mesh.points.begin(), mesh.points.end());
+  for (const Triangle& t : mesh.triangles)
+    joined.triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+}
+
 TriangleMesh joinMeshes(const std::vector<const TriangleMesh*>& meshes, std::vector<std::size_t>* firstTriangle)
 {
   TriangleMesh joined;
@@ -68,10 +76,7 @@ TriangleMesh joinMeshes(const std::vector<const TriangleMesh*>& meshes, std::vec
   {
     if (firstTriangle)
       firstTriangle->push_back(joined.triangles.size());
-    const auto offset = static_cast<std::int32_t>(joined.points.size());
-    joined.points.insert(joined.points.end(), mesh->points.begin(), mesh->points.end());
-    for (const Triangle& t : mesh->triangles)
-      joined.triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+    appendMesh(joined, *mesh);
   }
   return joined;
 }

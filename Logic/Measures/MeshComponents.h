@@ -18,6 +18,9 @@ std::vector<std::size_t> vertexComponents(const TriangleMesh& mesh, std::size_t&
  *  back as it was. Vertices in no triangle are left out. */
 std::vector<TriangleMesh> splitIntoPieces(const TriangleMesh& mesh);
 
+/** `mesh` appended to `joined`, side by side (its vertices renumbered after joined's, none shared). */
+void appendMesh(TriangleMesh& joined, const TriangleMesh& mesh);
+
 /** The meshes side by side in one mesh, in their order (vertices renumbered, none shared); if
  *  `firstTriangle` is given, (*firstTriangle)[i] is where mesh i's triangles start. */
 TriangleMesh joinMeshes(const std::vector<const TriangleMesh*>& meshes,

@@ -297,7 +297,7 @@ SegmentationFile readDicomSegmentation(const std::string& path)
   for (const auto& [first, last] : range)
     voxels += static_cast<double>(columns) * rows * static_cast<double>(std::max(last - first + 1, 1L));
   checkMemoryBudget(path + ": the label maps of " + std::to_string(file.segments.size()) + " segments",
-                    voxels * (4.0 + 15.0));
+                    runMemoryBytes(voxels, 4.0)); // float label maps
   for (std::size_t s = 0; s < file.segments.size(); ++s)
   {
     const auto [first, last] = range[s];

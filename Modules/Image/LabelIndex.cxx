@@ -7,16 +7,33 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <type_traits>
 
 namespace slicemesh
 {
-
-std::vector<LabelExtent> indexLabels(const ScalarVolume* labelMap)
+namespace
 {
+
+/** Whether a voxel value is no label: negative, fractional, not finite, or 2^31 or more. */
+template <typename Pixel>
+bool notALabel(Pixel value)
+{
+  if constexpr (std::is_floating_point_v<Pixel>)
+    return !(value > 0.0f) || value >= 2147483648.0f || std::floor(value) != value;
+  else if constexpr (std::is_signed_v<Pixel>)
+    return value < 0;
+  else
+    return false; // one or two bytes: below 2^31
+}
+
+template <typename TImage>
+std::vector<LabelExtent> indexLabelsOf(const TImage* labelMap)
+{
+  using Pixel = typename TImage::PixelType;
   const auto region = labelMap->GetBufferedRegion();
   const auto size = region.GetSize();
   const auto start = region.GetIndex();
-  const float* voxel = labelMap->GetBufferPointer();
+  const Pixel* voxel = labelMap->GetBufferPointer();
   std::map<int, LabelExtent> extents;
   // Most label maps have a few hundred labels at most: a table for the small ones, a map beyond.
   std::vector<LabelExtent> table(4096);
@@ -24,13 +41,14 @@ std::vector<LabelExtent> indexLabels(const ScalarVolume* labelMap)
     for (long j = 0; j < static_cast<long>(size[1]); ++j)
       for (long i = 0; i < static_cast<long>(size[0]); ++i, ++voxel)
       {
-        const float value = *voxel;
-        if (value == 0.0f)
+        const Pixel value = *voxel;
+        if (value == Pixel(0))
           continue;
-        if (!(value > 0.0f) || value >= 2147483648.0f || std::floor(value) != value)
+        if (notALabel(value))
         {
           std::ostringstream message;
-          message << "voxel (" << i + start[0] << ", " << j + start[1] << ", " << k + start[2] << ") holds " << value
+          message << "voxel (" << i + start[0] << ", " << j + start[1] << ", " << k + start[2] << ") holds "
+                  << +value
                   << ": not a label map (labels are non-negative integers)";
           throw Error(message.str());
         }
@@ -58,8 +76,10 @@ std::vector<LabelExtent> indexLabels(const ScalarVolume* labelMap)
   return labels;
 }
 
-MaskVolume::Pointer cropLabelMask(const ScalarVolume* labelMap, const LabelExtent& extent)
+template <typename TImage>
+MaskVolume::Pointer cropLabelMaskOf(const TImage* labelMap, const LabelExtent& extent)
 {
+  using Pixel = typename TImage::PixelType;
   const auto region = labelMap->GetBufferedRegion();
   MaskVolume::IndexType index;
   MaskVolume::SizeType size;
@@ -78,7 +98,8 @@ MaskVolume::Pointer cropLabelMask(const ScalarVolume* labelMap, const LabelExten
   mask->SetDirection(labelMap->GetDirection());
   mask->SetRegions(box);
   mask->Allocate();
-  const float wanted = static_cast<float>(extent.label);
+  // A float label map compares as it always did; integers compare exactly.
+  const Pixel wanted = static_cast<Pixel>(extent.label);
   const auto full = region.GetSize();
   unsigned char* out = mask->GetBufferPointer();
   for (std::size_t k = 0; k < size[2]; ++k)
@@ -87,11 +108,63 @@ MaskVolume::Pointer cropLabelMask(const ScalarVolume* labelMap, const LabelExten
       const std::size_t row = ((k + index[2] - region.GetIndex()[2]) * full[1] + (j + index[1] - region.GetIndex()[1])) *
                                 full[0] +
                               (index[0] - region.GetIndex()[0]);
-      const float* in = labelMap->GetBufferPointer() + row;
+      const Pixel* in = labelMap->GetBufferPointer() + row;
       for (std::size_t i = 0; i < size[0]; ++i)
         *out++ = in[i] == wanted ? 1 : 0;
     }
   return mask;
+}
+
+} // namespace
+
+std::vector<LabelExtent> indexLabels(const ScalarVolume* labelMap)
+{
+  return indexLabelsOf(labelMap);
+}
+
+MaskVolume::Pointer cropLabelMask(const ScalarVolume* labelMap, const LabelExtent& extent)
+{
+  return cropLabelMaskOf(labelMap, extent);
+}
+
+std::vector<LabelExtent> indexLabels(const itk::Image<std::uint8_t, 3>* labelMap)
+{
+  return indexLabelsOf(labelMap);
+}
+
+MaskVolume::Pointer cropLabelMask(const itk::Image<std::uint8_t, 3>* labelMap, const LabelExtent& extent)
+{
+  return cropLabelMaskOf(labelMap, extent);
+}
+
+std::vector<LabelExtent> indexLabels(const itk::Image<std::int8_t, 3>* labelMap)
+{
+  return indexLabelsOf(labelMap);
+}
+
+MaskVolume::Pointer cropLabelMask(const itk::Image<std::int8_t, 3>* labelMap, const LabelExtent& extent)
+{
+  return cropLabelMaskOf(labelMap, extent);
+}
+
+std::vector<LabelExtent> indexLabels(const itk::Image<std::uint16_t, 3>* labelMap)
+{
+  return indexLabelsOf(labelMap);
+}
+
+MaskVolume::Pointer cropLabelMask(const itk::Image<std::uint16_t, 3>* labelMap, const LabelExtent& extent)
+{
+  return cropLabelMaskOf(labelMap, extent);
+}
+
+std::vector<LabelExtent> indexLabels(const itk::Image<std::int16_t, 3>* labelMap)
+{
+  return indexLabelsOf(labelMap);
+}
+
+MaskVolume::Pointer cropLabelMask(const itk::Image<std::int16_t, 3>* labelMap, const LabelExtent& extent)
+{
+  return cropLabelMaskOf(labelMap, extent);
 }
 
 } // namespace slicemesh

@@ -72,7 +72,23 @@ std::string gibibytes(double bytes)
   return text.str();
 }
 
+/** The program itself: libraries and their data, about 54 MB resident before any work. */
+constexpr double bytesOfTheProgram = 64.0 * 1024.0 * 1024.0;
+
+/** Per voxel besides the volume: the mask (1 byte) and the contours and meshes of a large structure.
+ *  The volume is dropped once the masks are cut and each mask once it is traced, so the meshes' share
+ *  was measured as the peak less the program (/usr/bin/time, scaling benchmark inputs): 6.7 bytes a
+ *  voxel on a 445 x 385 x 269 uchar label map with a large ellipsoid (357 MB peak, 0.92 M triangles),
+ *  5.9 on a sphere of 512^3 (848 MB, 1.88 M triangles), 9.7 on the same at 256^3 (213 MB). A
+ *  surface's share per voxel shrinks as the volume grows, and the estimate matters for large ones. */
+constexpr double bytesPerVoxelOfARun = 8.0;
+
 } // namespace
+
+double runMemoryBytes(double voxels, double volumeBytesPerVoxel)
+{
+  return bytesOfTheProgram + voxels * (volumeBytesPerVoxel + bytesPerVoxelOfARun);
+}
 
 double availableMemoryBytes()
 {

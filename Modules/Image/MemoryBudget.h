@@ -14,6 +14,12 @@ namespace slicemesh
  *  and to keep a shared machine responsive). Returns 0 when nothing can be measured. */
 double availableMemoryBytes();
 
+/** The memory a run needs at its peak for a volume of `voxels` voxels held at `volumeBytesPerVoxel`
+ *  (the label maps as read, with what their reading holds beside them): that, the program itself
+ *  and, per voxel, the mask and the contours and meshes of a large structure (measured: see
+ *  MemoryBudget.cxx). */
+double runMemoryBytes(double voxels, double volumeBytesPerVoxel);
+
 /** Throws slicemesh::Error ("<what> needs about X GiB of memory; Y GiB are available ...") when
  *  neededBytes exceed availableMemoryBytes(). Does nothing when the available memory is unknown. */
 void checkMemoryBudget(const std::string& what, double neededBytes);

@@ -113,12 +113,12 @@ SegmentationFile readSlicerSegmentation(const std::string& path)
     double voxels = 1.0;
     for (unsigned int axis = 0; axis < 3; ++axis)
       voxels *= static_cast<double>(io->GetDimensions(axis));
-    // The file's voxels, the float stack ITK reads them into, the layers split from it, and the run.
-    const double bytesPerVoxel = static_cast<double>(layerCount) * (io->GetComponentSize() + 4.0 + 4.0) + 15.0;
+    // The file's voxels, the float stack ITK reads them into and the layers split from it, and the run.
+    const double layerBytesPerVoxel = static_cast<double>(layerCount) * (io->GetComponentSize() + 4.0 + 4.0);
     std::ostringstream what;
     what << path << ": a " << io->GetDimensions(0) << " x " << io->GetDimensions(1) << " x " << io->GetDimensions(2)
          << " segmentation of " << layerCount << " layer(s)";
-    checkMemoryBudget(what.str(), voxels * bytesPerVoxel);
+    checkMemoryBudget(what.str(), runMemoryBytes(voxels, layerBytesPerVoxel));
   }
 
   using LayerStack = itk::VectorImage<float, 3>;

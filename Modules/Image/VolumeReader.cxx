@@ -85,13 +85,18 @@ VolumeGeometry checkHeaderGeometry(const std::string& path, const itk::ImageIOBa
   return geometry;
 }
 
-/** Bytes per voxel a run holds at its peak besides the file's own voxels: the float volume (4), the
- *  mask (1), and the contours and mesh of a large structure. Measured: 1.66 GB peak for a 512 x 512 x
- *  400 label map with a large ellipsoid (2.56 M triangles), 15.8 bytes per voxel (README, "Limits"). */
-constexpr double bytesPerVoxelOfARun = 15.0;
+/** Whether readStoredVolume keeps a file's voxels as they are stored: integers of one or two bytes
+ *  (StoredVolume's alternatives), which float would make larger. */
+bool keptAsStored(itk::IOComponentEnum component)
+{
+  return component == itk::IOComponentEnum::UCHAR || component == itk::IOComponentEnum::CHAR ||
+         component == itk::IOComponentEnum::USHORT || component == itk::IOComponentEnum::SHORT;
+}
 
-/** Checks what the file header says before any voxel is read: dimension, components, geometry. */
-void checkHeader(const std::string& path, const itk::ImageIOBase* io)
+/** Checks what the file header says before any voxel is read: dimension, components, geometry.
+ *  `asStored`: the voxels will be read as stored where keptAsStored says so (readStoredVolume),
+ *  else as float (readVolume). */
+void checkHeader(const std::string& path, const itk::ImageIOBase* io, bool asStored)
 {
   const unsigned int dimension = io->GetNumberOfDimensions();
   // A 4-D image with a single time point is a 3-D volume in a 4-D container (common in NIfTI).
@@ -109,18 +114,21 @@ void checkHeader(const std::string& path, const itk::ImageIOBase* io)
             << " components per voxel; SliceMesh needs a scalar volume";
     throw Error(message.str());
   }
-  // Memory, before a voxel is allocated: the file's voxels (when not float already), the float
-  // volume, the mask and the work on them (measured: see the README's "Limits").
+  // Memory, before a voxel is allocated: the volume as it will be held (as stored; or as float,
+  // beside the file's own voxels while ITK converts them), the mask and the work on them.
   double voxels = 1.0;
   for (unsigned int axis = 0; axis < 3; ++axis)
     voxels *= static_cast<double>(io->GetDimensions(axis));
-  const double fileBytesPerVoxel =
-    io->GetComponentType() == itk::IOComponentEnum::FLOAT ? 0.0 : static_cast<double>(io->GetComponentSize());
+  const double fileBytesPerVoxel = static_cast<double>(io->GetComponentSize());
+  const double volumeBytesPerVoxel = asStored && keptAsStored(io->GetComponentType()) ? fileBytesPerVoxel
+                                     : io->GetComponentType() == itk::IOComponentEnum::FLOAT
+                                       ? 4.0
+                                       : 4.0 + fileBytesPerVoxel;
   {
     std::ostringstream what;
     what << path << ": a " << io->GetDimensions(0) << " x " << io->GetDimensions(1) << " x " << io->GetDimensions(2)
          << " volume";
-    checkMemoryBudget(what.str(), voxels * (fileBytesPerVoxel + bytesPerVoxelOfARun));
+    checkMemoryBudget(what.str(), runMemoryBytes(voxels, volumeBytesPerVoxel));
   }
 
   checkHeaderGeometry(path, io);
@@ -260,16 +268,24 @@ itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
   return io;
 }
 
-ScalarVolume::Pointer readImageFile(const std::string& path)
+/** The header of an image file, checked (dimension, components, geometry, NIfTI's size and
+ *  spacing, memory; `asStored` as checkHeader's) before any voxel is read. */
+itk::ImageIOBase::Pointer checkedImageHeader(const std::string& path, bool asStored)
 {
   if (endsWith(path, ".gz") || endsWith(path, ".GZ"))
     checkGzipStream(path);
   itk::ImageIOBase::Pointer io = readImageHeader(path);
-  checkHeader(path, io);
+  checkHeader(path, io, asStored);
   checkNiftiFileSize(path, io);
   checkNiftiSpacing(path);
+  return io;
+}
 
-  using Reader = itk::ImageFileReader<ScalarVolume>;
+/** The voxels of the image file whose header `io` holds, as TImage's pixels. */
+template <typename TImage>
+typename TImage::Pointer readImageFileAs(const std::string& path, itk::ImageIOBase* io)
+{
+  using Reader = itk::ImageFileReader<TImage>;
   auto reader = Reader::New();
   reader->SetFileName(path);
   reader->SetImageIO(io);
@@ -286,14 +302,14 @@ ScalarVolume::Pointer readImageFile(const std::string& path)
   }
   if (!complaints.empty())
     throw Error(path + ": cannot read the voxels (a truncated or damaged file?): " + oneLine(complaints));
-  ScalarVolume::Pointer volume = reader->GetOutput();
+  typename TImage::Pointer volume = reader->GetOutput();
   volume->DisconnectPipeline();
 
   if (io->GetNumberOfDimensions() == 4)
   {
     // ITK's reader falls back to the identity direction when it drops a dimension; the first
     // three axes of the file still say where the volume is.
-    ScalarVolume::DirectionType direction;
+    typename TImage::DirectionType direction;
     for (unsigned int axis = 0; axis < 3; ++axis)
     {
       const std::vector<double> column = io->GetDirection(axis);
@@ -413,7 +429,27 @@ ScalarVolume::Pointer readVolume(const std::string& path)
     throw Error(path + ": no such file or directory");
   if (std::filesystem::is_directory(file, ignored))
     return readDicomSeries(path);
-  return readImageFile(path);
+  itk::ImageIOBase::Pointer io = checkedImageHeader(path, false);
+  return readImageFileAs<ScalarVolume>(path, io);
+}
+
+StoredVolume readStoredVolume(const std::string& path)
+{
+  std::error_code ignored;
+  const std::filesystem::path file(path);
+  if (!std::filesystem::exists(file, ignored))
+    throw Error(path + ": no such file or directory");
+  if (std::filesystem::is_directory(file, ignored))
+    return readDicomSeries(path);
+  itk::ImageIOBase::Pointer io = checkedImageHeader(path, true);
+  switch (io->GetComponentType()) // the types keptAsStored names; float for the others
+  {
+    case itk::IOComponentEnum::UCHAR: return readImageFileAs<itk::Image<std::uint8_t, 3>>(path, io);
+    case itk::IOComponentEnum::CHAR: return readImageFileAs<itk::Image<std::int8_t, 3>>(path, io);
+    case itk::IOComponentEnum::USHORT: return readImageFileAs<itk::Image<std::uint16_t, 3>>(path, io);
+    case itk::IOComponentEnum::SHORT: return readImageFileAs<itk::Image<std::int16_t, 3>>(path, io);
+    default: return readImageFileAs<ScalarVolume>(path, io);
+  }
 }
 
 } // namespace slicemesh

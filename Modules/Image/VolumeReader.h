@@ -5,8 +5,9 @@
 #include "itkImage.h"
 
 #include <array>
-
+#include <cstdint>
 #include <string>
+#include <variant>
 
 namespace slicemesh
 {
@@ -14,9 +15,21 @@ namespace slicemesh
 using ScalarVolume = itk::Image<float, 3>;
 using MaskVolume = itk::Image<unsigned char, 3>;
 
+/** A volume in the pixel type its file stores, so that a label map of bytes takes one byte a voxel
+ *  in memory, not the four of float (on a large label map, the largest share of a run's peak).
+ *  Integers of one or two bytes as stored (label maps: NRRD's uchar, NIfTI's uint8 and int16,
+ *  Slicer's short); anything else (wider integers, floating point) as float, which is no larger. */
+using StoredVolume =
+  std::variant<ScalarVolume::Pointer, itk::Image<std::uint8_t, 3>::Pointer, itk::Image<std::int8_t, 3>::Pointer,
+               itk::Image<std::uint16_t, 3>::Pointer, itk::Image<std::int16_t, 3>::Pointer>;
+
 /** Reads a volume as float voxels. A directory is read as a DICOM series (the first series found).
  *  Throws slicemesh::Error with a one-line message on a missing, unreadable or non-3D input. */
 ScalarVolume::Pointer readVolume(const std::string& path);
+
+/** Reads a volume in the pixel type of its file (StoredVolume), with readVolume's checks and errors.
+ *  A DICOM series is read as float. The voxel values are those readVolume gives. */
+StoredVolume readStoredVolume(const std::string& path);
 
 /** Where a volume's slices lie, from its header alone: what contours drawn on it are stacked by. */
 struct VolumeGeometry

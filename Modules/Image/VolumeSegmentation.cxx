@@ -3,6 +3,7 @@
 #include "VolumeSegmentation.h"
 
 #include "GrayscaleSegmentation.h"
+#include "StoredVolume.h"
 
 #include "Core/SliceMeshTypes.h"
 
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <set>
 #include <sstream>
+#include <type_traits>
 #include <vector>
 
 namespace slicemesh
@@ -22,23 +24,33 @@ namespace
 /** The distinct voxel values of a label map, or nothing when the volume is not one: a voxel that
  *  is negative, fractional or non-finite, or more than 65535 distinct values. One pass over the
  *  voxels; the common small labels are tallied in a table, rare large ones in a set. */
-std::optional<std::vector<double>> labelsOf(const ScalarVolume* volume)
+template <typename TImage>
+std::optional<std::vector<double>> labelsOf(const TImage* volume)
 {
+  using Pixel = typename TImage::PixelType;
   constexpr std::size_t maxLabels = 65535;
   constexpr std::size_t tableSize = 65536;
   std::vector<unsigned char> seenSmall(tableSize, 0);
-  std::set<float> seenLarge;
+  std::set<Pixel> seenLarge;
   std::size_t distinct = 0;
 
-  const float* voxel = volume->GetBufferPointer();
-  const float* end = voxel + volume->GetBufferedRegion().GetNumberOfPixels();
+  const Pixel* voxel = volume->GetBufferPointer();
+  const Pixel* end = voxel + volume->GetBufferedRegion().GetNumberOfPixels();
   for (; voxel != end; ++voxel)
   {
-    const float value = *voxel;
+    const Pixel value = *voxel;
     // NaN fails the first test, fractions the second (std::floor keeps infinities, so test them).
-    if (!(value >= 0.0f) || std::floor(value) != value || std::isinf(value))
-      return std::nullopt;
-    if (value < static_cast<float>(tableSize))
+    if constexpr (std::is_floating_point_v<Pixel>)
+    {
+      if (!(value >= 0.0f) || std::floor(value) != value || std::isinf(value))
+        return std::nullopt;
+    }
+    else if constexpr (std::is_signed_v<Pixel>)
+    {
+      if (value < 0)
+        return std::nullopt;
+    }
+    if (static_cast<double>(value) < static_cast<double>(tableSize))
     {
       unsigned char& seen = seenSmall[static_cast<std::size_t>(value)];
       if (seen)
@@ -55,8 +67,8 @@ std::optional<std::vector<double>> labelsOf(const ScalarVolume* volume)
   for (std::size_t value = 0; value < tableSize; ++value)
     if (seenSmall[value])
       labels.push_back(static_cast<double>(value));
-  for (float value : seenLarge)
-    labels.push_back(value);
+  for (Pixel value : seenLarge)
+    labels.push_back(static_cast<double>(value));
   return labels;
 }
 
@@ -76,7 +88,7 @@ double otsuThreshold(const ScalarVolume* volume)
   return calculator->GetThreshold();
 }
 
-MaskVolume::Pointer allocateMaskLike(const ScalarVolume* volume)
+MaskVolume::Pointer allocateMaskLike(const itk::ImageBase<3>* volume)
 {
   auto mask = MaskVolume::New();
   mask->CopyInformation(volume);
@@ -86,10 +98,10 @@ MaskVolume::Pointer allocateMaskLike(const ScalarVolume* volume)
 }
 
 /** Fills the mask with 1 where inside(voxel) holds; returns the count of inside voxels. */
-template <typename InsideTest>
-std::size_t fillMask(const ScalarVolume* volume, MaskVolume* mask, InsideTest inside)
+template <typename TImage, typename InsideTest>
+std::size_t fillMask(const TImage* volume, MaskVolume* mask, InsideTest inside)
 {
-  const float* voxel = volume->GetBufferPointer();
+  const auto* voxel = volume->GetBufferPointer();
   const std::size_t count = volume->GetBufferedRegion().GetNumberOfPixels();
   unsigned char* out = mask->GetBufferPointer();
   std::size_t insideCount = 0;
@@ -122,12 +134,38 @@ std::string listOfLabels(const std::vector<double>& labels)
   return listed ? list.str() : std::string("none besides background 0");
 }
 
-std::string volumeName(const ScalarVolume* volume)
+std::string volumeName(const itk::ImageBase<3>* volume)
 {
   const auto size = volume->GetBufferedRegion().GetSize();
   std::ostringstream name;
   name << "volume " << size[0] << "x" << size[1] << "x" << size[2];
   return name.str();
+}
+
+/** The label map's mask: the voxels of the label asked for, or every non-zero one; refined.
+ *  `labels`: the label map's labels (for the message when the label is absent), if it is one. */
+template <typename TImage>
+MaskVolume::Pointer labelMapMask(const TImage* volume, const SegmentationOptions& options,
+                                 const std::optional<std::vector<double>>& labels)
+{
+  using Pixel = typename TImage::PixelType;
+  MaskVolume::Pointer mask = allocateMaskLike(volume);
+  if (options.label)
+  {
+    // Compared as float, as a label map read as float voxels always was.
+    const float wanted = static_cast<float>(*options.label);
+    if (fillMask(volume, mask, [wanted](Pixel v) { return static_cast<float>(v) == wanted; }) == 0)
+    {
+      std::ostringstream message;
+      message << volumeName(volume) << ": no voxel has label " << *options.label << "; labels present: "
+              << (labels ? listOfLabels(*labels) : std::string("none (not a label map)"));
+      throw Error(message.str());
+    }
+  }
+  else if (fillMask(volume, mask, [](Pixel v) { return v != Pixel(0) && !std::isnan(static_cast<float>(v)); }) == 0)
+    throw Error(volumeName(volume) + ": every voxel is 0; nothing to mesh");
+  refineMask(mask, options.refinement);
+  return mask;
 }
 
 } // namespace
@@ -146,26 +184,10 @@ MaskVolume::Pointer segmentVolume(const ScalarVolume* volume, const Segmentation
       kind = labels ? InputKind::LabelMap : InputKind::Grayscale;
   }
 
-  MaskVolume::Pointer mask = allocateMaskLike(volume);
   if (kind == InputKind::LabelMap)
-  {
-    if (options.label)
-    {
-      const float wanted = static_cast<float>(*options.label);
-      if (fillMask(volume, mask, [wanted](float v) { return v == wanted; }) == 0)
-      {
-        std::ostringstream message;
-        message << volumeName(volume) << ": no voxel has label " << *options.label << "; labels present: "
-                << (labels ? listOfLabels(*labels) : std::string("none (not a label map)"));
-        throw Error(message.str());
-      }
-    }
-    else if (fillMask(volume, mask, [](float v) { return v != 0.0f && !std::isnan(v); }) == 0)
-      throw Error(volumeName(volume) + ": every voxel is 0; nothing to mesh");
-    refineMask(mask, options.refinement);
-    return mask;
-  }
+    return labelMapMask(volume, options, labels);
 
+  MaskVolume::Pointer mask = allocateMaskLike(volume);
   if (options.grayscale.beyondPlainThreshold())
   {
     GrayscaleSegmentationOptions grayscale = options.grayscale;
@@ -211,6 +233,26 @@ MaskVolume::Pointer segmentVolume(const ScalarVolume* volume, const Segmentation
   }
   refineMask(mask, options.refinement);
   return mask;
+}
+
+MaskVolume::Pointer segmentStoredVolume(StoredVolume volume, const SegmentationOptions& options)
+{
+  if (auto* asFloat = std::get_if<ScalarVolume::Pointer>(&volume))
+    return segmentVolume(*asFloat, options);
+  const itk::ImageBase<3>* image = imageOf(volume);
+  if (!image || image->GetBufferedRegion().GetNumberOfPixels() == 0)
+    throw Error("segmentVolume: an empty volume");
+  // Integers: a label map unless grayscale is asked for or a voxel is negative (labelsOf).
+  const std::optional<std::vector<double>> labels =
+    options.kind == InputKind::Grayscale
+      ? std::nullopt
+      : std::visit([](const auto& stored) { return labelsOf(stored.GetPointer()); }, volume);
+  if (options.kind == InputKind::LabelMap || (options.kind == InputKind::Automatic && labels))
+    return std::visit([&](const auto& stored) { return labelMapMask(stored.GetPointer(), options, labels); }, volume);
+  // Grayscale methods work on float: the stored voxels go as soon as they are widened.
+  const ScalarVolume::Pointer widened = floatVolumeOf(volume);
+  volume = ScalarVolume::Pointer();
+  return segmentVolume(widened, options);
 }
 
 } // namespace slicemesh

@@ -36,6 +36,11 @@ struct SegmentationOptions
 /** Throws slicemesh::Error when the mask would be empty (naming the labels that do occur). */
 MaskVolume::Pointer segmentVolume(const ScalarVolume* volume, const SegmentationOptions& options);
 
+/** segmentVolume on a volume in the pixel type its file stores (readStoredVolume), with the same
+ *  mask. Taken by value: integers segmented as grayscale are widened to float and then released,
+ *  so that both are held only while widening, as when the file is read as float. */
+MaskVolume::Pointer segmentStoredVolume(StoredVolume volume, const SegmentationOptions& options);
+
 } // namespace slicemesh
 
 #endif

@@ -8,10 +8,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
+#include <type_traits>
 
 namespace fs = std::filesystem;
 
@@ -48,6 +52,26 @@ double expectedBoxVolume(int a, int b, int slices, double sliceThickness)
   const double r = 0.5 * sliceThickness;
   const double perimeter = 2.0 * (a + b) - 4.0 + 4.0 * std::sqrt(0.5);
   return (a * b - 4 * 0.125) * slices * sliceThickness - 2.0 * perimeter * r * r * (1.0 - M_PI / 4.0);
+}
+
+/** A 3D MetaImage of MET_USHORT or MET_FLOAT voxels (`Pixel`), voxel (i, j, k) value(i, j, k). */
+template <typename Pixel>
+void writeMetaImageOf(const fs::path& path, std::array<int, 3> size, std::array<double, 3> spacing,
+                      const std::function<Pixel(int, int, int)>& value)
+{
+  std::ofstream out(path, std::ios::binary);
+  out << "ObjectType = Image\nNDims = 3\nBinaryData = True\nBinaryDataByteOrderMSB = False\n"
+      << "Offset = 0 0 0\nTransformMatrix = 1 0 0 0 1 0 0 0 1\n"
+      << "ElementSpacing = " << spacing[0] << " " << spacing[1] << " " << spacing[2] << "\n"
+      << "DimSize = " << size[0] << " " << size[1] << " " << size[2] << "\n"
+      << "ElementType = " << (std::is_same_v<Pixel, float> ? "MET_FLOAT" : "MET_USHORT") << "\nElementDataFile = LOCAL\n";
+  for (int k = 0; k < size[2]; ++k)
+    for (int j = 0; j < size[1]; ++j)
+      for (int i = 0; i < size[0]; ++i)
+      {
+        const Pixel v = value(i, j, k);
+        out.write(reinterpret_cast<const char*>(&v), sizeof v);
+      }
 }
 
 std::map<std::string, std::string> returnParameterMap(const fs::path& path)
@@ -499,6 +523,39 @@ TEST(EndToEnd, SnapshotWithoutDisplayFailsBeforeAnyWorkOnBothPaths)
   for (const fs::directory_entry& entry : fs::directory_iterator(folder))
     files.push_back(entry.path().filename().string());
   EXPECT_EQ(files, std::vector<std::string>{ input.filename().string() });
+}
+
+TEST(EndToEnd, LabelsAboveOneByteAreMeshedAsFromFloat)
+{
+  // A label map of 2-byte labels is read as stored (2 bytes a voxel, not float's 4): labels above
+  // 255 keep their values, and each is meshed exactly as from the same labels stored as float.
+  const fs::path folder = freshFolder("e2e-wide-labels");
+  const auto label = [](int i, int j, int k) -> int
+  {
+    if (i >= 2 && i < 8 && j >= 2 && j < 9 && k >= 1 && k < 5)
+      return 300;
+    if (i >= 10 && i < 14 && j >= 4 && j < 12 && k >= 2 && k < 7)
+      return 40000;
+    return 0;
+  };
+  writeMetaImageOf<std::uint16_t>(folder / "wide.mha", { 16, 16, 9 }, { 0.9, 0.9, 2.0 },
+                                  [&](int i, int j, int k) { return static_cast<std::uint16_t>(label(i, j, k)); });
+  writeMetaImageOf<float>(folder / "wide-float.mha", { 16, 16, 9 }, { 0.9, 0.9, 2.0 },
+                          [&](int i, int j, int k) { return static_cast<float>(label(i, j, k)); });
+  const fs::path report = folder / "report.json";
+  const RunResult stored = runSliceMesh("--splitLabels --report " + quoted(report.string()) + " " +
+                                        quoted((folder / "wide.mha").string()) + " " + quoted((folder / "stored.obj").string()));
+  ASSERT_EQ(stored.exitCode, cli::Success) << stored.err;
+  const RunResult asFloat = runSliceMesh("--splitLabels " + quoted((folder / "wide-float.mha").string()) + " " +
+                                         quoted((folder / "float.obj").string()));
+  ASSERT_EQ(asFloat.exitCode, cli::Success) << asFloat.err;
+  const std::string json = fileText(report);
+  EXPECT_FALSE(labelEntry(json, 300).empty()) << json;
+  EXPECT_FALSE(labelEntry(json, 40000).empty()) << json;
+  EXPECT_NE(linesOf(stored.out).back().find("2 components"), std::string::npos) << stored.out;
+  const std::string mesh = fileText(folder / "stored.obj");
+  EXPECT_FALSE(mesh.empty());
+  EXPECT_EQ(mesh, fileText(folder / "float.obj"));
 }
 
 } // namespace
