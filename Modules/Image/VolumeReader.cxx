@@ -15,11 +15,14 @@
 
 #include <zlib.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace slicemesh
@@ -181,17 +184,73 @@ private:
   std::streambuf*    m_Saved;
 };
 
+/** The fields of a NIfTI-1 header (plain or gzip) that SliceMesh checks itself, in the file's byte
+ *  order; empty when the file is shorter than a header or not NIfTI-1 (ITK then says what is wrong). */
+struct Nifti1Header
+{
+  std::array<std::int16_t, 8> dim{};
+  std::int16_t bitpix = 0;   ///< bits per stored voxel, before any scl_slope / scl_inter scaling
+  std::array<float, 8> pixdim{};
+  float voxOffset = 0.0f;    ///< where the voxels start
+};
+
+std::optional<Nifti1Header> readNifti1Header(const std::string& path)
+{
+  gzFile file = gzopen(path.c_str(), "rb");
+  if (!file)
+    return std::nullopt;
+  unsigned char bytes[348];
+  const int read = gzread(file, bytes, sizeof bytes);
+  gzclose(file);
+  if (read != static_cast<int>(sizeof bytes))
+    return std::nullopt;
+  auto field = [&](int offset, int size, bool swap)
+  {
+    std::array<unsigned char, 4> value{};
+    for (int i = 0; i < size; ++i)
+      value[static_cast<std::size_t>(i)] = bytes[offset + (swap ? size - 1 - i : i)];
+    return value;
+  };
+  auto int32 = [&](int offset, bool swap)
+  {
+    std::int32_t v;
+    std::memcpy(&v, field(offset, 4, swap).data(), 4);
+    return v;
+  };
+  bool swap = false;
+  if (int32(0, false) != 348)
+  {
+    if (int32(0, true) != 348)
+      return std::nullopt;
+    swap = true;
+  }
+  Nifti1Header header;
+  for (int i = 0; i < 8; ++i)
+  {
+    std::memcpy(&header.dim[static_cast<std::size_t>(i)], field(40 + 2 * i, 2, swap).data(), 2);
+    std::memcpy(&header.pixdim[static_cast<std::size_t>(i)], field(76 + 4 * i, 4, swap).data(), 4);
+  }
+  std::memcpy(&header.bitpix, field(72, 2, swap).data(), 2);
+  std::memcpy(&header.voxOffset, field(108, 4, swap).data(), 4);
+  return header;
+}
+
 /** An uncompressed single-file NIfTI holds its voxels after a header of at least 352 bytes; ITK 5.2
- *  reads a truncated one without complaint (the missing voxels come out as zeros). */
-void checkNiftiFileSize(const std::string& path, const itk::ImageIOBase* io)
+ *  reads a truncated one without complaint (the missing voxels come out as zeros). The size is the
+ *  stored one (bitpix): ITK reports a scaled file (scl_slope) as float whatever it stores. */
+void checkNiftiFileSize(const std::string& path)
 {
   if (!endsWith(path, ".nii") && !endsWith(path, ".NII"))
     return;
   std::error_code error;
   const auto fileSize = std::filesystem::file_size(path, error);
-  if (error)
-    return;
-  const double needed = 352.0 + static_cast<double>(io->GetImageSizeInBytes());
+  const std::optional<Nifti1Header> header = readNifti1Header(path);
+  if (error || !header || header->dim[0] < 1 || header->dim[0] > 7 || header->bitpix <= 0)
+    return; // ITK says what is wrong with the header
+  double voxels = 1.0;
+  for (int axis = 1; axis <= header->dim[0]; ++axis)
+    voxels *= std::max<std::int16_t>(1, header->dim[static_cast<std::size_t>(axis)]);
+  const double needed = std::max(352.0, static_cast<double>(header->voxOffset)) + voxels * header->bitpix / 8.0;
   if (static_cast<double>(fileSize) < needed)
   {
     std::ostringstream message;
@@ -209,35 +268,12 @@ void checkNiftiSpacing(const std::string& path)
 {
   if (!endsWith(path, ".nii") && !endsWith(path, ".nii.gz") && !endsWith(path, ".NII") && !endsWith(path, ".NII.GZ"))
     return;
-  gzFile file = gzopen(path.c_str(), "rb");
-  if (!file)
-    return;
-  unsigned char header[348];
-  const int read = gzread(file, header, sizeof header);
-  gzclose(file);
-  if (read != static_cast<int>(sizeof header))
-    return; // ITK reports the short file
-  auto word = [&](int offset, bool swap)
-  {
-    unsigned char bytes[4] = { header[offset], header[offset + 1], header[offset + 2], header[offset + 3] };
-    if (swap)
-      std::swap(bytes[0], bytes[3]), std::swap(bytes[1], bytes[2]);
-    std::uint32_t value;
-    std::memcpy(&value, bytes, 4);
-    return value;
-  };
-  bool swap = false;
-  if (word(0, false) != 348)
-  {
-    if (word(0, true) != 348)
-      return; // not NIfTI-1
-    swap = true;
-  }
+  const std::optional<Nifti1Header> header = readNifti1Header(path);
+  if (!header)
+    return; // ITK reports the short file, or it is not NIfTI-1
   for (int axis = 0; axis < 3; ++axis)
   {
-    const std::uint32_t bits = word(80 + 4 * axis, swap); // float pixdim[8] starts at byte 76
-    float spacing;
-    std::memcpy(&spacing, &bits, 4);
+    const float spacing = header->pixdim[static_cast<std::size_t>(axis) + 1];
     if (!std::isfinite(spacing) || spacing <= 0.0f)
     {
       std::ostringstream message;
@@ -276,7 +312,7 @@ itk::ImageIOBase::Pointer checkedImageHeader(const std::string& path, bool asSto
     checkGzipStream(path);
   itk::ImageIOBase::Pointer io = readImageHeader(path);
   checkHeader(path, io, asStored);
-  checkNiftiFileSize(path, io);
+  checkNiftiFileSize(path);
   checkNiftiSpacing(path);
   return io;
 }

@@ -172,6 +172,39 @@ TEST_F(VolumeReaderTest, TruncatedGzipIsAnError)
   EXPECT_EQ(message.find('\n'), std::string::npos) << message;
 }
 
+TEST_F(VolumeReaderTest, ScaledNiftiIsReadScaledAndItsStoredSizeChecked)
+{
+  // An uncompressed NIfTI of 2-byte voxels with scl_slope 2 and scl_inter 10 (as scanners write MR):
+  // ITK reports it as float, but the file holds 2 bytes a voxel. It is read, scaled; cut short, it
+  // is refused as truncated by what it stores.
+  using ShortVolume = itk::Image<short, 3>;
+  auto stored = ShortVolume::New();
+  stored->SetRegions(ShortVolume::SizeType{ { 6, 5, 4 } });
+  stored->Allocate();
+  short value = 0;
+  for (short* voxel = stored->GetBufferPointer(); voxel != stored->GetBufferPointer() + 120; ++voxel)
+    *voxel = value++;
+  write(stored.GetPointer(), path("scaled.nii"));
+  {
+    std::fstream file(path("scaled.nii"), std::ios::in | std::ios::out | std::ios::binary);
+    const float slope = 2.0f, intercept = 10.0f; // little-endian, as ITK wrote the header on this machine
+    file.seekp(112);
+    file.write(reinterpret_cast<const char*>(&slope), 4);
+    file.write(reinterpret_cast<const char*>(&intercept), 4);
+  }
+  const ScalarVolume::Pointer read = readVolume(path("scaled.nii"));
+  ASSERT_EQ(read->GetLargestPossibleRegion().GetNumberOfPixels(), 120u);
+  for (std::size_t i = 0; i < 120; ++i)
+    EXPECT_EQ(read->GetBufferPointer()[i], 2.0f * static_cast<float>(i) + 10.0f) << i;
+
+  fs::copy_file(path("scaled.nii"), path("cut.nii"));
+  fs::resize_file(path("cut.nii"), 352 + 2 * 100);
+  const std::string message = errorMessageOf([&] { readVolume(path("cut.nii")); });
+  EXPECT_NE(message.find("cut.nii: a truncated NIfTI file (552 bytes; its header promises at least 592)"),
+            std::string::npos)
+    << message;
+}
+
 TEST_F(VolumeReaderTest, TwoDimensionalImageIsAnError)
 {
   using Image2D = itk::Image<float, 2>;
