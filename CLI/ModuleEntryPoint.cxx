@@ -3,6 +3,7 @@
 #include "ModuleEntryPoint.h"
 
 #include "CommandLine.h"
+#include "DicomFolder.h"
 #include "ExitCodes.h"
 #include "HelpText.h"
 #include "ModuleDescription.h"
@@ -19,6 +20,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -36,9 +38,40 @@ int fail(ExitCode code, const std::string& message)
   return code;
 }
 
+/** A DICOM folder given as the input that holds a structure set, as a planning system exports a
+ *  plan (the CT slices and the RTSTRUCT side by side): its ROIs are what is meant, stacked on the
+ *  folder's image series. Two or more structure sets: which one is for the user to say. */
+void useStructureSetOfFolder(PipelineSettings& settings)
+{
+  std::error_code ignored;
+  if (!std::filesystem::is_directory(settings.inputVolume, ignored))
+    return;
+  const DicomFolderContents folder = dicomFolderContents(settings.inputVolume);
+  if (folder.structureSets.empty())
+    return;
+  auto name = [](const std::string& path) { return std::filesystem::path(path).filename().string(); };
+  if (folder.structureSets.size() > 1)
+  {
+    std::string names;
+    for (const std::string& path : folder.structureSets)
+      names += (names.empty() ? "" : ", ") + name(path);
+    throw PipelineFailure(UnreadableInput, settings.inputVolume + " holds " + std::to_string(folder.structureSets.size()) +
+                                             " structure sets (" + names +
+                                             "): give the one to mesh with --inputContours, the folder beside it");
+  }
+  settings.contours.path = folder.structureSets.front();
+  const bool series = folder.otherDicomFiles >= 2;
+  if (series)
+    settings.contours.referenceImage = settings.inputVolume;
+  std::cerr << "SliceMesh: " << settings.inputVolume << " holds a structure set, " << name(settings.contours.path)
+            << ": its ROIs are meshed" << (series ? ", stacked on the folder's image series" : "")
+            << " (to mesh the image series itself, give a folder without the structure set)" << std::endl;
+}
+
 /** The structure set or contour file to mesh: --inputContours, else the input itself when
- *  --contourFormat names a kind or the file is detected as one; empty for a volume. An input volume
- *  given beside --inputContours is the image the contours were drawn on. */
+ *  --contourFormat names a kind or the file is detected as one, or the structure set of a DICOM
+ *  folder; empty for a volume. An input volume given beside --inputContours is the image the
+ *  contours were drawn on. */
 void readContourArguments(const ParsedArguments& arguments, PipelineSettings& settings)
 {
   const std::string& format = arguments.text("contourFormat");
@@ -55,6 +88,8 @@ void readContourArguments(const ParsedArguments& arguments, PipelineSettings& se
   }
   else if (contours.kind != ContourFileKind::Automatic || detectContourFileKind(settings.inputVolume))
     contours.path = settings.inputVolume;
+  else
+    useStructureSetOfFolder(settings);
   std::istringstream rois(arguments.text("rois"));
   for (std::string roi; std::getline(rois, roi, ',');)
   {

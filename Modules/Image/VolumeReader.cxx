@@ -370,7 +370,14 @@ std::vector<std::string> dicomSeriesFiles(const std::string& directory)
     const std::vector<std::string>& seriesUIDs = names->GetSeriesUIDs();
     if (seriesUIDs.empty())
       throw Error(directory + ": a directory without a DICOM image series");
-    fileNames = names->GetFileNames(seriesUIDs.front());
+    // The series of the most files: an export holds the image series beside one-file objects of
+    // their own series (a structure set, a localizer, a dose), which are no volume.
+    for (const std::string& uid : seriesUIDs)
+    {
+      std::vector<std::string> files = names->GetFileNames(uid);
+      if (files.size() > fileNames.size())
+        fileNames = std::move(files);
+    }
   }
   catch (const itk::ExceptionObject& error)
   {

@@ -3,6 +3,7 @@
 // volume against the analytic one (caps half a slice beyond the end contours unless asked at them);
 // and the files that must fail with one line and write nothing.
 #include "CLITestSupport.h"
+#include "DicomSeriesWriter.h"
 #include "ExitCodes.h"
 #include "MeshReader.h"
 #include "Measures/MeshValidation.h"
@@ -414,6 +415,55 @@ TEST(StructureSet, ObliqueContoursStackAlongTheSlicesOfTheImageTheyWereDrawnOn)
   EXPECT_NEAR(lowest, -0.5 * Spacing, 0.5);
   EXPECT_NEAR(highest, 9.5 * Spacing, 0.5);
   EXPECT_NEAR(widest, r, 0.5);
+}
+
+TEST(StructureSet, ADicomFolderOfACTSeriesAndItsStructureSetMeshesTheROIsOnTheSeriesSlices)
+{
+  // A plan exported as planning systems do: the CT slices and the RTSTRUCT in one folder, given as the
+  // input. The ROIs are meshed (not the CT), stacked on the series' slices: contoured on every other
+  // slice but one, the series tells 3 mm where the contours alone would tell 6.
+  const ObliqueFrame f;
+  const Vector3 centre{ -20.0, 40.0, 60.0 };
+  const double r = 15.0;
+  const fs::path folder = freshFolder("StructureSetDicomFolder");
+  auto ct = testing::CTVolume::New();
+  ct->SetRegions(testing::CTVolume::SizeType{ { 64, 64, 12 } });
+  ct->Allocate(true);
+  testing::CTVolume::SpacingType spacing;
+  spacing[0] = spacing[1] = 0.8, spacing[2] = Spacing;
+  ct->SetSpacing(spacing);
+  testing::CTVolume::DirectionType direction;
+  testing::CTVolume::PointType origin; // the slice before the first contour, the circles in the middle
+  for (int row = 0; row < 3; ++row)
+  {
+    direction[row][0] = f.e1[row], direction[row][1] = f.e2[row], direction[row][2] = f.normal[row];
+    origin[row] = centre[row] - 25.2 * (f.e1[row] + f.e2[row]) - Spacing * f.normal[row];
+  }
+  ct->SetDirection(direction);
+  ct->SetOrigin(origin);
+  testing::writeCTSeries(ct, folder / "CT");
+  writeRTStructureSet((folder / "CT" / "RS.dcm").string(), { obliqueCylinder(1, "Oblique", centre, r, { 0, 1, 3, 5, 7, 9 }) });
+
+  const RunResult run = runSliceMesh(quoted((folder / "CT").string()) + " " + quoted((folder / "mesh.vtp").string()));
+  ASSERT_EQ(run.exitCode, cli::Success) << run.err;
+  EXPECT_TRUE(hasLine(run.err, "holds a structure set, RS.dcm: its ROIs are meshed, stacked on the folder's image series"))
+    << run.err;
+  EXPECT_FALSE(hasLine(run.err, "not on the slices")) << run.err;
+  EXPECT_TRUE(hasLine(run.err, "one slice missing, tiled across it")) << run.err;
+  const MeshValidation v = expectValid(folder / "mesh.vtp");
+  EXPECT_EQ(v.components, 1u);
+  const double expected = polygonArea(r) * 10 * Spacing; // half a slice beyond each end contour
+  EXPECT_NEAR(v.volume, expected, 0.02 * expected);
+
+  // Two structure sets in the folder: which one is for the user to say. One line, nothing written.
+  writeRTStructureSet((folder / "CT" / "RS2.dcm").string(), { obliqueCylinder(2, "Other", centre, r) });
+  const RunResult two = runSliceMesh(quoted((folder / "CT").string()) + " " + quoted((folder / "none.vtp").string()));
+  EXPECT_EQ(two.exitCode, cli::UnreadableInput) << two.err;
+  ASSERT_EQ(linesOf(two.err).size(), 1u) << two.err;
+  EXPECT_NE(two.err.find("holds 2 structure sets (RS.dcm, RS2.dcm): give the one to mesh with --inputContours"),
+            std::string::npos)
+    << two.err;
+  EXPECT_FALSE(fs::exists(folder / "none.vtp"));
 }
 
 TEST(StructureSet, AnImageWhoseSlicesTheContoursAreNotOnGivesOneWarningAndTheContoursAreFollowed)

@@ -1,11 +1,9 @@
 #include "Core/SliceMeshTypes.h"
+#include "DicomSeriesWriter.h"
 #include "TestVolumes.h"
 #include "VolumeReader.h"
 
-#include "itkGDCMImageIO.h"
 #include "itkImageFileWriter.h"
-#include "itkImageSeriesWriter.h"
-#include "itkNumericSeriesFileNames.h"
 
 #include <gtest/gtest.h>
 
@@ -287,39 +285,7 @@ TEST_F(VolumeReaderTest, DicomSeriesDirectoryRoundTrip)
     volume->GetBufferPointer()[n] = static_cast<short>(n * 3);
 
   const fs::path dicom = m_Directory / "series";
-  fs::create_directories(dicom);
-  auto names = itk::NumericSeriesFileNames::New();
-  names->SetSeriesFormat((dicom / "slice%03d.dcm").string());
-  names->SetStartIndex(0);
-  names->SetEndIndex(3);
-  itk::ImageSeriesWriter<ShortVolume, itk::Image<short, 2>>::DictionaryArrayType headers;
-  std::vector<itk::MetaDataDictionary> dictionaries(4);
-  for (long k = 0; k < 4; ++k)
-  {
-    ShortVolume::PointType position;
-    volume->TransformIndexToPhysicalPoint({ { 0, 0, k } }, position);
-    std::ostringstream positionText, orientationText;
-    positionText << position[0] << "\\" << position[1] << "\\" << position[2];
-    orientationText << direction[0][0] << "\\" << direction[1][0] << "\\" << direction[2][0] << "\\"
-                    << direction[0][1] << "\\" << direction[1][1] << "\\" << direction[2][1];
-    itk::MetaDataDictionary& header = dictionaries[k];
-    itk::EncapsulateMetaData<std::string>(header, "0008|0016", "1.2.840.10008.5.1.4.1.1.2"); // CT image
-    itk::EncapsulateMetaData<std::string>(header, "0008|0060", "CT");
-    itk::EncapsulateMetaData<std::string>(header, "0020|000d", "1.2.826.0.1.3680043.2.1125.1.1");
-    itk::EncapsulateMetaData<std::string>(header, "0020|000e", "1.2.826.0.1.3680043.2.1125.1.2");
-    itk::EncapsulateMetaData<std::string>(header, "0020|0013", std::to_string(k + 1));
-    itk::EncapsulateMetaData<std::string>(header, "0020|0032", positionText.str());
-    itk::EncapsulateMetaData<std::string>(header, "0020|0037", orientationText.str());
-    itk::EncapsulateMetaData<std::string>(header, "0028|0030", "0.7\\0.7");
-    itk::EncapsulateMetaData<std::string>(header, "0018|0050", "2.5");
-    headers.push_back(&header);
-  }
-  auto writer = itk::ImageSeriesWriter<ShortVolume, itk::Image<short, 2>>::New();
-  writer->SetInput(volume);
-  writer->SetMetaDataDictionaryArray(&headers);
-  writer->SetImageIO(itk::GDCMImageIO::New());
-  writer->SetFileNames(names->GetFileNames());
-  writer->Update();
+  testing::writeCTSeries(volume, dicom);
 
   const ScalarVolume::Pointer read = readVolume(dicom.string());
   ASSERT_EQ(read->GetLargestPossibleRegion().GetSize()[2], 4u);

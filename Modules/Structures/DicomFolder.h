@@ -1,0 +1,26 @@
+// What a DICOM export folder holds besides its image series: the structure sets drawn on it. A
+// planning system or PACS exports a patient's CT slices and RTSTRUCT into one folder.
+#ifndef DicomFolder_h
+#define DicomFolder_h
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace slicemesh
+{
+
+struct DicomFolderContents
+{
+  std::vector<std::string> structureSets; ///< paths of the RT Structure Sets, in name order
+  std::size_t otherDicomFiles = 0;        ///< DICOM files that are not structure sets (image slices, ...)
+};
+
+/** The DICOM files directly in `folder` (not in its subfolders, as the series reader sees it), by
+ *  their first bytes: a file that is not DICOM is not counted. Never throws on a file's content; an
+ *  unreadable folder holds nothing. */
+DicomFolderContents dicomFolderContents(const std::string& folder);
+
+} // namespace slicemesh
+
+#endif
