@@ -92,6 +92,8 @@ std::string finishSummary(const RunQuality& q)
     notes.push_back(q.requestedFinish + " asked; see the warning");
   if (asAsked && q.smallPiecesAsTiled > 0)
     notes.push_back(std::to_string(q.smallPiecesAsTiled) + " specks kept as tiled");
+  if (q.trianglesKeptTiled > 0)
+    notes.push_back(std::to_string(q.trianglesKeptTiled) + " triangles kept as tiled where the remesh crossed itself");
   std::ostringstream text;
   text << "finish " << shown;
   for (std::size_t n = 0; n < notes.size(); ++n)
@@ -149,6 +151,7 @@ RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshVal
     for (std::size_t f = 0; f < combined.piecesByFinish.size(); ++f)
       combined.piecesByFinish[f] += q.piecesByFinish[f];
     combined.unsmoothedVertices += q.unsmoothedVertices;
+    combined.trianglesKeptTiled += q.trianglesKeptTiled;
     if (!q.fallback.empty())
       combined.fallback += (combined.fallback.empty() ? "label " : "; label ") + std::to_string(label.label) + " (" +
                            label.name + "): " + q.fallback;
@@ -227,6 +230,7 @@ void writeMeshBlocks(std::ostream& json, const std::string& indent, const MeshVa
   json << indent << "  \"pieces\": { \"remeshed\": " << q.piecesByFinish[0] << ", \"smoothedOnly\": "
        << q.piecesByFinish[1] << ", \"leftTiled\": " << q.piecesByFinish[2] << " },\n";
   number("verticesLeftUnsmoothed", static_cast<double>(q.unsmoothedVertices));
+  number("trianglesKeptTiledAtCrossings", static_cast<double>(q.trianglesKeptTiled));
   json << indent << "  \"fallback\": " << (q.fallback.empty() ? "null" : jsonString(q.fallback)) << "\n";
   json << indent << "},\n";
   json << indent << "\"resolvedOptions\": {\n";

@@ -462,6 +462,7 @@ RunQuality runQualityOf(const MeshedContours& m)
   quality.fallback = m.surface.fallback;
   quality.smallPiecesAsTiled = m.surface.smallPiecesAsTiled;
   quality.unsmoothedVertices = m.surface.unsmoothedVertices;
+  quality.trianglesKeptTiled = m.surface.trianglesKeptTiled;
   quality.piecesByFinish = m.surface.piecesByFinish;
   if (finishing.finish == SurfaceFinish::Remeshed)
     quality.targetEdgeLength = finishing.remeshing.targetEdgeLength;

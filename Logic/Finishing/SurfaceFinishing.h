@@ -43,6 +43,9 @@ struct FinishedSurface
    *  voxels): left as tiled, which
    *  counts as finished (remeshing or smoothing a shape a couple of edges across only collapses it). */
   std::size_t smallPiecesAsTiled = 0;
+  /** Triangles of remeshed pieces kept as tiled: around the places where a piece's remesh crossed
+   *  itself (two sheets closer than the target edge), the piece remeshed again around them. */
+  std::size_t trianglesKeptTiled = 0;
   /** How many connected pieces got each finish, indexed by SurfaceFinish (specks, left as tiled,
    *  count under Tiled). All zero when the tiling was not split (an invalid tiling, or Tiled asked). */
   std::array<std::size_t, 3> piecesByFinish{};

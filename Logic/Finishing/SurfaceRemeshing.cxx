@@ -290,16 +290,22 @@ TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& reg
 /** Remeshes one connected, closed piece, projecting onto it. A large piece is remeshed in slabs
  *  side by side, their seams kept, then in bands around the seams, side by side, so that no trace of
  *  the seams is left; the slabs and bands depend on the piece only, never on the threads. */
-TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads)
+/** The tree a piece's remesh projects onto. The piece must fit a manifold surface (surfaceOf
+ *  throws otherwise); the tree is built on the piece itself, not on that surface, which would double
+ *  what the tree holds. */
+void buildTreeOf(const TriangleMesh& mesh, Tree& tree)
 {
-  // The piece must fit a manifold surface (surfaceOf throws otherwise); the tree is built on the
-  // piece itself, not on that surface, which would double what the tree holds.
   surfaceOf(mesh);
-  Tree tree;
   insertTriangles(tree, mesh);
   // No k-d tree of hints: every query brings its own (projectOntoInput).
   tree.do_not_accelerate_distance_queries();
   tree.build(); // before the queries run side by side
+}
+
+TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads)
+{
+  Tree tree;
+  buildTreeOf(mesh, tree);
   const std::size_t perRegion = options.trianglesPerRegion;
   if (perRegion == 0 || mesh.triangles.size() < 2 * perRegion)
   {
@@ -354,6 +360,26 @@ TriangleMesh remeshSurface(const TriangleMesh& mesh, const SurfaceRemeshingOptio
   for (const TriangleMesh& piece : pieces)
     remeshed.push_back(&piece);
   return joinMeshes(remeshed);
+}
+
+TriangleMesh remeshSurfaceAround(const TriangleMesh& mesh, const std::vector<char>& keep,
+                                 const SurfaceRemeshingOptions& options, unsigned int threads)
+{
+  if (!(options.targetEdgeLength > 0.0) || !std::isfinite(options.targetEdgeLength))
+    throw Error("surface remeshing: the target edge length must be positive");
+  if (keep.size() != mesh.triangles.size())
+    throw Error("surface remeshing: one keep flag per triangle is needed");
+  if (options.iterations <= 0 || mesh.triangles.empty())
+    return mesh;
+  Tree tree;
+  buildTreeOf(mesh, tree);
+  std::vector<int> regionOf(mesh.triangles.size());
+  for (std::size_t t = 0; t < keep.size(); ++t)
+    regionOf[t] = keep[t] ? -1 : 0;
+  // One region: the kept triangles are few and scattered, and the region's border around them is
+  // kept exactly, as between slabs.
+  const std::vector<MeshRegion> remeshed{ remeshRegion(extractRegion(mesh, regionOf, 0), options, tree, threads) };
+  return withoutUnusedVertices(reassembleRegions(mesh, regionOf, remeshed));
 }
 
 double voxelFaceEdgeLength(const std::array<double, 3>& spacing)

@@ -5,6 +5,7 @@
 #include "Core/SliceMeshTypes.h"
 
 #include <array>
+#include <vector>
 
 namespace slicemesh
 {
@@ -25,6 +26,14 @@ struct SurfaceRemeshingOptions
  *  not a manifold surface CGAL can hold. The relaxation's targets and the projection run on `threads`
  *  threads (0: every core), vertex by vertex, so the result does not depend on the number. */
 TriangleMesh remeshSurface(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads = 1);
+
+/** remeshSurface of one connected piece, except that the triangles flagged in `keep` (one flag per
+ *  triangle) stay as they are, with their vertices; the rest is remeshed around them, its border
+ *  with them kept exactly. For a piece whose remesh crosses itself where two sheets are closer than
+ *  an edge: there the input's triangles are kept. Throws Error as remeshSurface does, and if the
+ *  triangles not kept do not fit a manifold surface (two of them meeting at a vertex only). */
+TriangleMesh remeshSurfaceAround(const TriangleMesh& mesh, const std::vector<char>& keep,
+                                 const SurfaceRemeshingOptions& options, unsigned int threads = 1);
 
 /** The edge length at which an isotropic remesh has about as many triangles as flying edges makes on
  *  a grid of this spacing (mm): sqrt(3 / (1/(sx sy) + 1/(sx sz) + 1/(sy sz))), the spacing itself

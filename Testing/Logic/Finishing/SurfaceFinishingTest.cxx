@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 
 using namespace slicemesh;
 
@@ -422,3 +423,71 @@ TEST(SurfaceFinishing, TheSameBitForBitOnOneTwoAndEightThreads)
     EXPECT_TRUE(samePoints(finished.mesh.points, finishedOnOne.mesh.points)) << threads << " threads";
   }
 }
+
+namespace slicemesh
+{
+namespace
+{
+
+TEST(SurfaceRemeshing, AroundKeptTrianglesTheRestIsRemeshedAndTheKeptOnesStayExactly)
+{
+  // A sphere of radius 10 whose cap above z = 7 is kept: every kept triangle is in the result with
+  // its corners where they were, and the rest has edges of the target length.
+  const TriangleMesh sphere = octaSphere(30, 10.0);
+  std::vector<char> keep(sphere.triangles.size(), 0);
+  std::set<std::array<double, 9>> kept;
+  auto corners = [](const TriangleMesh& mesh, const Triangle& t)
+  {
+    std::array<double, 9> c{};
+    for (int i = 0; i < 3; ++i)
+    {
+      const Point3& p = mesh.points[static_cast<std::size_t>(t[i])];
+      c[3 * i] = p.x, c[3 * i + 1] = p.y, c[3 * i + 2] = p.z;
+    }
+    return c;
+  };
+  for (std::size_t t = 0; t < sphere.triangles.size(); ++t)
+  {
+    const Triangle& tri = sphere.triangles[t];
+    if (sphere.points[tri[0]].z + sphere.points[tri[1]].z + sphere.points[tri[2]].z > 21.0)
+    {
+      keep[t] = 1;
+      kept.insert(corners(sphere, tri));
+    }
+  }
+  ASSERT_GT(kept.size(), 50u);
+  SurfaceRemeshingOptions options;
+  options.targetEdgeLength = 1.5;
+  const TriangleMesh remeshed = remeshSurfaceAround(sphere, keep, options, 2);
+  std::size_t found = 0;
+  double edgeSum = 0.0;
+  std::size_t edges = 0;
+  for (const Triangle& t : remeshed.triangles)
+  {
+    if (kept.count(corners(remeshed, t)))
+    {
+      ++found;
+      continue;
+    }
+    const Point3& a = remeshed.points[t[0]];
+    const Point3& b = remeshed.points[t[1]];
+    if (a.z < 6.0 && b.z < 6.0) // away from the kept cap and its border
+    {
+      edgeSum += std::hypot(a.x - b.x, a.y - b.y, a.z - b.z);
+      ++edges;
+    }
+  }
+  EXPECT_EQ(found, kept.size());
+  ASSERT_GT(edges, 0u);
+  EXPECT_NEAR(edgeSum / edges, options.targetEdgeLength, 0.25 * options.targetEdgeLength);
+  EXPECT_LT(remeshed.triangles.size(), sphere.triangles.size()); // the finer rest made coarser
+  const MeshValidation v = validateMesh(remeshed);
+  EXPECT_TRUE(v.valid()) << v.summary();
+  EXPECT_EQ(v.eulerCharacteristic, 2);
+  EXPECT_NEAR(v.volume, 4.0 / 3.0 * M_PI * 1000.0, 0.02 * 4.0 / 3.0 * M_PI * 1000.0);
+  // One flag per triangle is needed.
+  EXPECT_THROW(remeshSurfaceAround(sphere, std::vector<char>(3, 0), options), Error);
+}
+
+} // namespace
+} // namespace slicemesh
