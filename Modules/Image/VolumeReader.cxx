@@ -430,12 +430,23 @@ void checkVolumeGeometry(const std::string& path, const itk::ImageBase<3>* volum
   checkGeometry(path, spacing, direction);
 }
 
-VolumeGeometry readVolumeGeometry(const std::string& path)
+namespace
+{
+
+/** Whether `path` is a folder, read as a DICOM series; throws naming it when it does not exist. */
+bool isSeriesFolder(const std::string& path)
 {
   std::error_code ignored;
   if (!std::filesystem::exists(path, ignored))
     throw Error(path + ": no such file or directory");
-  if (!std::filesystem::is_directory(path, ignored))
+  return std::filesystem::is_directory(path, ignored);
+}
+
+} // namespace
+
+VolumeGeometry readVolumeGeometry(const std::string& path)
+{
+  if (!isSeriesFolder(path))
   {
     itk::ImageIOBase::Pointer io = readImageHeader(path);
     if (io->GetNumberOfDimensions() < 3)
@@ -464,13 +475,10 @@ VolumeGeometry readVolumeGeometry(const std::string& path)
   return geometry;
 }
 
+
 ScalarVolume::Pointer readVolume(const std::string& path)
 {
-  std::error_code ignored;
-  const std::filesystem::path file(path);
-  if (!std::filesystem::exists(file, ignored))
-    throw Error(path + ": no such file or directory");
-  if (std::filesystem::is_directory(file, ignored))
+  if (isSeriesFolder(path))
     return readDicomSeries(path);
   itk::ImageIOBase::Pointer io = checkedImageHeader(path, false);
   return readImageFileAs<ScalarVolume>(path, io);
@@ -478,11 +486,7 @@ ScalarVolume::Pointer readVolume(const std::string& path)
 
 StoredVolume readStoredVolume(const std::string& path)
 {
-  std::error_code ignored;
-  const std::filesystem::path file(path);
-  if (!std::filesystem::exists(file, ignored))
-    throw Error(path + ": no such file or directory");
-  if (std::filesystem::is_directory(file, ignored))
+  if (isSeriesFolder(path))
     return readDicomSeries(path);
   itk::ImageIOBase::Pointer io = checkedImageHeader(path, true);
   switch (io->GetComponentType()) // the types keptAsStored names; float for the others
