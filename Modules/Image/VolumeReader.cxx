@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -236,26 +237,32 @@ std::optional<Nifti1Header> readNifti1Header(const std::string& path)
 }
 
 /** An uncompressed single-file NIfTI holds its voxels after a header of at least 352 bytes; ITK 5.2
- *  reads a truncated one without complaint (the missing voxels come out as zeros). The size is the
- *  stored one (bitpix): ITK reports a scaled file (scl_slope) as float whatever it stores. */
-void checkNiftiFileSize(const std::string& path)
+ *  reads a truncated one without complaint (the missing voxels come out as zeros). For NIfTI-1 the
+ *  size is the stored one (bitpix, vox_offset): ITK reports a scaled file (scl_slope) as float
+ *  whatever it stores. Other headers (NIfTI-2) are held to ITK's size of the voxels. */
+void checkNiftiFileSize(const std::string& path, const itk::ImageIOBase* io)
 {
   if (!endsWith(path, ".nii") && !endsWith(path, ".NII"))
     return;
   std::error_code error;
   const auto fileSize = std::filesystem::file_size(path, error);
-  const std::optional<Nifti1Header> header = readNifti1Header(path);
-  if (error || !header || header->dim[0] < 1 || header->dim[0] > 7 || header->bitpix <= 0)
-    return; // ITK says what is wrong with the header
-  double voxels = 1.0;
-  for (int axis = 1; axis <= header->dim[0]; ++axis)
-    voxels *= std::max<std::int16_t>(1, header->dim[static_cast<std::size_t>(axis)]);
-  const double needed = std::max(352.0, static_cast<double>(header->voxOffset)) + voxels * header->bitpix / 8.0;
+  if (error)
+    return;
+  double needed = 352.0 + static_cast<double>(io->GetImageSizeInBytes());
+  if (const std::optional<Nifti1Header> header = readNifti1Header(path))
+  {
+    if (header->dim[0] < 1 || header->dim[0] > 7 || header->bitpix <= 0)
+      return; // ITK says what is wrong with the header
+    double voxels = 1.0;
+    for (int axis = 1; axis <= header->dim[0]; ++axis)
+      voxels *= std::max<std::int16_t>(1, header->dim[static_cast<std::size_t>(axis)]);
+    needed = std::max(352.0, static_cast<double>(header->voxOffset)) + voxels * header->bitpix / 8.0;
+  }
   if (static_cast<double>(fileSize) < needed)
   {
-    std::ostringstream message;
+    std::ostringstream message; // `needed` may be beyond any integer type (a damaged header): printed as a double
     message << path << ": a truncated NIfTI file (" << fileSize << " bytes; its header promises at least "
-            << static_cast<std::uintmax_t>(needed) << ")";
+            << std::fixed << std::setprecision(0) << needed << ")";
     throw Error(message.str());
   }
 }
@@ -312,7 +319,7 @@ itk::ImageIOBase::Pointer checkedImageHeader(const std::string& path, bool asSto
     checkGzipStream(path);
   itk::ImageIOBase::Pointer io = readImageHeader(path);
   checkHeader(path, io, asStored);
-  checkNiftiFileSize(path);
+  checkNiftiFileSize(path, io);
   checkNiftiSpacing(path);
   return io;
 }
