@@ -1,6 +1,7 @@
 #include "Finishing/SurfaceFinishing.h"
 
 #include "Core/ParallelFor.h"
+#include "Core/SpatialHash.h"
 #include "Measures/ComponentOrientation.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/MeshCrossings.h"
@@ -164,20 +165,25 @@ FinishedPiece smoothedRemesh(TriangleMesh remeshed, const SurfaceFinishingOption
   return FinishedPiece{ std::move(remeshed), SurfaceFinish::Remeshed, {}, unsmoothedVertices, validation };
 }
 
-/** The triangles of `mesh` with a corner within `radius` of one of `points`. */
+/** The triangles of `mesh` with a corner within `radius` of one of `points` (found through the
+ *  points' columns of the plane's spatial hash, then by their distance in 3D). */
 std::vector<char> trianglesNear(const TriangleMesh& mesh, const std::vector<Point3>& points, double radius)
 {
+  SpatialHash columns(radius);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    columns.insert(Point2{ points[i].x, points[i].y }, static_cast<int>(i));
   std::vector<char> near(mesh.points.size(), 0);
   for (std::size_t v = 0; v < mesh.points.size(); ++v)
-    for (const Point3& p : points)
-    {
-      const double dx = mesh.points[v].x - p.x, dy = mesh.points[v].y - p.y, dz = mesh.points[v].z - p.z;
-      if (dx * dx + dy * dy + dz * dz <= radius * radius)
-      {
-        near[v] = 1;
-        break;
-      }
-    }
+  {
+    const Point3& q = mesh.points[v];
+    near[v] = columns.anyIn(columns.cellsWithin(Point2{ q.x, q.y }, radius),
+                            [&](int i)
+                            {
+                              const Point3& p = points[static_cast<std::size_t>(i)];
+                              const double dx = q.x - p.x, dy = q.y - p.y, dz = q.z - p.z;
+                              return dx * dx + dy * dy + dz * dz <= radius * radius;
+                            });
+  }
   std::vector<char> flagged(mesh.triangles.size(), 0);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (std::int32_t v : mesh.triangles[t])
@@ -208,7 +214,7 @@ constexpr std::size_t mostCrossingsRemeshedAround = 500;
  *  else nothing, and `why` says what was wrong. Where two sheets are closer than the target edge (a
  *  thin gap between gyri, a wall a voxel thick) the remesh's chords can pass through the other sheet:
  *  the piece is then remeshed again around those places, the tiled triangles within two target
- *  edges of them (four, if two are not enough) kept as they are. */
+ *  edges of them kept as they are, with the places each new remesh crosses added (three tries). */
 std::optional<FinishedPiece> remeshedPiece(const TriangleMesh& tiled, const MeshValidation& reference,
                                            const SurfaceFinishingOptions& options, double volume, unsigned int threads,
                                            std::string& why)

@@ -287,9 +287,6 @@ TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& reg
   return reassembleRegions(mesh, regionOf, regions);
 }
 
-/** Remeshes one connected, closed piece, projecting onto it. A large piece is remeshed in slabs
- *  side by side, their seams kept, then in bands around the seams, side by side, so that no trace of
- *  the seams is left; the slabs and bands depend on the piece only, never on the threads. */
 /** The tree a piece's remesh projects onto. The piece must fit a manifold surface (surfaceOf
  *  throws otherwise); the tree is built on the piece itself, not on that surface, which would double
  *  what the tree holds. */
@@ -302,6 +299,9 @@ void buildTreeOf(const TriangleMesh& mesh, Tree& tree)
   tree.build(); // before the queries run side by side
 }
 
+/** Remeshes one connected, closed piece, projecting onto it. A large piece is remeshed in slabs
+ *  side by side, their seams kept, then in bands around the seams, side by side, so that no trace of
+ *  the seams is left; the slabs and bands depend on the piece only, never on the threads. */
 TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads)
 {
   Tree tree;
@@ -337,13 +337,20 @@ TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions
   return withoutUnusedVertices(banded);
 }
 
+/** Throws unless the target edge length is positive and finite; whether there is anything to do
+ *  (rounds asked, triangles to remesh). */
+bool remeshingAsked(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options)
+{
+  if (!(options.targetEdgeLength > 0.0) || !std::isfinite(options.targetEdgeLength))
+    throw Error("surface remeshing: the target edge length must be positive");
+  return options.iterations > 0 && !mesh.triangles.empty();
+}
+
 } // namespace
 
 TriangleMesh remeshSurface(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads)
 {
-  if (!(options.targetEdgeLength > 0.0) || !std::isfinite(options.targetEdgeLength))
-    throw Error("surface remeshing: the target edge length must be positive");
-  if (options.iterations <= 0 || mesh.triangles.empty())
+  if (!remeshingAsked(mesh, options))
     return mesh;
   // Piece by piece: each vertex is projected back onto its own piece, never onto a neighbour.
   // A mesh that is one piece (what finishSurface hands over) is its own piece: no copy of it is held.
@@ -365,11 +372,9 @@ TriangleMesh remeshSurface(const TriangleMesh& mesh, const SurfaceRemeshingOptio
 TriangleMesh remeshSurfaceAround(const TriangleMesh& mesh, const std::vector<char>& keep,
                                  const SurfaceRemeshingOptions& options, unsigned int threads)
 {
-  if (!(options.targetEdgeLength > 0.0) || !std::isfinite(options.targetEdgeLength))
-    throw Error("surface remeshing: the target edge length must be positive");
   if (keep.size() != mesh.triangles.size())
     throw Error("surface remeshing: one keep flag per triangle is needed");
-  if (options.iterations <= 0 || mesh.triangles.empty())
+  if (!remeshingAsked(mesh, options))
     return mesh;
   Tree tree;
   buildTreeOf(mesh, tree);

@@ -239,8 +239,9 @@ std::optional<Nifti1Header> readNifti1Header(const std::string& path)
 /** An uncompressed single-file NIfTI holds its voxels after a header of at least 352 bytes; ITK 5.2
  *  reads a truncated one without complaint (the missing voxels come out as zeros). For NIfTI-1 the
  *  size is the stored one (bitpix, vox_offset): ITK reports a scaled file (scl_slope) as float
- *  whatever it stores. Other headers (NIfTI-2) are held to ITK's size of the voxels. */
-void checkNiftiFileSize(const std::string& path, const itk::ImageIOBase* io)
+ *  whatever it stores; `header` is the file's (readNifti1Header). Other headers (NIfTI-2) are held
+ *  to ITK's size of the voxels. */
+void checkNiftiFileSize(const std::string& path, const itk::ImageIOBase* io, const std::optional<Nifti1Header>& header)
 {
   if (!endsWith(path, ".nii") && !endsWith(path, ".NII"))
     return;
@@ -249,7 +250,7 @@ void checkNiftiFileSize(const std::string& path, const itk::ImageIOBase* io)
   if (error)
     return;
   double needed = 352.0 + static_cast<double>(io->GetImageSizeInBytes());
-  if (const std::optional<Nifti1Header> header = readNifti1Header(path))
+  if (header)
   {
     if (header->dim[0] < 1 || header->dim[0] > 7 || header->bitpix <= 0)
       return; // ITK says what is wrong with the header
@@ -268,14 +269,11 @@ void checkNiftiFileSize(const std::string& path, const itk::ImageIOBase* io)
 }
 
 /** NIfTI-1 stores the spacing as pixdim[1..3]; the NIfTI library (and so ITK) silently replaces a zero
- *  or negative one by 1 mm, which would mesh at a made-up scale. Read those three floats from the header
- *  (plain or gzip) and refuse what is not positive and finite. NIfTI-2 and other formats are left
+ *  or negative one by 1 mm, which would mesh at a made-up scale. Those three floats of the file's
+ *  `header` (readNifti1Header; empty for another file) are refused unless positive and finite. NIfTI-2 and other formats are left
  *  to ITK's own values, checked by checkGeometry. */
-void checkNiftiSpacing(const std::string& path)
+void checkNiftiSpacing(const std::string& path, const std::optional<Nifti1Header>& header)
 {
-  if (!endsWith(path, ".nii") && !endsWith(path, ".nii.gz") && !endsWith(path, ".NII") && !endsWith(path, ".NII.GZ"))
-    return;
-  const std::optional<Nifti1Header> header = readNifti1Header(path);
   if (!header)
     return; // ITK reports the short file, or it is not NIfTI-1
   for (int axis = 0; axis < 3; ++axis)
@@ -319,8 +317,11 @@ itk::ImageIOBase::Pointer checkedImageHeader(const std::string& path, bool asSto
     checkGzipStream(path);
   itk::ImageIOBase::Pointer io = readImageHeader(path);
   checkHeader(path, io, asStored);
-  checkNiftiFileSize(path, io);
-  checkNiftiSpacing(path);
+  // NIfTI-1 (plain or gzip): its header read once, for the two checks.
+  const bool nifti = endsWith(path, ".nii") || endsWith(path, ".nii.gz") || endsWith(path, ".NII") || endsWith(path, ".NII.GZ");
+  const std::optional<Nifti1Header> header = nifti ? readNifti1Header(path) : std::nullopt;
+  checkNiftiFileSize(path, io, header);
+  checkNiftiSpacing(path, header);
   return io;
 }
 
