@@ -13,9 +13,9 @@ namespace slicemesh
 struct SurfaceSmoothingOptions
 {
   /** Number of lambda/mu step pairs; 0 leaves the mesh as it is. */
-  int iterations = 150;
+  int iterations = 100;
   /** Taubin's pass band k_PB = 1/lambda + 1/mu: mesh frequencies below it (the shape) pass, the
-   *  staircase of a mask (periods of a few edges) is damped. lambda is 0.5; mu follows from k_PB. */
+   *  staircase of a mask (periods of a few edges) is damped. lambda is 0.63; mu follows from k_PB. */
   double passBand = 0.01;
   /** No vertex ends outside the ellipsoid of these semi-axes around where it started (mm, along the
    *  mesh's x, y and z: for a stack, the image's voxel axes; all 0: unbounded), checked after every

@@ -330,7 +330,7 @@ TEST(SurfaceFinishing, ATilingNotYetTestedForSelfIntersectionsIsTestedWhereItIsK
 TEST(SurfaceSmoothing, ASpeckTheFilterWouldCollapseKeepsItsShape)
 {
   // An octahedron: every vertex's neighbours average to the centre, so each lambda/mu pair scales
-  // it by 0.75 and 150 pairs leave nothing. It keeps its vertices; a large sphere beside it (one
+  // it by 0.6 and 100 pairs leave nothing. It keeps its vertices; a large sphere beside it (one
   // mesh, two components) is still smoothed.
   TriangleMesh mesh = octaSphere(1, 0.5);
   const TriangleMesh speck = mesh;
