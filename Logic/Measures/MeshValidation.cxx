@@ -2,10 +2,8 @@
 
 #include "Core/DisjointSets.h"
 #include "Measures/ComponentOrientation.h"
-#include "Measures/SurfaceMeshConversion.h"
+#include "Measures/SelfIntersections.h"
 #include "Measures/TriangleAngles.h"
-
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 
 #include <algorithm>
 #include <array>
@@ -20,36 +18,9 @@ namespace slicemesh
 namespace
 {
 
-using SurfaceMesh = CgalSurfaceMesh;
-
 std::uint64_t directedKey(std::int32_t a, std::int32_t b)
 {
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
-}
-
-/** The self-intersecting pairs by face index (faces are added in the order of mesh.triangles, so a
- *  face's index is its triangle's); `checked` false when CGAL cannot hold the mesh as a surface. */
-std::vector<std::pair<std::size_t, std::size_t>> intersectingPairs(const TriangleMesh& mesh, bool& checked)
-{
-  SurfaceMesh surface;
-  if (toSurfaceMesh(mesh, surface) != mesh.triangles.size())
-  {
-    checked = false;
-    return {};
-  }
-  // On every core (TBB): the pairs come in no fixed order, so they are sorted.
-  std::vector<std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>> pairs;
-  CGAL::Polygon_mesh_processing::self_intersections<CGAL::Parallel_if_available_tag>(surface, std::back_inserter(pairs));
-  checked = true;
-  std::vector<std::pair<std::size_t, std::size_t>> result;
-  result.reserve(pairs.size());
-  for (const auto& [first, second] : pairs)
-  {
-    const auto a = static_cast<std::size_t>(first.idx()), b = static_cast<std::size_t>(second.idx());
-    result.emplace_back(std::min(a, b), std::max(a, b));
-  }
-  std::sort(result.begin(), result.end());
-  return result;
 }
 
 } // namespace
@@ -237,7 +208,10 @@ MeshValidation validateMesh(const TriangleMesh& mesh)
 {
   MeshValidation v = validateMeshTopology(mesh);
   if (v.manifold() && v.inconsistentEdges == 0)
-    v.selfIntersections = intersectingPairs(mesh, v.selfIntersectionChecked).size();
+  {
+    v.selfIntersections = selfIntersectingTrianglePairs(mesh).size();
+    v.selfIntersectionChecked = true;
+  }
   return v;
 }
 
@@ -287,8 +261,7 @@ double signedVolume(const TriangleMesh& mesh)
 
 std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingPairs(const TriangleMesh& mesh)
 {
-  bool checked = false;
-  return intersectingPairs(mesh, checked);
+  return selfIntersectingTrianglePairs(mesh);
 }
 
 } // namespace slicemesh

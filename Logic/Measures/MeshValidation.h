@@ -67,7 +67,7 @@ MeshValidation joinedValidation(const std::vector<MeshValidation>& parts, std::s
 double signedVolume(const TriangleMesh& mesh);
 
 /** The pairs of triangles (indices into mesh.triangles) that intersect other than along shared
- *  simplices, as validateMesh counts them; empty when the mesh is not manifold enough to check. */
+ *  simplices, as validateMesh counts them (selfIntersectingTrianglePairs, on every core). */
 std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingPairs(const TriangleMesh& mesh);
 
 } // namespace slicemesh

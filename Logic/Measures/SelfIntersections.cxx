@@ -1,0 +1,233 @@
+#include "Measures/SelfIntersections.h"
+
+#include "Core/ParallelFor.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/intersections.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <mutex>
+
+namespace slicemesh
+{
+namespace
+{
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+
+/** A closed axis-aligned box: boxes that only touch overlap, as in CGAL's box intersection. */
+struct Box
+{
+  std::array<double, 3> lo, hi;
+};
+
+bool overlap(const Box& a, const Box& b)
+{
+  for (int k = 0; k < 3; ++k)
+    if (a.lo[k] > b.hi[k] || b.lo[k] > a.hi[k])
+      return false;
+  return true;
+}
+
+/** Cubic cells of one size over the boxes' extent; a cell is named by one 64-bit key. */
+class CellGrid
+{
+public:
+  CellGrid(const std::array<double, 3>& origin, double size)
+    : m_Origin(origin)
+    , m_Size(size)
+  {
+  }
+
+  std::array<std::uint64_t, 3> cellOf(const std::array<double, 3>& p) const
+  {
+    std::array<std::uint64_t, 3> cell{};
+    for (int k = 0; k < 3; ++k)
+      cell[k] = static_cast<std::uint64_t>(std::max(0.0, std::floor((p[k] - m_Origin[k]) / m_Size)));
+    return cell;
+  }
+
+  static std::uint64_t key(std::uint64_t x, std::uint64_t y, std::uint64_t z) { return (x << 42) | (y << 21) | z; }
+
+  /** How many cells the box covers. */
+  std::uint64_t cellsOf(const Box& box) const
+  {
+    const auto lo = cellOf(box.lo), hi = cellOf(box.hi);
+    return (hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1);
+  }
+
+  double size() const { return m_Size; }
+
+private:
+  std::array<double, 3> m_Origin;
+  double m_Size;
+};
+
+/** The grid's cell size: twice the median triangle's box, so that most boxes cover one to eight
+ *  cells and a cell holds a few dozen triangles; doubled while the boxes would cover more than
+ *  eight cells each on average (a mesh of a few long triangles). At most 2^21 cells along an axis. */
+CellGrid gridFor(const std::vector<Box>& boxes, const std::array<double, 3>& lo, const std::array<double, 3>& hi)
+{
+  const double extent = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] });
+  std::vector<double> sizes(boxes.size());
+  for (std::size_t b = 0; b < boxes.size(); ++b)
+    sizes[b] = std::max({ boxes[b].hi[0] - boxes[b].lo[0], boxes[b].hi[1] - boxes[b].lo[1], boxes[b].hi[2] - boxes[b].lo[2] });
+  std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2), sizes.end());
+  double size = std::max({ 2.0 * sizes[sizes.size() / 2], extent / double(1 << 20), 1e-300 });
+  for (;; size *= 2.0)
+  {
+    const CellGrid grid(lo, size);
+    std::uint64_t covered = 0;
+    for (const Box& box : boxes)
+      covered += grid.cellsOf(box);
+    if (covered <= 8 * boxes.size() || size >= extent)
+      return grid;
+  }
+}
+
+Point corner(const TriangleMesh& mesh, std::int32_t v)
+{
+  const Point3& p = mesh.points[static_cast<std::size_t>(v)];
+  return { p.x, p.y, p.z };
+}
+
+/** Whether triangles a and b intersect other than along what they share (CGAL's rule, see the header). */
+bool crossing(const TriangleMesh& mesh, std::size_t a, std::size_t b)
+{
+  const Triangle& s = mesh.triangles[a];
+  const Triangle& t = mesh.triangles[b];
+  int shared = 0, si = -1, ti = -1;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (s[i] == t[j])
+      {
+        ++shared;
+        si = i;
+        ti = j;
+      }
+  if (shared >= 2)
+  {
+    // The corners opposite the common edge: the only corners of s and t not in the other.
+    std::int32_t p = -1, q = -1;
+    for (int i = 0; i < 3; ++i)
+    {
+      if (std::find(t.begin(), t.end(), s[i]) == t.end())
+        p = s[i];
+      if (std::find(s.begin(), s.end(), t[i]) == s.end())
+        q = t[i];
+    }
+    if (p < 0 || q < 0)
+      return false; // the same three corners twice: a topology fault, counted by the topology pass
+    std::int32_t u = -1, v = -1;
+    for (int i = 0; i < 3; ++i)
+      if (s[i] != p)
+        (u < 0 ? u : v) = s[i];
+    const Point pu = corner(mesh, u), pv = corner(mesh, v), pp = corner(mesh, p), pq = corner(mesh, q);
+    return CGAL::coplanar(pu, pv, pp, pq) && CGAL::coplanar_orientation(pu, pv, pp, pq) == CGAL::POSITIVE;
+  }
+  const Kernel::Triangle_3 ts(corner(mesh, s[0]), corner(mesh, s[1]), corner(mesh, s[2]));
+  const Kernel::Triangle_3 tt(corner(mesh, t[0]), corner(mesh, t[1]), corner(mesh, t[2]));
+  if (shared == 1)
+  {
+    // Each edge opposite the common corner, against the other triangle.
+    const Kernel::Segment_3 oppositeS(corner(mesh, s[(si + 1) % 3]), corner(mesh, s[(si + 2) % 3]));
+    const Kernel::Segment_3 oppositeT(corner(mesh, t[(ti + 1) % 3]), corner(mesh, t[(ti + 2) % 3]));
+    return CGAL::do_intersect(ts, oppositeT) || CGAL::do_intersect(tt, oppositeS);
+  }
+  return CGAL::do_intersect(ts, tt);
+}
+
+} // namespace
+
+std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(const TriangleMesh& mesh,
+                                                                               unsigned int threads)
+{
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  // Degenerate triangles are reported with themselves and left out of the boxes (as CGAL does).
+  std::vector<std::uint32_t> boxed;
+  std::vector<Box> boxes;
+  std::array<double, 3> lo{ 1e300, 1e300, 1e300 }, hi{ -1e300, -1e300, -1e300 };
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+  {
+    const Triangle& triangle = mesh.triangles[t];
+    if (CGAL::collinear(corner(mesh, triangle[0]), corner(mesh, triangle[1]), corner(mesh, triangle[2])))
+    {
+      pairs.emplace_back(t, t);
+      continue;
+    }
+    Box box{ { 1e300, 1e300, 1e300 }, { -1e300, -1e300, -1e300 } };
+    for (std::int32_t v : triangle)
+    {
+      const Point3& p = mesh.points[static_cast<std::size_t>(v)];
+      const std::array<double, 3> c{ p.x, p.y, p.z };
+      for (int k = 0; k < 3; ++k)
+      {
+        box.lo[k] = std::min(box.lo[k], c[k]);
+        box.hi[k] = std::max(box.hi[k], c[k]);
+      }
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::min(lo[k], box.lo[k]);
+      hi[k] = std::max(hi[k], box.hi[k]);
+    }
+    boxes.push_back(box);
+    boxed.push_back(static_cast<std::uint32_t>(t));
+  }
+  if (boxes.size() < 2)
+    return pairs;
+
+  // Every box in every cell it covers, grouped by cell.
+  const CellGrid grid = gridFor(boxes, lo, hi);
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;
+  entries.reserve(2 * boxes.size());
+  for (std::size_t b = 0; b < boxes.size(); ++b)
+  {
+    const auto from = grid.cellOf(boxes[b].lo), to = grid.cellOf(boxes[b].hi);
+    for (std::uint64_t x = from[0]; x <= to[0]; ++x)
+      for (std::uint64_t y = from[1]; y <= to[1]; ++y)
+        for (std::uint64_t z = from[2]; z <= to[2]; ++z)
+          entries.emplace_back(CellGrid::key(x, y, z), static_cast<std::uint32_t>(b));
+  }
+  std::sort(entries.begin(), entries.end());
+  std::vector<std::size_t> groupStart;
+  for (std::size_t e = 0; e < entries.size(); ++e)
+    if (e == 0 || entries[e].first != entries[e - 1].first)
+      groupStart.push_back(e);
+  groupStart.push_back(entries.size());
+
+  // Each pair of overlapping boxes is tested once: in the cell of the lower corner of their overlap.
+  std::mutex found;
+  parallelForRanges(groupStart.size() - 1, threads,
+                    [&](std::size_t firstGroup, std::size_t lastGroup)
+                    {
+                      std::vector<std::pair<std::size_t, std::size_t>> local;
+                      for (std::size_t g = firstGroup; g < lastGroup; ++g)
+                        for (std::size_t i = groupStart[g]; i < groupStart[g + 1]; ++i)
+                          for (std::size_t j = i + 1; j < groupStart[g + 1]; ++j)
+                          {
+                            const Box& a = boxes[entries[i].second];
+                            const Box& b = boxes[entries[j].second];
+                            if (!overlap(a, b))
+                              continue;
+                            const auto cell = grid.cellOf({ std::max(a.lo[0], b.lo[0]), std::max(a.lo[1], b.lo[1]),
+                                                            std::max(a.lo[2], b.lo[2]) });
+                            if (CellGrid::key(cell[0], cell[1], cell[2]) != entries[i].first)
+                              continue;
+                            const std::size_t ta = boxed[entries[i].second], tb = boxed[entries[j].second];
+                            if (crossing(mesh, ta, tb))
+                              local.emplace_back(std::min(ta, tb), std::max(ta, tb));
+                          }
+                      const std::lock_guard<std::mutex> lock(found);
+                      pairs.insert(pairs.end(), local.begin(), local.end());
+                    },
+                    64);
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+} // namespace slicemesh

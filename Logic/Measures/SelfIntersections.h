@@ -1,0 +1,32 @@
+// Where a triangle mesh crosses itself: the test every finished surface goes through before it is
+// written, so it must be exact and cheap on a million triangles.
+#ifndef SelfIntersections_h
+#define SelfIntersections_h
+
+#include "Core/SliceMeshTypes.h"
+
+#include <utility>
+#include <vector>
+
+namespace slicemesh
+{
+
+/** The pairs of triangles (indices into mesh.triangles, first <= second, sorted) that intersect
+ *  other than along what they share, by CGAL's rule for self-intersections: two triangles with a
+ *  common edge intersect only if they fold onto each other (coplanar, on the same side of the
+ *  edge); two with one common vertex if the edge opposite it in either meets the other; any other
+ *  two if they touch at all. A degenerate triangle (collinear corners) is reported as (t, t) and not
+ *  tested against the others. Exact (CGAL's filtered predicates); the same pairs as
+ *  CGAL::Polygon_mesh_processing::self_intersections on any manifold mesh, and the same for any
+ *  number of `threads` (0: every core).
+ *
+ *  Only triangles whose bounding boxes overlap are tested: their boxes are binned into a grid of
+ *  cells about two triangles wide, each pair taken in the one cell that holds the lower corner of
+ *  the boxes' overlap. Linear in the triangles for a mesh of triangles of similar size; no
+ *  half-edge structure is built. */
+std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(const TriangleMesh& mesh,
+                                                                               unsigned int threads = 0);
+
+} // namespace slicemesh
+
+#endif

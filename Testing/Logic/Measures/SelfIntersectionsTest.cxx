@@ -1,0 +1,114 @@
+// selfIntersectingTrianglePairs: each way two triangles of one mesh can meet, and the grid that
+// finds the pairs to test (long triangles across many cells, far-apart pieces).
+#include "Measures/SelfIntersections.h"
+
+#include <gtest/gtest.h>
+
+using namespace slicemesh;
+
+namespace
+{
+
+using Pairs = std::vector<std::pair<std::size_t, std::size_t>>;
+
+TriangleMesh tetrahedron(double x = 0.0)
+{
+  TriangleMesh mesh;
+  mesh.points = { { x, 0, 0 }, { x + 1, 0, 0 }, { x, 1, 0 }, { x, 0, 1 } };
+  mesh.triangles = { { 0, 2, 1 }, { 0, 1, 3 }, { 1, 2, 3 }, { 0, 3, 2 } };
+  return mesh;
+}
+
+/** a and b as one mesh (b's vertices after a's). */
+TriangleMesh joined(const TriangleMesh& a, const TriangleMesh& b)
+{
+  TriangleMesh mesh = a;
+  const auto offset = static_cast<std::int32_t>(a.points.size());
+  mesh.points.insert(mesh.points.end(), b.points.begin(), b.points.end());
+  for (const Triangle& t : b.triangles)
+    mesh.triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+  return mesh;
+}
+
+} // namespace
+
+TEST(SelfIntersections, AClosedConvexMeshHasNone)
+{
+  EXPECT_TRUE(selfIntersectingTrianglePairs(tetrahedron()).empty());
+  // Two apart: nothing either, whatever the grid makes of the empty space between them.
+  EXPECT_TRUE(selfIntersectingTrianglePairs(joined(tetrahedron(), tetrahedron(50.0))).empty());
+}
+
+TEST(SelfIntersections, TrianglesFoldedOntoEachOtherAcrossTheirEdgeCross)
+{
+  // Triangles 0 and 1 share edge 0-1; the corner of triangle 1 lies in triangle 0's plane, on its side.
+  TriangleMesh mesh;
+  mesh.points = { { 0, 0, 0 }, { 2, 0, 0 }, { 1, 1, 0 }, { 1, 0.5, 0 } };
+  mesh.triangles = { { 0, 1, 2 }, { 1, 0, 3 } };
+  EXPECT_EQ(selfIntersectingTrianglePairs(mesh), (Pairs{ { 0, 1 } }));
+  mesh.points[3] = { 1, -0.5, 0 }; // the other side: a flat pair, no fold
+  EXPECT_TRUE(selfIntersectingTrianglePairs(mesh).empty());
+  mesh.points[3] = { 1, 0.5, 1e-9 }; // out of the plane, however little: they meet along the edge only
+  EXPECT_TRUE(selfIntersectingTrianglePairs(mesh).empty());
+}
+
+TEST(SelfIntersections, TrianglesWithACommonCornerCrossWhereAnEdgePiercesTheOther)
+{
+  TriangleMesh mesh;
+  mesh.points = { { 0, 0, 0 }, { 2, -1, 0 }, { 2, 1, 0 }, { 1, 0, -1 }, { 1, 0, 1 } };
+  mesh.triangles = { { 0, 1, 2 }, { 0, 3, 4 } }; // the second's edge 3-4 passes through the first
+  EXPECT_EQ(selfIntersectingTrianglePairs(mesh), (Pairs{ { 0, 1 } }));
+  mesh.points[3] = { 1, 0, 0.5 }; // lifted above: they meet at the corner only
+  EXPECT_TRUE(selfIntersectingTrianglePairs(mesh).empty());
+}
+
+TEST(SelfIntersections, SeparateTrianglesThatTouchCross)
+{
+  // A corner of the second tetrahedron on a face of the first: touching is crossing for a surface.
+  TriangleMesh second = tetrahedron();
+  for (Point3& p : second.points)
+    p = { p.x + 0.2, p.y + 0.2, p.z - 1.0 }; // its top corner (0.2, 0.2, 0) on the first's base
+  const Pairs pairs = selfIntersectingTrianglePairs(joined(tetrahedron(), second));
+  ASSERT_FALSE(pairs.empty());
+  for (const auto& [a, b] : pairs)
+  {
+    EXPECT_EQ(a, 0u) << "only the first's base is touched";
+    EXPECT_GE(b, 4u);
+  }
+}
+
+TEST(SelfIntersections, ADegenerateTriangleIsReportedWithItself)
+{
+  TriangleMesh mesh = tetrahedron();
+  mesh.points.push_back({ 5, 5, 5 });
+  mesh.points.push_back({ 6, 6, 6 });
+  mesh.points.push_back({ 7, 7, 7 });
+  mesh.triangles.push_back({ 4, 5, 6 });
+  EXPECT_EQ(selfIntersectingTrianglePairs(mesh), (Pairs{ { 4, 4 } }));
+}
+
+TEST(SelfIntersections, ALongTriangleIsTestedAgainstEverySmallOneItPasses)
+{
+  // A row of 200 small triangles and one sliver through all of them: the sliver covers many cells
+  // of a grid sized for the small ones, and crosses each once.
+  TriangleMesh mesh;
+  for (int i = 0; i < 200; ++i)
+  {
+    const auto first = static_cast<std::int32_t>(mesh.points.size());
+    mesh.points.push_back({ i + 0.5, -0.5, -0.5 });
+    mesh.points.push_back({ i + 0.5, 0.5, -0.5 });
+    mesh.points.push_back({ i + 0.5, 0.0, 0.5 });
+    mesh.triangles.push_back({ first, first + 1, first + 2 });
+  }
+  const auto first = static_cast<std::int32_t>(mesh.points.size());
+  mesh.points.push_back({ -1.0, 0.0, 0.0 });
+  mesh.points.push_back({ 201.0, 0.0, 0.0 });
+  mesh.points.push_back({ 201.0, 0.0, 0.01 });
+  mesh.triangles.push_back({ first, first + 1, first + 2 });
+  const Pairs pairs = selfIntersectingTrianglePairs(mesh);
+  ASSERT_EQ(pairs.size(), 200u);
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+    EXPECT_EQ(pairs[i], (std::pair<std::size_t, std::size_t>{ i, 200 }));
+  EXPECT_EQ(selfIntersectingTrianglePairs(mesh, 1), pairs);
+  EXPECT_EQ(selfIntersectingTrianglePairs(mesh, 8), pairs);
+}
