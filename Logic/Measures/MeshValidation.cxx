@@ -15,16 +15,6 @@
 namespace slicemesh
 {
 
-namespace
-{
-
-std::uint64_t directedKey(std::int32_t a, std::int32_t b)
-{
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
-}
-
-} // namespace
-
 std::string MeshValidation::summary() const
 {
   std::ostringstream out;
@@ -86,53 +76,74 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
     below30 += cosine > cos30;
   }
 
-  // Edges, sorted: directed uses tell orientation, undirected ones boundary and non-manifold edges
-  // (and each undirected edge's first triangle, whose normal a later one is compared with: folds).
-  std::vector<std::uint64_t> directed;
-  directed.reserve(3 * nTriangles);
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> undirected; // key, triangle
-  undirected.reserve(3 * nTriangles);
+  // Edges, gathered by their smaller vertex (counting sort) and sorted within each vertex's few: the
+  // uses of one undirected edge tell boundary and non-manifold edges, their directions orientation
+  // (two uses the same way), and their triangles' normals folds (against the edge's first triangle).
+  struct EdgeUse
+  {
+    std::int32_t other;     ///< the edge's larger vertex
+    std::uint32_t triangle; ///< the triangle using it
+    bool forward;           ///< used from the smaller vertex to the larger
+    bool operator<(const EdgeUse& e) const
+    {
+      return other != e.other ? other < e.other : (triangle != e.triangle ? triangle < e.triangle : forward < e.forward);
+    }
+  };
+  std::vector<std::size_t> edgeStart(nPoints + 1, 0);
+  for (const Triangle& t : mesh.triangles)
+    for (int i = 0; i < 3; ++i)
+      ++edgeStart[static_cast<std::size_t>(std::min(t[i], t[(i + 1) % 3])) + 1];
+  for (std::size_t p = 0; p < nPoints; ++p)
+    edgeStart[p + 1] += edgeStart[p];
+  std::vector<EdgeUse> uses(edgeStart[nPoints]);
+  {
+    std::vector<std::size_t> next(edgeStart.begin(), edgeStart.end() - 1);
+    for (std::size_t f = 0; f < nTriangles; ++f)
+    {
+      const Triangle& t = mesh.triangles[f];
+      for (int i = 0; i < 3; ++i)
+      {
+        const std::int32_t p = t[i], q = t[(i + 1) % 3];
+        uses[next[static_cast<std::size_t>(std::min(p, q))]++] = { std::max(p, q), static_cast<std::uint32_t>(f), p < q };
+      }
+    }
+  }
   std::vector<char> used(nPoints, 0);
   DisjointSets pieces(nPoints);
-  for (std::size_t f = 0; f < nTriangles; ++f)
-  {
-    const Triangle& t = mesh.triangles[f];
+  for (const Triangle& t : mesh.triangles)
     for (int i = 0; i < 3; ++i)
     {
-      const std::int32_t p = t[i], q = t[(i + 1) % 3];
-      directed.push_back(directedKey(p, q));
-      undirected.emplace_back(directedKey(std::min(p, q), std::max(p, q)), static_cast<std::uint32_t>(f));
-      used[p] = 1;
-      pieces.unite(p, q);
+      used[t[i]] = 1;
+      pieces.unite(t[i], t[(i + 1) % 3]);
     }
-  }
-  std::sort(directed.begin(), directed.end());
-  for (std::size_t i = 0; i < directed.size();)
-  {
-    std::size_t j = i + 1;
-    while (j < directed.size() && directed[j] == directed[i])
-      ++j;
-    v.inconsistentEdges += j - i - 1;
-    i = j;
-  }
-  std::sort(undirected.begin(), undirected.end());
   std::size_t edges = 0;
-  for (std::size_t i = 0; i < undirected.size();)
+  for (std::size_t p = 0; p < nPoints; ++p)
   {
-    std::size_t j = i + 1;
-    const std::array<double, 3>& m = normals[undirected[i].second];
-    for (; j < undirected.size() && undirected[j].first == undirected[i].first; ++j)
-    { // unit normals nearly opposite: the triangles lie on top of each other
-      const std::array<double, 3>& n = normals[undirected[j].second];
-      if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -foldCosine)
-        ++v.foldedEdges;
+    const auto first = uses.begin() + static_cast<std::ptrdiff_t>(edgeStart[p]);
+    const auto last = uses.begin() + static_cast<std::ptrdiff_t>(edgeStart[p + 1]);
+    std::sort(first, last);
+    for (auto i = first; i != last;)
+    {
+      auto j = i + 1;
+      std::size_t forward = i->forward ? 1 : 0;
+      const std::array<double, 3>& m = normals[i->triangle];
+      for (; j != last && j->other == i->other; ++j)
+      { // unit normals nearly opposite: the triangles lie on top of each other
+        forward += j->forward ? 1 : 0;
+        const std::array<double, 3>& n = normals[j->triangle];
+        if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -foldCosine)
+          ++v.foldedEdges;
+      }
+      const auto count = static_cast<std::size_t>(j - i);
+      const std::size_t backward = count - forward;
+      v.inconsistentEdges += (forward > 1 ? forward - 1 : 0) + (backward > 1 ? backward - 1 : 0);
+      ++edges;
+      if (count == 1)
+        ++v.boundaryEdges;
+      else if (count > 2)
+        ++v.nonManifoldEdges;
+      i = j;
     }
-    ++edges;
-    if (j - i == 1)
-      ++v.boundaryEdges;
-    else if (j - i > 2)
-      ++v.nonManifoldEdges;
-    i = j;
   }
 
   // A vertex is manifold when its triangles form one fan: the edges opposite it form one connected
