@@ -296,12 +296,11 @@ TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& reg
   return reassembleRegions(mesh, regionOf, regions);
 }
 
-/** The tree a piece's remesh projects onto. The piece must fit a manifold surface (surfaceOf
- *  throws otherwise); the tree is built on the piece itself, not on that surface, which would double
- *  what the tree holds. */
+/** The tree a piece's remesh projects onto, built on the piece itself. (Whether the piece fits a
+ *  manifold surface is found where each region of it is turned into CGAL's surface to be remeshed:
+ *  a whole copy of the piece made only to check that first was a tiling's worth of memory.) */
 void buildTreeOf(const TriangleMesh& mesh, Tree& tree)
 {
-  surfaceOf(mesh);
   insertTriangles(tree, mesh);
   // No k-d tree of hints: every query brings its own (projectOntoInput).
   tree.do_not_accelerate_distance_queries();
