@@ -93,7 +93,8 @@ std::string finishSummary(const RunQuality& q)
   if (asAsked && q.smallPiecesAsTiled > 0)
     notes.push_back(std::to_string(q.smallPiecesAsTiled) + " specks kept as tiled");
   if (q.trianglesKeptTiled > 0)
-    notes.push_back(std::to_string(q.trianglesKeptTiled) + " triangles kept as tiled where the remesh crossed itself");
+    notes.push_back(std::to_string(q.trianglesKeptTiled) +
+                    " triangles kept as tiled where the remesh crossed itself or another piece");
   std::ostringstream text;
   text << "finish " << shown;
   for (std::size_t n = 0; n < notes.size(); ++n)

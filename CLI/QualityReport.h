@@ -43,7 +43,8 @@ struct RunQuality
   std::string fallback;          ///< why less was applied than asked (SurfaceFinishing.h); empty when all of it was
   std::size_t smallPiecesAsTiled = 0; ///< specks left as tiled (FinishedSurface::smallPiecesAsTiled)
   std::size_t unsmoothedVertices = 0; ///< left at their remeshed positions where smoothing made triangles cross
-  std::size_t trianglesKeptTiled = 0; ///< of remeshed pieces, kept as tiled where their remesh crossed itself
+  /** Of remeshed pieces, kept as tiled where their remesh crossed itself or another piece. */
+  std::size_t trianglesKeptTiled = 0;
   /** Connected pieces remeshed, smoothed only and left as tiled (FinishedSurface::piecesByFinish,
    *  indexed by SurfaceFinish); summed over labels. */
   std::array<std::size_t, 3> piecesByFinish{};

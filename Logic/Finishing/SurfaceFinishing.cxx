@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <optional>
 
 namespace slicemesh
@@ -34,6 +35,22 @@ std::string rejection(const MeshValidation& candidate, const MeshValidation& til
   return {};
 }
 
+/** Puts back where `unsmoothed` (the mesh's points before smoothing) has them the vertices marked.
+ *  Returns how many vertices moved back. */
+template <typename Marks>
+std::size_t unsmooth(TriangleMesh& mesh, const std::vector<Point3>& unsmoothed, const Marks& marked)
+{
+  std::size_t moved = 0;
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    if (marked[v] && (mesh.points[v].x != unsmoothed[v].x || mesh.points[v].y != unsmoothed[v].y ||
+                      mesh.points[v].z != unsmoothed[v].z))
+    {
+      mesh.points[v] = unsmoothed[v];
+      ++moved;
+    }
+  return moved;
+}
+
 /** Puts back where `unsmoothed` (the mesh's points before smoothing) has them the vertices of every
  *  triangle in a crossing pair and `rings` rings of triangles around them. Returns how many vertices
  *  moved back. */
@@ -54,15 +71,7 @@ std::size_t unsmoothAround(TriangleMesh& mesh, const std::vector<Point3>& unsmoo
           grown[static_cast<std::size_t>(v)] = true;
     marked.swap(grown);
   }
-  std::size_t moved = 0;
-  for (std::size_t v = 0; v < mesh.points.size(); ++v)
-    if (marked[v] && (mesh.points[v].x != unsmoothed[v].x || mesh.points[v].y != unsmoothed[v].y ||
-                      mesh.points[v].z != unsmoothed[v].z))
-    {
-      mesh.points[v] = unsmoothed[v];
-      ++moved;
-    }
-  return moved;
+  return unsmooth(mesh, unsmoothed, marked);
 }
 
 /** Two sheets a voxel apart (a thin gap between gyri, a thin wall) can be smoothed into each other:
@@ -119,6 +128,26 @@ bool isSpeck(const MeshValidation& tiled, double targetEdgeLength)
   return tiled.area < speckTargetTriangles * 0.25 * std::sqrt(3.0) * targetEdgeLength * targetEdgeLength;
 }
 
+/** Where a piece is remeshed around: its tiled triangles within keptRadius of these places are kept
+ *  as they are and the rest is remeshed (remeshSurfaceAround). */
+struct KeptPlaces
+{
+  /** Where a remesh of the piece crossed itself (two sheets of it closer than the target edge): the
+   *  tiled triangles kept there are smoothed with the rest, and put back only where that crosses. */
+  std::vector<Point3> crossedItself;
+  /** Where the finished piece crossed another piece: the tiled triangles kept there stay as tiled,
+   *  unsmoothed. The other piece keeps its own there too, and the tiling keeps the two apart; the
+   *  other piece is not at hand while this one is finished, so a crossing would not be seen. */
+  std::vector<Point3> crossedOthers;
+
+  std::vector<Point3> all() const
+  {
+    std::vector<Point3> places = crossedItself;
+    places.insert(places.end(), crossedOthers.begin(), crossedOthers.end());
+    return places;
+  }
+};
+
 /** One connected piece of the tiling, finished as far as it stays a valid surface of its own
  *  topology: remeshed and smoothed, else smoothed, else as it was tiled. */
 struct FinishedPiece
@@ -128,7 +157,9 @@ struct FinishedPiece
   std::string why; ///< why less than asked was applied
   std::size_t unsmoothedVertices = 0;
   MeshValidation validation; ///< of `mesh`
-  std::size_t trianglesKeptTiled = 0; ///< of a remeshed piece: tiled triangles kept where its remesh crossed itself
+  std::size_t trianglesKeptTiled = 0; ///< of a remeshed piece: tiled triangles kept around `kept`
+  /** Of a piece remeshed around places: those places. Remeshed again, it keeps them and adds new ones. */
+  KeptPlaces kept;
 };
 
 /** The validation of a piece of the tiling as it was tiled, without its self-intersection test:
@@ -152,22 +183,16 @@ FinishedPiece keptAsTiled(const TriangleMesh& piece, const MeshValidation& tiled
   return { piece, finish, std::move(why), 0, complete(piece, tiled) };
 }
 
-/** A remeshed piece smoothed, given its volume, and put back where smoothing made it cross. */
-FinishedPiece smoothedRemesh(TriangleMesh remeshed, const SurfaceFinishingOptions& options, double volume,
-                             unsigned int threads)
+/** How far from a place where a remesh crossed the tiled triangles are kept: two target edges, so
+ *  that the remeshed triangles around them, an edge long, stay clear of the crossing. */
+double keptRadius(const SurfaceFinishingOptions& options)
 {
-  const std::vector<Point3> unsmoothed = remeshed.points; // smoothing moves points only
-  smoothSurface(remeshed, options.smoothing, threads);
-  // The remesh's chords cut the corners of structures a few edges across: the piece gets its volume back.
-  offsetToVolume(remeshed, volume);
-  MeshValidation validation = validateMesh(remeshed);
-  const std::size_t unsmoothedVertices = unsmoothCrossings(remeshed, unsmoothed, validation);
-  return FinishedPiece{ std::move(remeshed), SurfaceFinish::Remeshed, {}, unsmoothedVertices, validation };
+  return 2.0 * options.remeshing.targetEdgeLength;
 }
 
-/** The triangles of `mesh` with a corner within `radius` of one of `points` (found through the
- *  points' columns of the plane's spatial hash, then by their distance in 3D). */
-std::vector<char> trianglesNear(const TriangleMesh& mesh, const std::vector<Point3>& points, double radius)
+/** The vertices of `mesh` within `radius` of one of `points` (found through the points' columns of
+ *  the plane's spatial hash, then by their distance in 3D). */
+std::vector<char> verticesNear(const TriangleMesh& mesh, const std::vector<Point3>& points, double radius)
 {
   SpatialHash columns(radius);
   for (std::size_t i = 0; i < points.size(); ++i)
@@ -184,11 +209,45 @@ std::vector<char> trianglesNear(const TriangleMesh& mesh, const std::vector<Poin
                               return dx * dx + dy * dy + dz * dz <= radius * radius;
                             });
   }
+  return near;
+}
+
+/** The triangles of `mesh` with a corner within `radius` of one of `points`. */
+std::vector<char> trianglesNear(const TriangleMesh& mesh, const std::vector<Point3>& points, double radius)
+{
+  const std::vector<char> near = verticesNear(mesh, points, radius);
   std::vector<char> flagged(mesh.triangles.size(), 0);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (std::int32_t v : mesh.triangles[t])
       flagged[t] = flagged[t] || near[static_cast<std::size_t>(v)];
   return flagged;
+}
+
+/** A remeshed piece smoothed, given its volume, and put back where smoothing made it cross; its
+ *  vertices within keptRadius of `crossedOthers` (KeptPlaces: there its remesh kept the tiled
+ *  triangles) are put back where the remesh left them, as tiled. */
+FinishedPiece smoothedRemesh(TriangleMesh remeshed, const SurfaceFinishingOptions& options, double volume,
+                             unsigned int threads, const std::vector<Point3>& crossedOthers = {})
+{
+  const std::vector<Point3> unsmoothed = remeshed.points; // smoothing moves points only
+  const std::vector<char> leftAsTiled =
+    crossedOthers.empty() ? std::vector<char>() : verticesNear(remeshed, crossedOthers, keptRadius(options));
+  smoothSurface(remeshed, options.smoothing, threads);
+  // The remesh's chords cut the corners of structures a few edges across: the piece gets its volume back.
+  offsetToVolume(remeshed, volume);
+  // After the offset, which would move them too (outwards: towards the other piece).
+  std::size_t unsmoothedVertices = leftAsTiled.empty() ? 0 : unsmooth(remeshed, unsmoothed, leftAsTiled);
+  MeshValidation validation = validateMesh(remeshed);
+  unsmoothedVertices += unsmoothCrossings(remeshed, unsmoothed, validation);
+  return FinishedPiece{ std::move(remeshed), SurfaceFinish::Remeshed, {}, unsmoothedVertices, validation };
+}
+
+Point3 centroid(const TriangleMesh& mesh, std::size_t t)
+{
+  const Point3& a = mesh.points[static_cast<std::size_t>(mesh.triangles[t][0])];
+  const Point3& b = mesh.points[static_cast<std::size_t>(mesh.triangles[t][1])];
+  const Point3& c = mesh.points[static_cast<std::size_t>(mesh.triangles[t][2])];
+  return { (a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0, (a.z + b.z + c.z) / 3.0 };
 }
 
 /** Where `mesh` crosses itself: the centroid of every triangle of a crossing pair. */
@@ -197,12 +256,7 @@ std::vector<Point3> crossingPlaces(const TriangleMesh& mesh)
   std::vector<Point3> places;
   for (const auto& [first, second] : selfIntersectingPairs(mesh))
     for (std::size_t t : { first, second })
-    {
-      const Point3& a = mesh.points[static_cast<std::size_t>(mesh.triangles[t][0])];
-      const Point3& b = mesh.points[static_cast<std::size_t>(mesh.triangles[t][1])];
-      const Point3& c = mesh.points[static_cast<std::size_t>(mesh.triangles[t][2])];
-      places.push_back({ (a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0, (a.z + b.z + c.z) / 3.0 });
-    }
+      places.push_back(centroid(mesh, t));
   return places;
 }
 
@@ -210,11 +264,51 @@ std::vector<Point3> crossingPlaces(const TriangleMesh& mesh)
  *  second remesh is for, not a piece that is gaps throughout. */
 constexpr std::size_t mostCrossingsRemeshedAround = 500;
 
+/** Whether a remesh rejected for crossing itself is worth remeshing again around the crossings. */
+bool crossesItselfInAFewPlaces(const MeshValidation& v)
+{
+  return v.selfIntersections > 0 && v.selfIntersections <= mostCrossingsRemeshedAround;
+}
+
+/** The piece remeshed around `places` (KeptPlaces) and smoothed. Each new remesh can cross itself
+ *  elsewhere (its triangles differ everywhere): those places are added and it is tried again, three
+ *  tries in all. The first that is a valid surface of the tiled piece's topology (`reference`), with
+ *  the places it was remeshed around; else nothing. */
+std::optional<FinishedPiece> remeshedAround(const TriangleMesh& tiled, const MeshValidation& reference,
+                                            const SurfaceFinishingOptions& options, double volume, unsigned int threads,
+                                            KeptPlaces places)
+{
+  for (int attempt = 0; attempt < 3; ++attempt)
+  {
+    const std::vector<char> keep = trianglesNear(tiled, places.all(), keptRadius(options));
+    std::optional<FinishedPiece> around;
+    try
+    {
+      around = smoothedRemesh(remeshSurfaceAround(tiled, keep, options.remeshing, threads), options, volume, threads,
+                              places.crossedOthers);
+    }
+    catch (const std::exception&) // the triangles around the kept ones are no manifold surface
+    {
+      return std::nullopt;
+    }
+    if (rejection(around->validation, reference).empty())
+    {
+      around->trianglesKeptTiled = static_cast<std::size_t>(std::count(keep.begin(), keep.end(), 1));
+      around->kept = std::move(places);
+      return around;
+    }
+    if (!crossesItselfInAFewPlaces(around->validation))
+      return std::nullopt;
+    const std::vector<Point3> more = crossingPlaces(around->mesh);
+    places.crossedItself.insert(places.crossedItself.end(), more.begin(), more.end());
+  }
+  return std::nullopt;
+}
+
 /** The remeshed, smoothed piece, if it is a valid surface of the tiled piece's topology (`reference`);
  *  else nothing, and `why` says what was wrong. Where two sheets are closer than the target edge (a
  *  thin gap between gyri, a wall a voxel thick) the remesh's chords can pass through the other sheet:
- *  the piece is then remeshed again around those places, the tiled triangles within two target
- *  edges of them kept as they are, with the places each new remesh crosses added (three tries). */
+ *  the piece is then remeshed again around those places (remeshedAround). */
 std::optional<FinishedPiece> remeshedPiece(const TriangleMesh& tiled, const MeshValidation& reference,
                                            const SurfaceFinishingOptions& options, double volume, unsigned int threads,
                                            std::string& why)
@@ -235,34 +329,11 @@ std::optional<FinishedPiece> remeshedPiece(const TriangleMesh& tiled, const Mesh
   why = rejection(piece->validation, reference);
   if (why.empty())
     return piece;
-  if (piece->validation.selfIntersections == 0 || piece->validation.selfIntersections > mostCrossingsRemeshedAround)
+  if (!crossesItselfInAFewPlaces(piece->validation))
     return std::nullopt;
-  // Each new remesh can cross elsewhere (its triangles differ everywhere): those places are added.
-  std::vector<Point3> places = crossingPlaces(piece->mesh);
+  KeptPlaces places{ crossingPlaces(piece->mesh), {} };
   piece.reset(); // not held beside the second remesh
-  for (int attempt = 0; attempt < 3; ++attempt)
-  {
-    const std::vector<char> keep = trianglesNear(tiled, places, 2.0 * options.remeshing.targetEdgeLength);
-    std::optional<FinishedPiece> around;
-    try
-    {
-      around = smoothedRemesh(remeshSurfaceAround(tiled, keep, options.remeshing, threads), options, volume, threads);
-    }
-    catch (const std::exception&) // the triangles around the kept ones are no manifold surface
-    {
-      break;
-    }
-    if (rejection(around->validation, reference).empty())
-    {
-      around->trianglesKeptTiled = static_cast<std::size_t>(std::count(keep.begin(), keep.end(), 1));
-      return around;
-    }
-    if (around->validation.selfIntersections == 0 || around->validation.selfIntersections > mostCrossingsRemeshedAround)
-      break;
-    const std::vector<Point3> more = crossingPlaces(around->mesh);
-    places.insert(places.end(), more.begin(), more.end());
-  }
-  return std::nullopt;
+  return remeshedAround(tiled, reference, options, volume, threads, std::move(places));
 }
 
 /** `reference`: the piece's validation as tiled (asTiled); `volumeScale`: its finished volume over
@@ -304,6 +375,88 @@ FinishedPiece finishPiece(const TriangleMesh& tiled, const MeshValidation& refer
   result.mesh = tiled;
   result.validation = complete(tiled, reference);
   return result;
+}
+
+/** Rounds in which the pieces that cross other pieces once finished are remeshed again around the
+ *  places where they cross, before those still crossing go back to their tiled shape. */
+constexpr int roundsRemeshedAround = 3;
+
+/** Rounds, after those, in which the pieces still crossing go back to their tiled shape. A valid
+ *  tiling's pieces do not cross, so one round does it; pieces of a tiling that crosses itself (its
+ *  self-intersections not tested yet) may still cross after them. */
+constexpr int roundsPutBack = 8;
+
+/** The pairs of triangles of different pieces that cross each other, as the pieces are finished now. */
+std::vector<TrianglePair> piecesCrossing(const std::vector<FinishedPiece>& pieces)
+{
+  std::vector<const TriangleMesh*> meshes;
+  for (const FinishedPiece& piece : pieces)
+    meshes.push_back(&piece.mesh);
+  return crossingTriangles(meshes);
+}
+
+/** Where each piece in a crossing pair crosses: the centroids of both triangles of each of its pairs
+ *  (the other piece's triangle is where this one must not reach), by piece in increasing order. */
+std::map<std::size_t, std::vector<Point3>> crossingPlacesByPiece(const std::vector<FinishedPiece>& pieces,
+                                                                 const std::vector<TrianglePair>& crossing)
+{
+  std::map<std::size_t, std::vector<Point3>> places;
+  for (const auto& [a, b] : crossing)
+  {
+    const Point3 at[2] = { centroid(pieces[a.mesh].mesh, a.triangle), centroid(pieces[b.mesh].mesh, b.triangle) };
+    for (const std::size_t p : { a.mesh, b.mesh })
+      places[p].insert(places[p].end(), std::begin(at), std::end(at));
+  }
+  return places;
+}
+
+/** A finished piece that crossed another one at `places`, finished again: if it was remeshed and
+ *  `remeshAgain`, remeshed around those places besides the ones it was remeshed around already
+ *  (KeptPlaces::crossedOthers); if that gives no valid surface, or else, put back to its tiled shape,
+ *  which a valid tiling keeps apart from the other pieces. (A piece smoothed only could not be
+ *  remeshed at all: around a few more places would not change that.) `tiled` and `reference`: the
+ *  piece as tiled and its validation. */
+FinishedPiece finishedAgainAround(FinishedPiece piece, const TriangleMesh& tiled, const MeshValidation& reference,
+                                  const SurfaceFinishingOptions& options, double volume, unsigned int threads,
+                                  const std::vector<Point3>& places, bool remeshAgain)
+{
+  if (remeshAgain && piece.finish == SurfaceFinish::Remeshed)
+  {
+    KeptPlaces around = std::move(piece.kept);
+    around.crossedOthers.insert(around.crossedOthers.end(), places.begin(), places.end());
+    piece = FinishedPiece(); // not held beside the new remesh
+    std::optional<FinishedPiece> again = remeshedAround(tiled, reference, options, volume, threads, std::move(around));
+    if (again)
+      return std::move(*again);
+  }
+  return keptAsTiled(tiled, reference, SurfaceFinish::Tiled, "it crossed another piece once finished");
+}
+
+/** Pieces finished apart may meet (two pieces a voxel apart, each smoothed towards the other). Round
+ *  after round, every piece that crosses another, unless it is a speck or left as tiled (both in
+ *  their tiled shape already), is finished again by `finishAgain(p, places, round)` (places: where it
+ *  crosses, crossingPlacesByPiece), side by side on `threads` threads, until none cross or the rounds
+ *  are over. Returns how many pairs of triangles of different pieces still cross. */
+template <typename FinishAgain>
+std::size_t separatePieces(std::vector<FinishedPiece>& pieces, const std::vector<char>& speck, unsigned int threads,
+                           FinishAgain&& finishAgain)
+{
+  for (int round = 0;; ++round)
+  {
+    const auto crossing = piecesCrossing(pieces);
+    std::vector<std::size_t> crossed;
+    std::vector<std::vector<Point3>> places;
+    for (auto& [p, at] : crossingPlacesByPiece(pieces, crossing))
+      if (!speck[p] && pieces[p].finish != SurfaceFinish::Tiled)
+      {
+        crossed.push_back(p);
+        places.push_back(std::move(at));
+      }
+    if (crossed.empty() || round == roundsRemeshedAround + roundsPutBack)
+      return crossing.size();
+    // Each piece into its own slot: the result does not depend on the number of threads.
+    parallelFor(crossed.size(), threads, [&](std::size_t i) { finishAgain(crossed[i], places[i], round); });
+  }
 }
 
 /** The pieces' meshes side by side in one mesh; `firstTriangle[i]` is where piece i's triangles start. */
@@ -378,25 +531,18 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
               });
   result.smallPiecesAsTiled = static_cast<std::size_t>(std::count(speck.begin(), speck.end(), 1));
 
-  // Pieces finished apart may meet (two pieces a voxel apart, each smoothed towards the other):
-  // those go back to their tiled shape, which a valid tiling keeps apart, until none cross (pieces
-  // of a tiling that crosses itself still cross then, and the tiling is handed back below). Each
-  // piece is checked already; only pieces whose boxes overlap are checked against each other.
-  std::size_t crossingTriangles = 0;
-  for (int round = 0;; ++round)
-  {
-    std::vector<const TriangleMesh*> meshes;
-    for (const FinishedPiece& piece : pieces)
-      meshes.push_back(&piece.mesh);
-    const auto crossing = crossingMeshes(meshes, crossingTriangles);
-    if (crossing.empty() || round == 8)
-      break;
-    for (const auto& [first, second] : crossing)
-      for (const std::size_t p : { first, second })
-        if (pieces[p].finish != SurfaceFinish::Tiled)
-          pieces[p] = keptAsTiled(*tiledPieces[p], tiledValidations[p], SurfaceFinish::Tiled,
-                                  "it crossed another piece once finished");
-  }
+  // Pieces that cross each other once finished are remeshed again with their tiled triangles kept
+  // around the places where they cross, as a piece whose remesh crosses itself is (pieces of one
+  // label a voxel apart are two sheets of one structure), and checked again; those still crossing
+  // after roundsRemeshedAround rounds go back to their tiled shape.
+  const std::size_t crossingTriangles = separatePieces(
+    pieces, speck, threads,
+    [&](std::size_t p, const std::vector<Point3>& places, int round)
+    {
+      pieces[p] = finishedAgainAround(std::move(pieces[p]), *tiledPieces[p], tiledValidations[p], options,
+                                      volumeScale * tiledValidations[p].volume, innerThreads(p), places,
+                                      round < roundsRemeshedAround);
+    });
   std::vector<MeshValidation> validations;
   std::vector<const TriangleMesh*> finishedPieces;
   std::vector<double> volumes;

@@ -44,7 +44,8 @@ struct FinishedSurface
    *  counts as finished (remeshing or smoothing a shape a couple of edges across only collapses it). */
   std::size_t smallPiecesAsTiled = 0;
   /** Triangles of remeshed pieces kept as tiled: around the places where a piece's remesh crossed
-   *  itself (two sheets closer than the target edge), the piece remeshed again around them. */
+   *  itself (two sheets closer than the target edge) or, once finished, crossed another piece, the
+   *  piece remeshed again around them. */
   std::size_t trianglesKeptTiled = 0;
   /** How many connected pieces got each finish, indexed by SurfaceFinish (specks, left as tiled,
    *  count under Tiled). All zero when the tiling was not split (an invalid tiling, or Tiled asked). */
@@ -63,9 +64,10 @@ SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing
  *  the vertices around them (growing rings, three tries) go back to their remeshed positions. A piece
  *  is kept finished only if it is a valid surface of its tiled topology, facing the same way;
  *  otherwise it is smoothed only (put back to the tiling where sheets cross, likewise), else left
- *  as tiled. Pieces that cross each other once finished go
- *  back to their tiled shape. `fallback` says how many pieces got less than asked, and why the first
- *  did. `tilingValidation` may be without the self-intersection test (validateMeshTopology): then
+ *  as tiled. Remeshed pieces that cross each other once finished are remeshed again with their
+ *  tiled triangles kept, unsmoothed, around the places where they cross (three rounds); pieces still
+ *  crossing then go back to their tiled shape. `fallback` says how many pieces got less than asked,
+ *  and why the first did. `tilingValidation` may be without the self-intersection test (validateMeshTopology): then
  *  only what is kept as tiled is tested, and the finished pieces are tested in any case. A tiling
  *  that is not a closed, manifold, oriented surface (or that crosses itself, when tested) is
  *  returned as it is. The returned validation is always complete. Pieces are finished on up to

@@ -41,12 +41,19 @@ Kernel::Triangle_3 triangle(const TriangleMesh& mesh, std::size_t t)
   return { point(0), point(1), point(2) };
 }
 
+/** The pairs of meshes the pairs of triangles belong to, each once, in increasing order. */
+std::vector<std::pair<std::size_t, std::size_t>> meshPairsOf(const std::vector<TrianglePair>& pairs)
+{
+  std::set<std::pair<std::size_t, std::size_t>> meshPairs;
+  for (const auto& [a, b] : pairs)
+    meshPairs.insert({ a.mesh, b.mesh });
+  return { meshPairs.begin(), meshPairs.end() };
+}
+
 } // namespace
 
-std::vector<std::pair<std::size_t, std::size_t>> crossingMeshes(const std::vector<const TriangleMesh*>& meshes,
-                                                                std::size_t& trianglePairs)
+std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh*>& meshes)
 {
-  trianglePairs = 0;
   // Meshes whose bounding boxes overlap another's: only their triangles can meet.
   std::vector<Box> meshBoxes;
   for (std::size_t m = 0; m < meshes.size(); ++m)
@@ -75,21 +82,30 @@ std::vector<std::pair<std::size_t, std::size_t>> crossingMeshes(const std::vecto
     if (candidate[m])
       for (std::size_t t = 0; t < meshes[m]->triangles.size(); ++t)
         boxes.push_back(triangleBox(*meshes[m], m, t));
-  std::set<std::pair<std::size_t, std::size_t>> crossing;
+  std::vector<TrianglePair> crossing;
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(),
                                 [&](const Box& a, const Box& b)
                                 {
-                                  const auto [ma, ta] = a.info();
-                                  const auto [mb, tb] = b.info();
-                                  if (ma == mb)
+                                  MeshTriangle ta{ a.info().first, a.info().second };
+                                  MeshTriangle tb{ b.info().first, b.info().second };
+                                  if (ta.mesh == tb.mesh)
                                     return; // within one mesh: its own validation's concern
-                                  if (CGAL::do_intersect(triangle(*meshes[ma], ta), triangle(*meshes[mb], tb)))
-                                  {
-                                    ++trianglePairs;
-                                    crossing.insert({ std::min(ma, mb), std::max(ma, mb) });
-                                  }
+                                  if (CGAL::do_intersect(triangle(*meshes[ta.mesh], ta.triangle),
+                                                         triangle(*meshes[tb.mesh], tb.triangle)))
+                                    crossing.push_back(ta.mesh < tb.mesh ? TrianglePair{ ta, tb } : TrianglePair{ tb, ta });
                                 });
-  return { crossing.begin(), crossing.end() };
+  // The box intersection reports pairs in an order of its own: sorted, the caller's result does
+  // not depend on it.
+  std::sort(crossing.begin(), crossing.end());
+  return crossing;
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> crossingMeshes(const std::vector<const TriangleMesh*>& meshes,
+                                                                std::size_t& trianglePairs)
+{
+  const std::vector<TrianglePair> pairs = crossingTriangles(meshes);
+  trianglePairs = pairs.size();
+  return meshPairsOf(pairs);
 }
 
 } // namespace slicemesh

@@ -10,11 +10,31 @@
 namespace slicemesh
 {
 
+/** One triangle of one of several meshes: indices into the list of meshes and into its triangles. */
+struct MeshTriangle
+{
+  std::size_t mesh = 0;
+  std::size_t triangle = 0;
+  bool operator==(const MeshTriangle& other) const { return mesh == other.mesh && triangle == other.triangle; }
+  bool operator<(const MeshTriangle& other) const
+  {
+    return mesh != other.mesh ? mesh < other.mesh : triangle < other.triangle;
+  }
+};
+
+/** Two triangles of different meshes that meet. */
+using TrianglePair = std::pair<MeshTriangle, MeshTriangle>;
+
+/** The pairs of triangles of different meshes that intersect or touch each other, the triangle of
+ *  the lower mesh first, in increasing order. The meshes share no vertices, so any contact counts.
+ *  Only meshes whose bounding boxes overlap are compared, and within them only triangles whose boxes
+ *  overlap (CGAL's box intersection, then exact triangle tests): far less work than the
+ *  self-intersection test of the meshes taken together. */
+std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh*>& meshes);
+
 /** The pairs of meshes (indices, first < second, in increasing order) some triangles of which
- *  intersect or touch each other, and in `trianglePairs` how many such pairs of triangles there are.
- *  The meshes share no vertices, so any contact counts. Only meshes whose bounding boxes overlap are
- *  compared, and within them only triangles whose boxes overlap (CGAL's box intersection, then exact
- *  triangle tests): far less work than the self-intersection test of the meshes taken together. */
+ *  intersect or touch each other (crossingTriangles), and in `trianglePairs` how many such pairs of
+ *  triangles there are. */
 std::vector<std::pair<std::size_t, std::size_t>> crossingMeshes(const std::vector<const TriangleMesh*>& meshes,
                                                                 std::size_t& trianglePairs);
 

@@ -1,13 +1,16 @@
 // The finishing stage on meshes whose answer is known: a sphere made of a subdivided octahedron,
-// with and without a staircase-like ripple; the end-to-end figures on phantoms are in
+// with and without a staircase-like ripple, and the tiling of a small mask; the end-to-end figures on phantoms are in
 // Testing/Pipeline/SurfaceFinishingPhantomTest.cxx.
+#include "Contours/MarchingSquares.h"
 #include "Measures/MeshValidation.h"
 #include "Finishing/SurfaceFinishing.h"
+#include "Tiling/SurfaceReconstruction.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -487,6 +490,82 @@ TEST(SurfaceRemeshing, AroundKeptTrianglesTheRestIsRemeshedAndTheKeptOnesStayExa
   EXPECT_NEAR(v.volume, 4.0 / 3.0 * M_PI * 1000.0, 0.02 * 4.0 / 3.0 * M_PI * 1000.0);
   // One flag per triangle is needed.
   EXPECT_THROW(remeshSurfaceAround(sphere, std::vector<char>(3, 0), options), Error);
+}
+
+} // namespace
+} // namespace slicemesh
+
+namespace slicemesh
+{
+namespace
+{
+
+/** The tiling of a mask of 1 mm voxels, nx x ny x nz, `inside` at the voxels it holds; `voxels`
+ *  gets their number. The slices' contours are traced as the CLI traces a mask's (marching squares
+ *  at 0.5 between the voxel centres, diagonal neighbours apart). */
+TriangleMesh maskTiling(int nx, int ny, int nz, const std::function<bool(int, int, int)>& inside, std::size_t& voxels)
+{
+  ContourStack stack;
+  stack.sliceSpacing = 1.0;
+  voxels = 0;
+  for (int k = 0; k < nz; ++k)
+  {
+    ScalarGrid2 grid; // one empty voxel around the mask: its contours close
+    grid.x0 = grid.y0 = -1.0;
+    grid.nx = static_cast<std::size_t>(nx + 2);
+    grid.ny = static_cast<std::size_t>(ny + 2);
+    for (int j = -1; j <= ny; ++j)
+      for (int i = -1; i <= nx; ++i)
+      {
+        const bool in = i >= 0 && j >= 0 && i < nx && j < ny && inside(i, j, k);
+        voxels += in ? 1 : 0;
+        grid.values.push_back(in ? -0.5 : 0.5);
+      }
+    stack.slices.push_back({ static_cast<double>(k), zeroContours(grid) });
+  }
+  return reconstructSurface(stack);
+}
+
+TEST(SurfaceFinishing, PiecesThatFinishIntoEachOtherAreRemeshedAroundWhereTheyCross)
+{
+  // Two walls of a label along the grid's diagonal, 3 voxels thick, 6 slices high, whose voxels
+  // meet only along their edges: one piece of the mask (26-connected), two of the tiling, their
+  // traced walls 0.7 mm apart. Finished apart (1.1 mm edges, the voxels' volume given back), they
+  // cross; before, both went back to their tiled shape. Now each is remeshed again with its tiled
+  // triangles kept, unsmoothed, around the places where they crossed, and both count as remeshed.
+  std::size_t voxels = 0;
+  const TriangleMesh tiling = maskTiling(
+    12, 12, 6,
+    [](int i, int j, int)
+    {
+      const int diagonal = i + j;
+      return (diagonal >= 10 && diagonal <= 12) || (diagonal >= 14 && diagonal <= 16);
+    },
+    voxels);
+  const MeshValidation tiled = validateMesh(tiling);
+  ASSERT_TRUE(tiled.valid()) << tiled.summary();
+  ASSERT_EQ(tiled.components, 2u);
+  const SurfaceFinishingOptions options = finishingOptionsFor({ 1.0, 1.0, 1.0 });
+  const FinishedSurface finished = finishSurface(tiling, tiled, options, 1, static_cast<double>(voxels));
+  std::printf("%s, %zu of %zu triangles kept as tiled%s%s\n", finishName(finished.finish), finished.trianglesKeptTiled,
+              finished.mesh.triangles.size(), finished.fallback.empty() ? "" : ": ", finished.fallback.c_str());
+  EXPECT_EQ(finished.finish, SurfaceFinish::Remeshed) << finished.fallback;
+  EXPECT_TRUE(finished.fallback.empty()) << finished.fallback;
+  EXPECT_EQ(finished.piecesByFinish[static_cast<std::size_t>(SurfaceFinish::Remeshed)], 2u);
+  EXPECT_GT(finished.trianglesKeptTiled, 0u);
+  EXPECT_LT(2 * finished.trianglesKeptTiled, finished.mesh.triangles.size());
+  // The joined mesh, tested whole: no triangle of one piece meets one of the other.
+  const MeshValidation v = validateMesh(finished.mesh);
+  EXPECT_TRUE(v.valid()) << v.summary();
+  EXPECT_EQ(v.selfIntersections, 0u);
+  EXPECT_EQ(v.components, 2u);
+  EXPECT_EQ(v.eulerCharacteristic, 4);
+  EXPECT_NEAR(v.volume, static_cast<double>(voxels), 0.05 * static_cast<double>(voxels));
+
+  // The pieces finished again side by side: the same bit for bit on more threads.
+  const FinishedSurface onEight = finishSurface(tiling, tiled, options, 8, static_cast<double>(voxels));
+  EXPECT_EQ(onEight.mesh.triangles, finished.mesh.triangles);
+  EXPECT_TRUE(samePoints(onEight.mesh.points, finished.mesh.points));
 }
 
 } // namespace

@@ -1,9 +1,13 @@
-// crossingMeshes: which of several closed meshes (no shared vertices) cross each other.
+// crossingMeshes and crossingTriangles: which of several closed meshes (no shared vertices) cross
+// each other, and along which pairs of triangles.
 #include "ContourStacks.h"
 #include "Measures/MeshCrossings.h"
 #include "Tiling/SurfaceReconstruction.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
 
 namespace slicemesh::testing
 {
@@ -40,6 +44,56 @@ TEST(MeshCrossings, AMeshDoesNotCrossItself)
   std::size_t pairs = 99;
   EXPECT_TRUE(crossingMeshes({ &a }, pairs).empty()); // its own neighbouring triangles touch, by design
   EXPECT_EQ(pairs, 0u);
+}
+
+TEST(MeshCrossings, TheCrossingTrianglePairsAreNamedInOrder)
+{
+  // Two balls of radius 6 mm 8 mm apart cross along the circle x = 4, of radius sqrt(20) mm.
+  const TriangleMesh a = ball(0.0), apart = ball(40.0), overlapping = ball(8.0);
+  const auto pairs = crossingTriangles({ &a, &apart, &overlapping });
+  ASSERT_GT(pairs.size(), 10u);
+  std::size_t count = 0;
+  EXPECT_EQ(crossingMeshes({ &a, &apart, &overlapping }, count).size(), 1u);
+  EXPECT_EQ(count, pairs.size()); // the same pairs, counted
+  EXPECT_TRUE(std::is_sorted(pairs.begin(), pairs.end()));
+  EXPECT_TRUE(std::adjacent_find(pairs.begin(), pairs.end()) == pairs.end()); // each pair once
+  auto centroid = [](const TriangleMesh& mesh, std::size_t t)
+  {
+    Point3 c{ 0.0, 0.0, 0.0 };
+    for (std::int32_t v : mesh.triangles[t])
+    {
+      c.x += mesh.points[static_cast<std::size_t>(v)].x / 3.0;
+      c.y += mesh.points[static_cast<std::size_t>(v)].y / 3.0;
+      c.z += mesh.points[static_cast<std::size_t>(v)].z / 3.0;
+    }
+    return c;
+  };
+  for (const auto& [first, second] : pairs)
+  {
+    // The lower mesh's triangle first; the ball far apart is in none.
+    EXPECT_EQ(first.mesh, 0u);
+    EXPECT_EQ(second.mesh, 2u);
+    ASSERT_LT(first.triangle, a.triangles.size());
+    ASSERT_LT(second.triangle, overlapping.triangles.size());
+    // Both triangles lie on the circle of contact, to within their own size (edges under 1.5 mm).
+    for (const Point3& c : { centroid(a, first.triangle), centroid(overlapping, second.triangle) })
+    {
+      EXPECT_NEAR(c.x, 4.0, 1.5);
+      EXPECT_NEAR(std::hypot(c.y, c.z), std::sqrt(20.0), 1.5);
+    }
+  }
+  // Listed the other way round, the same pairs, each still with the lower mesh's triangle first.
+  const auto reversed = crossingTriangles({ &overlapping, &apart, &a });
+  ASSERT_EQ(reversed.size(), pairs.size());
+  for (const auto& [first, second] : reversed)
+  {
+    EXPECT_EQ(first.mesh, 0u); // `overlapping`, now first
+    EXPECT_EQ(second.mesh, 2u);
+    const TrianglePair same{ { 0, second.triangle }, { 2, first.triangle } };
+    EXPECT_TRUE(std::binary_search(pairs.begin(), pairs.end(), same));
+  }
+  EXPECT_TRUE(crossingTriangles({ &a, &apart }).empty());
+  EXPECT_TRUE(crossingTriangles({ &a }).empty());
 }
 
 } // namespace
