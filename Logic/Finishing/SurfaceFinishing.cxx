@@ -520,7 +520,9 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   parallelFor(tiledPieces.size(), threads,
               [&](std::size_t p)
               {
-                tiledValidations[p] = asTiled(*tiledPieces[p], tilingValidation.selfIntersectionChecked);
+                // A tiling of one piece is its own piece: its validation is the tiling's, not measured again.
+                tiledValidations[p] = onePiece ? tilingValidation
+                                               : asTiled(*tiledPieces[p], tilingValidation.selfIntersectionChecked);
                 // A speck of a few voxels is a couple of target edges across: remeshing or smoothing
                 // can only collapse it. It stays as tiled, as asked.
                 speck[p] = isSpeck(tiledValidations[p], options.remeshing.targetEdgeLength);
