@@ -1,5 +1,6 @@
 #include "Finishing/SurfaceSmoothing.h"
 
+#include "Core/BoundingBox.h"
 #include "Core/ParallelFor.h"
 #include "Measures/MeshComponents.h"
 
@@ -65,20 +66,18 @@ std::uint32_t spreadBits(std::uint32_t x)
  *  neighbours from all over a large mesh, and waited on memory most of the time.) */
 std::vector<std::int32_t> spatialOrder(const std::vector<Point3>& points)
 {
-  Point3 lo{ 1e300, 1e300, 1e300 }, hi{ -1e300, -1e300, -1e300 };
+  BoundingBox box;
   for (const Point3& p : points)
-  {
-    lo = { std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z) };
-    hi = { std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z) };
-  }
-  const double extent = std::max({ hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, 1e-300 });
+    box.add(p);
+  const auto& lo = box.low;
+  const double extent = std::max({ box.high[0] - lo[0], box.high[1] - lo[1], box.high[2] - lo[2], 1e-300 });
   auto cell = [&](double c, double low) { return static_cast<std::uint32_t>(std::min(1023.0, (c - low) / extent * 1024.0)); };
   std::vector<std::pair<std::uint32_t, std::int32_t>> keyed(points.size());
   for (std::size_t v = 0; v < points.size(); ++v)
   {
     const Point3& p = points[v];
     const std::uint32_t key =
-      spreadBits(cell(p.x, lo.x)) | (spreadBits(cell(p.y, lo.y)) << 1) | (spreadBits(cell(p.z, lo.z)) << 2);
+      spreadBits(cell(p.x, lo[0])) | (spreadBits(cell(p.y, lo[1])) << 1) | (spreadBits(cell(p.z, lo[2])) << 2);
     keyed[v] = { key, static_cast<std::int32_t>(v) };
   }
   std::sort(keyed.begin(), keyed.end());

@@ -1,5 +1,6 @@
 #include "Measures/ComponentOrientation.h"
 
+#include "Core/BoundingBox.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/MeshValidation.h"
 #include "Measures/SurfaceMeshConversion.h"
@@ -7,8 +8,6 @@
 #include <CGAL/Side_of_triangle_mesh.h>
 
 #include <algorithm>
-#include <array>
-#include <limits>
 #include <memory>
 
 namespace slicemesh
@@ -19,40 +18,6 @@ namespace
 using Kernel = CgalKernel;
 using SurfaceMesh = CgalSurfaceMesh;
 using SideOf = CGAL::Side_of_triangle_mesh<SurfaceMesh, Kernel>;
-
-struct Box
-{
-  std::array<double, 3> low{ std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
-                             std::numeric_limits<double>::max() };
-  std::array<double, 3> high{ std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest(),
-                              std::numeric_limits<double>::lowest() };
-
-  /** Surfaces that do not cross nest only if their boxes do. */
-  bool contains(const Box& other) const
-  {
-    for (int a = 0; a < 3; ++a)
-      if (other.low[a] < low[a] || other.high[a] > high[a])
-        return false;
-    return true;
-  }
-};
-
-Box boxOf(const TriangleMesh& mesh)
-{
-  Box box;
-  for (const Triangle& t : mesh.triangles)
-    for (std::int32_t v : t)
-    {
-      const Point3& p = mesh.points[static_cast<std::size_t>(v)];
-      const std::array<double, 3> c{ p.x, p.y, p.z };
-      for (int a = 0; a < 3; ++a)
-      {
-        box.low[a] = std::min(box.low[a], c[a]);
-        box.high[a] = std::max(box.high[a], c[a]);
-      }
-    }
-  return box;
-}
 
 /** A component held for inside/outside queries (CGAL's ray parity over an AABB tree, which shoots
  *  again when a ray grazes an edge). */
@@ -78,10 +43,10 @@ std::size_t misorientedComponents(const std::vector<const TriangleMesh*>& compon
   const std::size_t n = components.size();
   if (n == 1)
     return volumes.front() > 0.0 ? 0 : 1;
-  std::vector<Box> boxes;
+  std::vector<BoundingBox> boxes;
   boxes.reserve(n);
   for (const TriangleMesh* c : components)
-    boxes.push_back(boxOf(*c));
+    boxes.push_back(boxOfTriangles(*c));
   // Most components nest in none: the boxes rule them out before any tree is built.
   std::vector<std::unique_ptr<Enclosure>> enclosures(n);
   std::size_t misoriented = 0;
@@ -94,6 +59,7 @@ std::size_t misorientedComponents(const std::vector<const TriangleMesh*>& compon
     std::size_t depth = 0;
     for (std::size_t b = 0; b < n; ++b)
     {
+      // Surfaces that do not cross nest only if their boxes do.
       if (b == a || components[b]->triangles.empty() || !boxes[b].contains(boxes[a]))
         continue;
       if (!enclosures[b])

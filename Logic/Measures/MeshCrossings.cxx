@@ -1,5 +1,7 @@
 #include "Measures/MeshCrossings.h"
 
+#include "Core/BoundingBox.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
 
@@ -15,20 +17,10 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 /** A box tagged with its mesh and, for a triangle's box, the triangle. */
 using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::pair<std::size_t, std::size_t>>;
 
-Box triangleBox(const TriangleMesh& mesh, std::size_t meshIndex, std::size_t t)
+/** `box` tagged with its mesh and triangle. */
+Box tagged(BoundingBox box, std::size_t meshIndex, std::size_t t) // by value: CGAL takes non-const arrays
 {
-  double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
-  for (std::int32_t v : mesh.triangles[t])
-  {
-    const Point3& p = mesh.points[static_cast<std::size_t>(v)];
-    const double c[3] = { p.x, p.y, p.z };
-    for (int a = 0; a < 3; ++a)
-    {
-      lo[a] = std::min(lo[a], c[a]);
-      hi[a] = std::max(hi[a], c[a]);
-    }
-  }
-  return Box(lo, hi, { meshIndex, t });
+  return Box(box.low.data(), box.high.data(), { meshIndex, t });
 }
 
 Kernel::Triangle_3 triangle(const TriangleMesh& mesh, std::size_t t)
@@ -60,17 +52,7 @@ std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh
   {
     if (meshes[m]->triangles.empty())
       continue;
-    double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
-    for (const Point3& p : meshes[m]->points)
-    {
-      const double c[3] = { p.x, p.y, p.z };
-      for (int a = 0; a < 3; ++a)
-      {
-        lo[a] = std::min(lo[a], c[a]);
-        hi[a] = std::max(hi[a], c[a]);
-      }
-    }
-    meshBoxes.emplace_back(lo, hi, std::pair<std::size_t, std::size_t>{ m, 0 });
+    meshBoxes.push_back(tagged(boxOfTriangles(*meshes[m]), m, 0));
   }
   std::vector<char> candidate(meshes.size(), 0);
   CGAL::box_self_intersection_d(meshBoxes.begin(), meshBoxes.end(),
@@ -81,7 +63,7 @@ std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh
   for (std::size_t m = 0; m < meshes.size(); ++m)
     if (candidate[m])
       for (std::size_t t = 0; t < meshes[m]->triangles.size(); ++t)
-        boxes.push_back(triangleBox(*meshes[m], m, t));
+        boxes.push_back(tagged(boxOfTriangle(*meshes[m], t), m, t));
   std::vector<TrianglePair> crossing;
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(),
                                 [&](const Box& a, const Box& b)

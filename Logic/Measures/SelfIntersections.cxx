@@ -1,5 +1,6 @@
 #include "Measures/SelfIntersections.h"
 
+#include "Core/BoundingBox.h"
 #include "Core/ParallelFor.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -18,20 +19,6 @@ namespace
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
-
-/** A closed axis-aligned box: boxes that only touch overlap, as in CGAL's box intersection. */
-struct Box
-{
-  std::array<double, 3> lo, hi;
-};
-
-bool overlap(const Box& a, const Box& b)
-{
-  for (int k = 0; k < 3; ++k)
-    if (a.lo[k] > b.hi[k] || b.lo[k] > a.hi[k])
-      return false;
-  return true;
-}
 
 /** Cubic cells of one size over the boxes' extent; a cell is named by one 64-bit key. */
 class CellGrid
@@ -54,9 +41,9 @@ public:
   static std::uint64_t key(std::uint64_t x, std::uint64_t y, std::uint64_t z) { return (x << 42) | (y << 21) | z; }
 
   /** How many cells the box covers. */
-  std::uint64_t cellsOf(const Box& box) const
+  std::uint64_t cellsOf(const BoundingBox& box) const
   {
-    const auto lo = cellOf(box.lo), hi = cellOf(box.hi);
+    const auto lo = cellOf(box.low), hi = cellOf(box.high);
     return (hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1);
   }
 
@@ -70,19 +57,20 @@ private:
 /** The grid's cell size: twice the median triangle's box, so that most boxes cover one to eight
  *  cells and a cell holds a few dozen triangles; doubled while the boxes would cover more than
  *  eight cells each on average (a mesh of a few long triangles). At most 2^21 cells along an axis. */
-CellGrid gridFor(const std::vector<Box>& boxes, const std::array<double, 3>& lo, const std::array<double, 3>& hi)
+CellGrid gridFor(const std::vector<BoundingBox>& boxes, const BoundingBox& all)
 {
-  const double extent = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] });
+  const double extent = std::max({ all.high[0] - all.low[0], all.high[1] - all.low[1], all.high[2] - all.low[2] });
   std::vector<double> sizes(boxes.size());
   for (std::size_t b = 0; b < boxes.size(); ++b)
-    sizes[b] = std::max({ boxes[b].hi[0] - boxes[b].lo[0], boxes[b].hi[1] - boxes[b].lo[1], boxes[b].hi[2] - boxes[b].lo[2] });
+    sizes[b] = std::max({ boxes[b].high[0] - boxes[b].low[0], boxes[b].high[1] - boxes[b].low[1],
+                          boxes[b].high[2] - boxes[b].low[2] });
   std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2), sizes.end());
   double size = std::max({ 2.0 * sizes[sizes.size() / 2], extent / double(1 << 20), 1e-300 });
   for (;; size *= 2.0)
   {
-    const CellGrid grid(lo, size);
+    const CellGrid grid(all.low, size);
     std::uint64_t covered = 0;
-    for (const Box& box : boxes)
+    for (const BoundingBox& box : boxes)
       covered += grid.cellsOf(box);
     if (covered <= 8 * boxes.size() || size >= extent)
       return grid;
@@ -149,8 +137,8 @@ std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(c
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   // Degenerate triangles are reported with themselves and left out of the boxes (as CGAL does).
   std::vector<std::uint32_t> boxed;
-  std::vector<Box> boxes;
-  std::array<double, 3> lo{ 1e300, 1e300, 1e300 }, hi{ -1e300, -1e300, -1e300 };
+  std::vector<BoundingBox> boxes;
+  BoundingBox all;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
   {
     const Triangle& triangle = mesh.triangles[t];
@@ -159,35 +147,20 @@ std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(c
       pairs.emplace_back(t, t);
       continue;
     }
-    Box box{ { 1e300, 1e300, 1e300 }, { -1e300, -1e300, -1e300 } };
-    for (std::int32_t v : triangle)
-    {
-      const Point3& p = mesh.points[static_cast<std::size_t>(v)];
-      const std::array<double, 3> c{ p.x, p.y, p.z };
-      for (int k = 0; k < 3; ++k)
-      {
-        box.lo[k] = std::min(box.lo[k], c[k]);
-        box.hi[k] = std::max(box.hi[k], c[k]);
-      }
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      lo[k] = std::min(lo[k], box.lo[k]);
-      hi[k] = std::max(hi[k], box.hi[k]);
-    }
-    boxes.push_back(box);
+    boxes.push_back(boxOfTriangle(mesh, t));
+    all.add(boxes.back());
     boxed.push_back(static_cast<std::uint32_t>(t));
   }
   if (boxes.size() < 2)
     return pairs;
 
   // Every box in every cell it covers, grouped by cell.
-  const CellGrid grid = gridFor(boxes, lo, hi);
+  const CellGrid grid = gridFor(boxes, all);
   std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;
   entries.reserve(2 * boxes.size());
   for (std::size_t b = 0; b < boxes.size(); ++b)
   {
-    const auto from = grid.cellOf(boxes[b].lo), to = grid.cellOf(boxes[b].hi);
+    const auto from = grid.cellOf(boxes[b].low), to = grid.cellOf(boxes[b].high);
     for (std::uint64_t x = from[0]; x <= to[0]; ++x)
       for (std::uint64_t y = from[1]; y <= to[1]; ++y)
         for (std::uint64_t z = from[2]; z <= to[2]; ++z)
@@ -210,12 +183,12 @@ std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(c
                         for (std::size_t i = groupStart[g]; i < groupStart[g + 1]; ++i)
                           for (std::size_t j = i + 1; j < groupStart[g + 1]; ++j)
                           {
-                            const Box& a = boxes[entries[i].second];
-                            const Box& b = boxes[entries[j].second];
-                            if (!overlap(a, b))
+                            const BoundingBox& a = boxes[entries[i].second];
+                            const BoundingBox& b = boxes[entries[j].second];
+                            if (!a.overlaps(b))
                               continue;
-                            const auto cell = grid.cellOf({ std::max(a.lo[0], b.lo[0]), std::max(a.lo[1], b.lo[1]),
-                                                            std::max(a.lo[2], b.lo[2]) });
+                            const auto cell = grid.cellOf({ std::max(a.low[0], b.low[0]), std::max(a.low[1], b.low[1]),
+                                                            std::max(a.low[2], b.low[2]) });
                             if (CellGrid::key(cell[0], cell[1], cell[2]) != entries[i].first)
                               continue;
                             const std::size_t ta = boxed[entries[i].second], tb = boxed[entries[j].second];
