@@ -6,7 +6,6 @@
 #include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
-#include <set>
 
 namespace slicemesh
 {
@@ -31,15 +30,6 @@ Kernel::Triangle_3 triangle(const TriangleMesh& mesh, std::size_t t)
     return Kernel::Point_3(p.x, p.y, p.z);
   };
   return { point(0), point(1), point(2) };
-}
-
-/** The pairs of meshes the pairs of triangles belong to, each once, in increasing order. */
-std::vector<std::pair<std::size_t, std::size_t>> meshPairsOf(const std::vector<TrianglePair>& pairs)
-{
-  std::set<std::pair<std::size_t, std::size_t>> meshPairs;
-  for (const auto& [a, b] : pairs)
-    meshPairs.insert({ a.mesh, b.mesh });
-  return { meshPairs.begin(), meshPairs.end() };
 }
 
 } // namespace
@@ -80,14 +70,6 @@ std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh
   // not depend on it.
   std::sort(crossing.begin(), crossing.end());
   return crossing;
-}
-
-std::vector<std::pair<std::size_t, std::size_t>> crossingMeshes(const std::vector<const TriangleMesh*>& meshes,
-                                                                std::size_t& trianglePairs)
-{
-  const std::vector<TrianglePair> pairs = crossingTriangles(meshes);
-  trianglePairs = pairs.size();
-  return meshPairsOf(pairs);
 }
 
 } // namespace slicemesh

@@ -32,12 +32,6 @@ using TrianglePair = std::pair<MeshTriangle, MeshTriangle>;
  *  self-intersection test of the meshes taken together. */
 std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh*>& meshes);
 
-/** The pairs of meshes (indices, first < second, in increasing order) some triangles of which
- *  intersect or touch each other (crossingTriangles), and in `trianglePairs` how many such pairs of
- *  triangles there are. */
-std::vector<std::pair<std::size_t, std::size_t>> crossingMeshes(const std::vector<const TriangleMesh*>& meshes,
-                                                                std::size_t& trianglePairs);
-
 } // namespace slicemesh
 
 #endif
