@@ -94,6 +94,7 @@ SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing
 {
   SurfaceFinishingOptions options;
   options.remeshing.targetEdgeLength = automaticEdgeLength(spacing);
+  options.remeshing.gridSpacing = spacing;
   // A voxel's staircase is a fraction of its side deep along each axis: 1 mm slices of 0.5 mm pixels
   // leave steps twice as deep across the slices as within them.
   for (int axis = 0; axis < 3; ++axis)
@@ -336,11 +337,27 @@ std::optional<FinishedPiece> remeshedPiece(const TriangleMesh& tiled, const Mesh
   return remeshedAround(tiled, reference, options, volume, threads, std::move(places));
 }
 
+/** The options for one piece: with a grid spacing (SurfaceRemeshingOptions::gridSpacing), the target
+ *  edge scaled by how the piece faces the grid, so that every piece, whatever its shape, stays
+ *  under the triangles flying edges makes of it by the same margin. */
+SurfaceFinishingOptions optionsForPiece(const SurfaceFinishingOptions& options, const TriangleMesh& tiled)
+{
+  const std::array<double, 3>& grid = options.remeshing.gridSpacing;
+  if (!(grid[0] > 0.0 && grid[1] > 0.0 && grid[2] > 0.0))
+    return options;
+  const double facing = facingEdgeLength(tiled, grid);
+  SurfaceFinishingOptions piece = options;
+  if (facing > 0.0)
+    piece.remeshing.targetEdgeLength *= facing / voxelFaceEdgeLength(grid);
+  return piece;
+}
+
 /** `reference`: the piece's validation as tiled (asTiled); `volumeScale`: its finished volume over
  *  its tiled one; `threads`: for the work inside the piece. */
-FinishedPiece finishPiece(const TriangleMesh& tiled, const MeshValidation& reference, const SurfaceFinishingOptions& options,
+FinishedPiece finishPiece(const TriangleMesh& tiled, const MeshValidation& reference, const SurfaceFinishingOptions& asked,
                           double volumeScale, unsigned int threads)
 {
+  const SurfaceFinishingOptions options = optionsForPiece(asked, tiled);
   // The tiled piece is copied only if it is what is kept: a copy held through the remesh would
   // add a piece's worth to the run's peak memory.
   FinishedPiece result{ {}, SurfaceFinish::Tiled, {}, 0, {} };
@@ -417,9 +434,10 @@ std::map<std::size_t, std::vector<Point3>> crossingPlacesByPiece(const std::vect
  *  remeshed at all: around a few more places would not change that.) `tiled` and `reference`: the
  *  piece as tiled and its validation. */
 FinishedPiece finishedAgainAround(FinishedPiece piece, const TriangleMesh& tiled, const MeshValidation& reference,
-                                  const SurfaceFinishingOptions& options, double volume, unsigned int threads,
+                                  const SurfaceFinishingOptions& asked, double volume, unsigned int threads,
                                   const std::vector<Point3>& places, bool remeshAgain)
 {
+  const SurfaceFinishingOptions options = optionsForPiece(asked, tiled);
   if (remeshAgain && piece.finish == SurfaceFinish::Remeshed)
   {
     KeptPlaces around = std::move(piece.kept);

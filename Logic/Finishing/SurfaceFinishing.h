@@ -53,7 +53,7 @@ struct FinishedSurface
 };
 
 /** The finishing the CLI applies to a mask of this voxel spacing (mm): edges of
- *  automaticEdgeLength(spacing), and smoothing that moves no vertex farther than 0.3 of the voxel's
+ *  automaticEdgeLength(spacing), each piece's scaled by how it faces the grid (gridSpacing), and smoothing that moves no vertex farther than 0.3 of the voxel's
  *  side along each axis (the staircase is about that deep; a sharp edge is rounded no more). */
 SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing);
 

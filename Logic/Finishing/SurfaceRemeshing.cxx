@@ -403,6 +403,34 @@ double voxelFaceEdgeLength(const std::array<double, 3>& spacing)
   return std::sqrt(3.0 / (1.0 / (sx * sy) + 1.0 / (sx * sz) + 1.0 / (sy * sz)));
 }
 
+double facingEdgeLength(const TriangleMesh& surface, const std::array<double, 3>& spacing)
+{
+  voxelFaceEdgeLength(spacing); // the same checks
+  // Each triangle's cross product is twice its area times its unit normal: summed by axis, its
+  // components' magnitudes are twice the integral of |n_i|, its length twice the area.
+  double projected[3] = { 0.0, 0.0, 0.0 };
+  double area = 0.0;
+  for (const Triangle& t : surface.triangles)
+  {
+    const Point3& a = surface.points[static_cast<std::size_t>(t[0])];
+    const Point3& b = surface.points[static_cast<std::size_t>(t[1])];
+    const Point3& c = surface.points[static_cast<std::size_t>(t[2])];
+    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+    const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+    projected[0] += std::abs(nx);
+    projected[1] += std::abs(ny);
+    projected[2] += std::abs(nz);
+    area += std::sqrt(nx * nx + ny * ny + nz * nz);
+  }
+  const double sx = spacing[0], sy = spacing[1], sz = spacing[2];
+  // The crossings along axis i are the integral of |n_i| over s_j s_k; two triangles a crossing.
+  const double flyingEdgesTriangles = projected[0] / (sy * sz) + projected[1] / (sx * sz) + projected[2] / (sx * sy);
+  if (!(area > 0.0) || !(flyingEdgesTriangles > 0.0))
+    return 0.0;
+  // A remesh at edge length L makes about 3 A / L^2 triangles (voxelFaceEdgeLength's relation).
+  return std::sqrt(3.0 * 0.5 * area / flyingEdgesTriangles);
+}
+
 double automaticEdgeLength(const std::array<double, 3>& spacing)
 {
   return 1.1 * voxelFaceEdgeLength(spacing);

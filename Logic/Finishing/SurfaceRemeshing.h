@@ -17,6 +17,11 @@ struct SurfaceRemeshingOptions
   /** A piece of at least twice this many triangles is remeshed in slabs of about this many, side by
    *  side, then in bands around their seams; 0: always whole. */
   std::size_t trianglesPerRegion = 40000;
+  /** The voxel spacing of the grid the surface was traced on (x, y, slice; mm), when the target edge
+   *  was set for it (automaticEdgeLength): then each piece the finishing remeshes gets that edge
+   *  scaled by how the piece faces the grid (facingEdgeLength over voxelFaceEdgeLength). All 0: the
+   *  target edge as it is, for every piece. */
+  std::array<double, 3> gridSpacing{ 0.0, 0.0, 0.0 };
 };
 
 /** Remeshes the surface with triangles whose edges are close to the target length: long edges
@@ -41,6 +46,15 @@ TriangleMesh remeshSurfaceAround(const TriangleMesh& mesh, const std::vector<cha
  *  about two triangles per vertex: on a surface of area A whose normals point every way, about
  *  A (1/(sx sy) + 1/(sx sz) + 1/(sy sz)) triangles. A remesh at edge length L has about 3 A / L^2. */
 double voxelFaceEdgeLength(const std::array<double, 3>& spacing);
+
+/** The edge length at which an isotropic remesh of `surface` has about as many triangles as flying
+ *  edges makes of it on a grid of this spacing (mm). Flying edges puts a vertex on every grid edge
+ *  the surface crosses: along axis i, one per s_j s_k of the surface's area projected along i,
+ *  which is the integral of |n_i| over the surface. So a tube along thick slices (its normals in the
+ *  slice plane) crosses only the long voxels' side faces and gets few vertices, a cap across them
+ *  many. voxelFaceEdgeLength(spacing) for a surface whose normals point every way evenly; 0 for a
+ *  surface without area. */
+double facingEdgeLength(const TriangleMesh& surface, const std::array<double, 3>& spacing);
 
 /** The default target edge length for a mask of this spacing: 1.1 voxelFaceEdgeLength, so that a
  *  remeshed surface has fewer triangles than Slicer's flying edges on the same grid (about 0.8 of

@@ -14,7 +14,10 @@ MeshingOptions resolvedMeshingOptions(const MeshingOptions& options, const std::
   SurfaceFinishingOptions& finishing = resolved.finishing;
   const SurfaceFinishingOptions automatic = finishingOptionsFor(spacing);
   if (!(finishing.remeshing.targetEdgeLength > 0.0))
+  {
     finishing.remeshing.targetEdgeLength = automatic.remeshing.targetEdgeLength;
+    finishing.remeshing.gridSpacing = automatic.remeshing.gridSpacing; // each piece's edge as it faces the grid
+  }
   if (!(finishing.smoothing.maxDisplacement[0] > 0.0))
     finishing.smoothing.maxDisplacement = automatic.smoothing.maxDisplacement;
   // Between thick slices, a surface that is remeshed anyway is tiled from contours already spaced
