@@ -63,7 +63,7 @@ std::string finishSummary(const RunQuality& q)
   const std::array<std::size_t, 3>& pieces = q.piecesByFinish;
   const std::size_t total = pieces[0] + pieces[1] + pieces[2];
   const std::size_t asked = q.requestedFinish == "Remeshed" ? 0 : q.requestedFinish == "Smoothed" ? 1 : 2;
-  // Specks are left as tiled by design and count as finished as asked.
+  // Specks left as tiled count as finished as asked.
   const std::size_t smoothedOnly = asked == 0 ? pieces[1] : 0;
   const std::size_t leftTiled = asked < 2 ? pieces[2] - std::min(pieces[2], q.smallPiecesAsTiled) : 0;
   // The asked finish reached some pieces: say how many got less, not only the least finish.
@@ -148,6 +148,7 @@ RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshVal
     }
     else if (combined.finish != q.finish)
       combined.finish = "Mixed";
+    combined.smallPiecesRemeshed += q.smallPiecesRemeshed;
     combined.smallPiecesAsTiled += q.smallPiecesAsTiled;
     for (std::size_t f = 0; f < combined.piecesByFinish.size(); ++f)
       combined.piecesByFinish[f] += q.piecesByFinish[f];
@@ -227,6 +228,7 @@ void writeMeshBlocks(std::ostream& json, const std::string& indent, const MeshVa
   number("smoothingPassBand", q.smoothingPassBand);
   json << indent << "  \"smoothingMaxDisplacementMm\": [" << jsonNumber(q.smoothingMaxDisplacement[0]) << ", "
        << jsonNumber(q.smoothingMaxDisplacement[1]) << ", " << jsonNumber(q.smoothingMaxDisplacement[2]) << "],\n";
+  number("smallPiecesRemeshed", static_cast<double>(q.smallPiecesRemeshed));
   number("smallPiecesLeftTiled", static_cast<double>(q.smallPiecesAsTiled));
   json << indent << "  \"pieces\": { \"remeshed\": " << q.piecesByFinish[0] << ", \"smoothedOnly\": "
        << q.piecesByFinish[1] << ", \"leftTiled\": " << q.piecesByFinish[2] << " },\n";

@@ -41,6 +41,7 @@ struct RunQuality
   double smoothingPassBand = 0.0;
   std::array<double, 3> smoothingMaxDisplacement{}; ///< mm along the image axes; 0: unbounded
   std::string fallback;          ///< why less was applied than asked (SurfaceFinishing.h); empty when all of it was
+  std::size_t smallPiecesRemeshed = 0; ///< specks remeshed at their own scale (FinishedSurface::smallPiecesRemeshed)
   std::size_t smallPiecesAsTiled = 0; ///< specks left as tiled (FinishedSurface::smallPiecesAsTiled)
   std::size_t unsmoothedVertices = 0; ///< left at their remeshed positions where smoothing made triangles cross
   /** Of remeshed pieces, kept as tiled where their remesh crossed itself or another piece. */

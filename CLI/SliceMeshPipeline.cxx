@@ -460,6 +460,7 @@ RunQuality runQualityOf(const MeshedContours& m)
   quality.requestedFinish = finishName(finishing.finish);
   quality.finish = finishName(m.surface.finish);
   quality.fallback = m.surface.fallback;
+  quality.smallPiecesRemeshed = m.surface.smallPiecesRemeshed;
   quality.smallPiecesAsTiled = m.surface.smallPiecesAsTiled;
   quality.unsmoothedVertices = m.surface.unsmoothedVertices;
   quality.trianglesKeptTiled = m.surface.trianglesKeptTiled;

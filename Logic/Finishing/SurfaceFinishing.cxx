@@ -124,9 +124,25 @@ namespace
  *  target's units, not in the tiling's triangles, whose size follows the contours' point spacing. */
 constexpr double speckTargetTriangles = 48.0;
 
+/** The area of an equilateral triangle of this edge. */
+double equilateralArea(double edge)
+{
+  return 0.25 * std::sqrt(3.0) * edge * edge;
+}
+
 bool isSpeck(const MeshValidation& tiled, double targetEdgeLength)
 {
-  return tiled.area < speckTargetTriangles * 0.25 * std::sqrt(3.0) * targetEdgeLength * targetEdgeLength;
+  return tiled.area < speckTargetTriangles * equilateralArea(targetEdgeLength);
+}
+
+/** The edge a speck (`tiled`, its validation) is remeshed at: the one at which its area holds as
+ *  many equilateral triangles as it was tiled with, the target edge at most. It gets about as many
+ *  triangles as before, shaped by the remesh instead of by its contour points and slices; more
+ *  would improve the angles little for the triangles they cost. */
+double speckEdgeLength(const TriangleMesh& tiled, const MeshValidation& validation, double targetEdgeLength)
+{
+  const double triangles = static_cast<double>(tiled.triangles.size());
+  return std::min(targetEdgeLength, std::sqrt(validation.area / triangles / equilateralArea(1.0)));
 }
 
 /** Where a piece is remeshed around: its tiled triangles within keptRadius of these places are kept
@@ -394,6 +410,27 @@ FinishedPiece finishPiece(const TriangleMesh& tiled, const MeshValidation& refer
   return result;
 }
 
+/** A speck (isSpeck), finished at its own scale: at the target edge remeshing or smoothing can only
+ *  collapse a shape a couple of edges across, while as tiled its triangles follow its contour points
+ *  and slices, not its shape. Remeshed at speckEdgeLength and smoothed like any piece, within the
+ *  same bound on each vertex's move (a fraction of the voxel), and given its volume back; kept only
+ *  if it is a valid surface of its tiled topology, else left as tiled (finish Tiled), which counts as
+ *  finished. Only when a remesh is asked: smoothing alone leaves the tiling's triangles as they are. */
+FinishedPiece finishedSpeck(const TriangleMesh& tiled, const MeshValidation& reference,
+                            const SurfaceFinishingOptions& options, double volumeScale, unsigned int threads)
+{
+  if (options.finish == SurfaceFinish::Remeshed)
+  {
+    SurfaceFinishingOptions ownScale = options;
+    ownScale.remeshing.targetEdgeLength = speckEdgeLength(tiled, reference, options.remeshing.targetEdgeLength);
+    std::string why;
+    if (std::optional<FinishedPiece> remeshed =
+          remeshedPiece(tiled, reference, ownScale, volumeScale * reference.volume, threads, why))
+      return std::move(*remeshed);
+  }
+  return keptAsTiled(tiled, reference, SurfaceFinish::Tiled, {});
+}
+
 /** Rounds in which the pieces that cross other pieces once finished are remeshed again around the
  *  places where they cross, before those still crossing go back to their tiled shape. */
 constexpr int roundsRemeshedAround = 3;
@@ -451,29 +488,39 @@ FinishedPiece finishedAgainAround(FinishedPiece piece, const TriangleMesh& tiled
 }
 
 /** Pieces finished apart may meet (two pieces a voxel apart, each smoothed towards the other). Round
- *  after round, every piece that crosses another, unless it is a speck or left as tiled (both in
- *  their tiled shape already), is finished again by `finishAgain(p, places, round)` (places: where it
- *  crosses, crossingPlacesByPiece), side by side on `threads` threads, until none cross or the rounds
- *  are over. Returns how many pairs of triangles of different pieces still cross. */
+ *  after round, every piece that crosses another, unless it is left as tiled (in its tiled shape
+ *  already), is finished again by `finishAgain(p, places, round)` (places: where it crosses,
+ *  crossingPlacesByPiece), side by side on `threads` threads, until none cross or the rounds are
+ *  over. Specks (`speck`) that cross go first, in a pass of their own that counts as no round (each
+ *  goes back to its tiled shape once): a speck is not worth another remesh of a large piece.
+ *  Returns how many pairs of triangles of different pieces still cross. */
 template <typename FinishAgain>
 std::size_t separatePieces(std::vector<FinishedPiece>& pieces, const std::vector<char>& speck, unsigned int threads,
                            FinishAgain&& finishAgain)
 {
-  for (int round = 0;; ++round)
+  for (int round = 0;;)
   {
     const auto crossing = piecesCrossing(pieces);
-    std::vector<std::size_t> crossed;
-    std::vector<std::vector<Point3>> places;
+    std::vector<std::size_t> crossed, crossedSpecks;
+    std::vector<std::vector<Point3>> places, speckPlaces;
     for (auto& [p, at] : crossingPlacesByPiece(pieces, crossing))
-      if (!speck[p] && pieces[p].finish != SurfaceFinish::Tiled)
+      if (pieces[p].finish != SurfaceFinish::Tiled)
       {
-        crossed.push_back(p);
-        places.push_back(std::move(at));
+        (speck[p] ? crossedSpecks : crossed).push_back(p);
+        (speck[p] ? speckPlaces : places).push_back(std::move(at));
       }
-    if (crossed.empty() || round == roundsRemeshedAround + roundsPutBack)
+    const bool specksFirst = !crossedSpecks.empty();
+    if (specksFirst)
+    {
+      crossed = std::move(crossedSpecks);
+      places = std::move(speckPlaces);
+    }
+    else if (crossed.empty() || round == roundsRemeshedAround + roundsPutBack)
       return crossing.size();
     // Each piece into its own slot: the result does not depend on the number of threads.
     parallelFor(crossed.size(), threads, [&](std::size_t i) { finishAgain(crossed[i], places[i], round); });
+    if (!specksFirst)
+      ++round;
   }
 }
 
@@ -541,15 +588,14 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
                 // A tiling of one piece is its own piece: its validation is the tiling's, not measured again.
                 tiledValidations[p] = onePiece ? tilingValidation
                                                : asTiled(*tiledPieces[p], tilingValidation.selfIntersectionChecked);
-                // A speck of a few voxels is a couple of target edges across: remeshing or smoothing
-                // can only collapse it. It stays as tiled, as asked.
+                // A speck of a few voxels is a couple of target edges across: it is finished at its
+                // own scale.
                 speck[p] = isSpeck(tiledValidations[p], options.remeshing.targetEdgeLength);
                 if (speck[p])
-                  pieces[p] = keptAsTiled(*tiledPieces[p], tiledValidations[p], options.finish, {});
+                  pieces[p] = finishedSpeck(*tiledPieces[p], tiledValidations[p], options, volumeScale, innerThreads(p));
                 else
                   pieces[p] = finishPiece(*tiledPieces[p], tiledValidations[p], options, volumeScale, innerThreads(p));
               });
-  result.smallPiecesAsTiled = static_cast<std::size_t>(std::count(speck.begin(), speck.end(), 1));
 
   // Pieces that cross each other once finished are remeshed again with their tiled triangles kept
   // around the places where they cross, as a piece whose remesh crosses itself is (pieces of one
@@ -559,6 +605,11 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
     pieces, speck, threads,
     [&](std::size_t p, const std::vector<Point3>& places, int round)
     {
+      if (speck[p])
+      {
+        pieces[p] = keptAsTiled(*tiledPieces[p], tiledValidations[p], SurfaceFinish::Tiled, {});
+        return;
+      }
       pieces[p] = finishedAgainAround(std::move(pieces[p]), *tiledPieces[p], tiledValidations[p], options,
                                       volumeScale * tiledValidations[p].volume, innerThreads(p), places,
                                       round < roundsRemeshedAround);
@@ -597,9 +648,15 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   for (std::size_t p = 0; p < pieces.size(); ++p)
   {
     const FinishedPiece& piece = pieces[p];
-    ++result.piecesByFinish[static_cast<std::size_t>(speck[p] ? SurfaceFinish::Tiled : piece.finish)];
+    ++result.piecesByFinish[static_cast<std::size_t>(piece.finish)];
     result.unsmoothedVertices += piece.unsmoothedVertices;
     result.trianglesKeptTiled += piece.trianglesKeptTiled;
+    if (speck[p])
+    {
+      // A speck left as tiled counts as finished as asked.
+      ++(piece.finish == SurfaceFinish::Tiled ? result.smallPiecesAsTiled : result.smallPiecesRemeshed);
+      continue;
+    }
     result.finish = std::max(result.finish, piece.finish); // the enum runs from most to least finished
     if (piece.finish != options.finish)
     {

@@ -39,16 +39,21 @@ struct FinishedSurface
   /** Vertices left unsmoothed (where the remesh put them, or the tiling for a piece smoothed only)
    *  because smoothing made triangles near them cross (two sheets a voxel or two apart). */
   std::size_t unsmoothedVertices = 0;
-  /** Pieces with less area than 48 equilateral triangles of the target edge (specks of a few
-   *  voxels): left as tiled, which
-   *  counts as finished (remeshing or smoothing a shape a couple of edges across only collapses it). */
+  /** Specks: pieces with less area than 48 equilateral triangles of the target edge (a few voxels),
+   *  which the target edge would collapse. When a remesh is asked each is remeshed at its own
+   *  scale (an edge that gives it about 48 triangles), smoothed and given its volume back;
+   *  `smallPiecesRemeshed` counts those kept so, which also count as remeshed in piecesByFinish.
+   *  `smallPiecesAsTiled` counts the others, left as tiled: the result was not a valid surface of
+   *  the tiled topology, it crossed another piece, or only smoothing was asked (which leaves the
+   *  tiling's slivers as they are). A speck left as tiled counts as finished as asked (no fallback). */
+  std::size_t smallPiecesRemeshed = 0;
   std::size_t smallPiecesAsTiled = 0;
   /** Triangles of remeshed pieces kept as tiled: around the places where a piece's remesh crossed
    *  itself (two sheets closer than the target edge) or, once finished, crossed another piece, the
    *  piece remeshed again around them. */
   std::size_t trianglesKeptTiled = 0;
-  /** How many connected pieces got each finish, indexed by SurfaceFinish (specks, left as tiled,
-   *  count under Tiled). All zero when the tiling was not split (an invalid tiling, or Tiled asked). */
+  /** How many connected pieces got each finish, indexed by SurfaceFinish (specks left as tiled count
+   *  under Tiled). All zero when the tiling was not split (an invalid tiling, or Tiled asked). */
   std::array<std::size_t, 3> piecesByFinish{};
 };
 
@@ -66,7 +71,9 @@ SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing
  *  otherwise it is smoothed only (put back to the tiling where sheets cross, likewise), else left
  *  as tiled. Remeshed pieces that cross each other once finished are remeshed again with their
  *  tiled triangles kept, unsmoothed, around the places where they cross (three rounds); pieces still
- *  crossing then go back to their tiled shape. `fallback` says how many pieces got less than asked,
+ *  crossing then go back to their tiled shape. Specks (smallPiecesRemeshed) are remeshed at an edge
+ *  of their own size, else left as tiled; a finished speck that crosses another piece goes back to
+ *  its tiled shape before any other piece is finished again. `fallback` says how many pieces got less than asked,
  *  and why the first did. `tilingValidation` may be without the self-intersection test (validateMeshTopology): then
  *  only what is kept as tiled is tested, and the finished pieces are tested in any case. A tiling
  *  that is not a closed, manifold, oriented surface (or that crosses itself, when tested) is
