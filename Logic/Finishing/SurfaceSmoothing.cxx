@@ -192,6 +192,47 @@ std::vector<Point3> vertexNormals(const TriangleMesh& mesh)
   return normals;
 }
 
+/** One step of tangential relaxation: every vertex moves half way towards the mean of its neighbours,
+ *  within its tangent plane (the displacement's part along the vertex normal removed), clamped to
+ *  its bound. `points` and the neighbours are in the smoothing's order, `mesh` (its triangles, for
+ *  the normals) in the mesh's own; `order[i]` is the mesh's vertex for row i. */
+void tangentialStep(std::vector<Point3>& points, TriangleMesh& mesh, const std::vector<std::int32_t>& order,
+                    const VertexNeighbours& neighbours, std::vector<Point3>& scratch, const DisplacementBound& bound,
+                    unsigned int threads)
+{
+  for (std::size_t i = 0; i < order.size(); ++i)
+    mesh.points[static_cast<std::size_t>(order[i])] = points[i];
+  const std::vector<Point3> normals = vertexNormals(mesh);
+  parallelForRanges(points.size(), threads,
+                    [&](std::size_t first, std::size_t last)
+                    {
+                      for (std::size_t v = first; v < last; ++v)
+                      {
+                        const std::size_t begin = neighbours.first[v], end = neighbours.first[v + 1];
+                        scratch[v] = points[v];
+                        if (begin == end)
+                          continue;
+                        double x = 0.0, y = 0.0, z = 0.0;
+                        for (std::size_t i = begin; i < end; ++i)
+                        {
+                          const Point3& q = points[static_cast<std::size_t>(neighbours.ids[i])];
+                          x += q.x;
+                          y += q.y;
+                          z += q.z;
+                        }
+                        const double count = static_cast<double>(end - begin);
+                        const Point3& n = normals[static_cast<std::size_t>(order[v])];
+                        double dx = x / count - points[v].x, dy = y / count - points[v].y, dz = z / count - points[v].z;
+                        const double along = dx * n.x + dy * n.y + dz * n.z;
+                        dx -= along * n.x;
+                        dy -= along * n.y;
+                        dz -= along * n.z;
+                        scratch[v] = bound.clamped({ points[v].x + 0.5 * dx, points[v].y + 0.5 * dy, points[v].z + 0.5 * dz }, v);
+                      }
+                    });
+  points.swap(scratch);
+}
+
 /** Gives every component back the signed volume it had (`target`) by moving its vertices along their
  *  normals by one common distance (a few Newton steps: the volume grows by the area per unit of
  *  offset). Taubin's filter keeps large shapes, but shrinks a structure a few edges across, whose
@@ -268,6 +309,10 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
     umbrellaStep(points, neighbours, lambda, scratch, free, threads);
     umbrellaStep(points, neighbours, mu, scratch, bound, threads); // the bound is checked after every pair
   }
+  // The filter moves vertices along the surface too, and where it folds sharply (a tract a voxel or
+  // two thick) it crowds them: triangles it leaves with small angles, relaxed back along the surface.
+  for (int i = 0; i < options.tangentialRelaxations; ++i)
+    tangentialStep(points, mesh, order, neighbours, scratch, bound, threads);
   for (std::size_t i = 0; i < order.size(); ++i)
     mesh.points[static_cast<std::size_t>(order[i])] = points[i];
   // A component a few edges across has no shape below the pass band: the filter collapses it, and

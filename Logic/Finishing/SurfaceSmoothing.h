@@ -23,11 +23,16 @@ struct SurfaceSmoothingOptions
    *  that fraction of each voxel side takes it out but keeps the filter from rounding a sharp edge
    *  over more than that. */
   std::array<double, 3> maxDisplacement{ 0.0, 0.0, 0.0 };
+  /** Steps of tangential relaxation after the filter (each vertex half way to its neighbours' mean,
+   *  within its tangent plane, within the same bound): the filter crowds vertices where the surface
+   *  folds sharply, and its triangles there get small angles. The shape moves only to second order. */
+  int tangentialRelaxations = 3;
 };
 
 /** Smooths every vertex of the mesh: `iterations` pairs of p += lambda * L(p) and p += mu * L(p),
  *  where L(p) is the mean of p's neighbours minus p, each pair followed by the maxDisplacement
- *  clamp; then gives every connected component its signed
+ *  clamp, and `tangentialRelaxations` steps along the surface (within the same clamp); then gives
+ *  every connected component its signed
  *  volume back by one offset along the vertex normals (small structures, a few edges across, shrink
  *  under the filter). A component that lost half its volume or more (a speck the filter collapses)
  *  keeps its unsmoothed vertices instead. The connectivity is not changed. The vertices are moved on
