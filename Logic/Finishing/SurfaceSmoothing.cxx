@@ -111,6 +111,24 @@ struct DisplacementBound
   }
 };
 
+/** The mean of row v's neighbours, or the point itself if it has none. */
+Point3 neighbourMean(const std::vector<Point3>& points, const VertexNeighbours& neighbours, std::size_t v)
+{
+  const std::size_t begin = neighbours.first[v], end = neighbours.first[v + 1];
+  if (begin == end)
+    return points[v];
+  double x = 0.0, y = 0.0, z = 0.0;
+  for (std::size_t i = begin; i < end; ++i)
+  {
+    const Point3& q = points[static_cast<std::size_t>(neighbours.ids[i])];
+    x += q.x;
+    y += q.y;
+    z += q.z;
+  }
+  const double count = static_cast<double>(end - begin);
+  return { x / count, y / count, z / count };
+}
+
 /** p += factor * (mean of the neighbours - p), for every vertex at once; with `bound`, each result
  *  clamped to its vertex's ellipsoid. */
 void umbrellaStep(std::vector<Point3>& points, const VertexNeighbours& neighbours, double factor,
@@ -121,23 +139,11 @@ void umbrellaStep(std::vector<Point3>& points, const VertexNeighbours& neighbour
                     {
                       for (std::size_t v = first; v < last; ++v)
                       {
-                        const std::size_t begin = neighbours.first[v], end = neighbours.first[v + 1];
-                        scratch[v] = points[v];
-                        if (begin == end)
-                          continue;
-                        double x = 0.0, y = 0.0, z = 0.0;
-                        for (std::size_t i = begin; i < end; ++i)
-                        {
-                          const Point3& q = points[static_cast<std::size_t>(neighbours.ids[i])];
-                          x += q.x;
-                          y += q.y;
-                          z += q.z;
-                        }
-                        const double count = static_cast<double>(end - begin);
-                        scratch[v].x += factor * (x / count - points[v].x);
-                        scratch[v].y += factor * (y / count - points[v].y);
-                        scratch[v].z += factor * (z / count - points[v].z);
-                        scratch[v] = bound.clamped(scratch[v], v);
+                        const Point3 mean = neighbourMean(points, neighbours, v);
+                        scratch[v] = bound.clamped({ points[v].x + factor * (mean.x - points[v].x),
+                                                     points[v].y + factor * (mean.y - points[v].y),
+                                                     points[v].z + factor * (mean.z - points[v].z) },
+                                                   v);
                       }
                     });
   points.swap(scratch);
@@ -208,21 +214,9 @@ void tangentialStep(std::vector<Point3>& points, TriangleMesh& mesh, const std::
                     {
                       for (std::size_t v = first; v < last; ++v)
                       {
-                        const std::size_t begin = neighbours.first[v], end = neighbours.first[v + 1];
-                        scratch[v] = points[v];
-                        if (begin == end)
-                          continue;
-                        double x = 0.0, y = 0.0, z = 0.0;
-                        for (std::size_t i = begin; i < end; ++i)
-                        {
-                          const Point3& q = points[static_cast<std::size_t>(neighbours.ids[i])];
-                          x += q.x;
-                          y += q.y;
-                          z += q.z;
-                        }
-                        const double count = static_cast<double>(end - begin);
+                        const Point3 mean = neighbourMean(points, neighbours, v);
                         const Point3& n = normals[static_cast<std::size_t>(order[v])];
-                        double dx = x / count - points[v].x, dy = y / count - points[v].y, dz = z / count - points[v].z;
+                        double dx = mean.x - points[v].x, dy = mean.y - points[v].y, dz = mean.z - points[v].z;
                         const double along = dx * n.x + dy * n.y + dz * n.z;
                         dx -= along * n.x;
                         dy -= along * n.y;
