@@ -1,5 +1,6 @@
 #include "Finishing/SurfaceRemeshing.h"
 
+#include "Core/AreaNormal.h"
 #include "Core/ParallelFor.h"
 #include "Finishing/RemeshingRegions.h"
 #include "Finishing/TriangleMeshTree.h"
@@ -412,15 +413,11 @@ double facingEdgeLength(const TriangleMesh& surface, const std::array<double, 3>
   double area = 0.0;
   for (const Triangle& t : surface.triangles)
   {
-    const Point3& a = surface.points[static_cast<std::size_t>(t[0])];
-    const Point3& b = surface.points[static_cast<std::size_t>(t[1])];
-    const Point3& c = surface.points[static_cast<std::size_t>(t[2])];
-    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
-    const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-    projected[0] += std::abs(nx);
-    projected[1] += std::abs(ny);
-    projected[2] += std::abs(nz);
-    area += std::sqrt(nx * nx + ny * ny + nz * nz);
+    const Point3 n = areaNormal(surface, t);
+    projected[0] += std::abs(n.x);
+    projected[1] += std::abs(n.y);
+    projected[2] += std::abs(n.z);
+    area += std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
   }
   const double sx = spacing[0], sy = spacing[1], sz = spacing[2];
   // The crossings along axis i are the integral of |n_i| over s_j s_k; two triangles a crossing.

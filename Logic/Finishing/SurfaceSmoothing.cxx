@@ -1,5 +1,6 @@
 #include "Finishing/SurfaceSmoothing.h"
 
+#include "Core/AreaNormal.h"
 #include "Core/BoundingBox.h"
 #include "Core/ParallelFor.h"
 #include "Measures/MeshComponents.h"
@@ -147,16 +148,6 @@ void umbrellaStep(std::vector<Point3>& points, const VertexNeighbours& neighbour
                       }
                     });
   points.swap(scratch);
-}
-
-/** Twice the area times the unit normal of triangle t (the cross product of two of its edges). */
-Point3 areaNormal(const TriangleMesh& mesh, const Triangle& t)
-{
-  const Point3& a = mesh.points[t[0]];
-  const Point3& b = mesh.points[t[1]];
-  const Point3& c = mesh.points[t[2]];
-  return { (b.y - a.y) * (c.z - a.z) - (b.z - a.z) * (c.y - a.y), (b.z - a.z) * (c.x - a.x) - (b.x - a.x) * (c.z - a.z),
-           (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) };
 }
 
 /** Signed volume and area of every component (by the component of each triangle's first vertex). */

@@ -1,5 +1,6 @@
 #include "Measures/MeshValidation.h"
 
+#include "Core/AreaNormal.h"
 #include "Core/DisjointSets.h"
 #include "Measures/ComponentOrientation.h"
 #include "Measures/SelfIntersections.h"
@@ -62,13 +63,11 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
   {
     const Triangle& t = mesh.triangles[f];
     const Point3* p[3] = { &mesh.points[t[0]], &mesh.points[t[1]], &mesh.points[t[2]] };
-    const double ux = p[1]->x - p[0]->x, uy = p[1]->y - p[0]->y, uz = p[1]->z - p[0]->z;
-    const double wx = p[2]->x - p[0]->x, wy = p[2]->y - p[0]->y, wz = p[2]->z - p[0]->z;
-    const double cx = uy * wz - uz * wy, cy = uz * wx - ux * wz, cz = ux * wy - uy * wx;
-    const double twiceArea = std::sqrt(cx * cx + cy * cy + cz * cz);
+    const Point3 n = areaNormal(*p[0], *p[1], *p[2]);
+    const double twiceArea = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || twiceArea == 0.0)
       ++v.degenerateTriangles;
-    normals[f] = twiceArea > 0.0 ? std::array<double, 3>{ cx / twiceArea, cy / twiceArea, cz / twiceArea }
+    normals[f] = twiceArea > 0.0 ? std::array<double, 3>{ n.x / twiceArea, n.y / twiceArea, n.z / twiceArea }
                                  : std::array<double, 3>{ 0.0, 0.0, 0.0 };
     v.area += 0.5 * twiceArea;
     const double cosine = smallestAngleCosine(*p[0], *p[1], *p[2]);

@@ -2,6 +2,7 @@
 // of the lifted triangles, so the tiling is Delaunay-like in the surface's own metric.
 #include "Tiling/SlabOverlayState.h"
 
+#include "Core/AreaNormal.h"
 #include "Core/PlanarGeometry.h"
 #include "Measures/TriangleAngles.h"
 
@@ -21,14 +22,9 @@ namespace
  *  ab: 1 where they are coplanar, -1 where one folds onto the other. */
 double normalsCosine(const Point3& a, const Point3& b, const Point3& c, const Point3& d)
 {
-  auto normal = [](const Point3& p, const Point3& q, const Point3& r) {
-    const double ux = q.x - p.x, uy = q.y - p.y, uz = q.z - p.z;
-    const double vx = r.x - p.x, vy = r.y - p.y, vz = r.z - p.z;
-    return std::array<double, 3>{ uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx };
-  };
-  const auto m = normal(a, b, c), n = normal(b, a, d);
-  const double lengths = std::sqrt((m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
-  return lengths > 0.0 ? (m[0] * n[0] + m[1] * n[1] + m[2] * n[2]) / lengths : 1.0;
+  const Point3 m = areaNormal(a, b, c), n = areaNormal(b, a, d);
+  const double lengths = std::sqrt((m.x * m.x + m.y * m.y + m.z * m.z) * (n.x * n.x + n.y * n.y + n.z * n.z));
+  return lengths > 0.0 ? (m.x * n.x + m.y * n.y + m.z * n.z) / lengths : 1.0;
 }
 
 } // namespace
