@@ -1,24 +1,20 @@
 #include "SliceMeshPipeline.h"
 
-#include "ColorTable.h"
-#include "ContourRepair.h"
-#include "Contours/ContourStacking.h"
+#include "PipelineStep.h"
+#include "PipelineStructures.h"
+
 #include "Core/ParallelFor.h"
-#include "Core/PlanarGeometry.h"
-#include "LabelIndex.h"
 #include "MaskMeshing.h"
 #include "MeshSnapshot.h"
 #include "Measures/MeshComponents.h"
 #include "NiftiOrientation.h"
 #include "SegmentationFile.h"
-#include "SmallComponentRemoval.h"
 #include "StructureSet.h"
 #include "StoredVolume.h"
 #include "VolumeReader.h"
 #include "VolumeSegmentation.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -27,7 +23,6 @@
 #include <iostream>
 #include <mutex>
 #include <optional>
-#include <set>
 #include <sstream>
 #include <unistd.h>
 
@@ -50,24 +45,6 @@ enum Stage : std::size_t
   Finishing,
   Writing
 };
-
-/** Runs one step; a failure becomes a PipelineFailure with the given code. */
-template <typename Step>
-auto guarded(ExitCode code, Step&& step) -> decltype(step())
-{
-  try
-  {
-    return step();
-  }
-  catch (const PipelineFailure&)
-  {
-    throw;
-  }
-  catch (const std::exception& e)
-  {
-    throw PipelineFailure(code, e.what());
-  }
-}
 
 /** Throws WriteFailed unless `folder` exists (or, with `create`, can be made) and a file can be
  *  made in it: probed with a file of our own, since access() says yes to root on any folder. */
@@ -111,332 +88,6 @@ ColorTable checkBeforeWork(const PipelineSettings& settings)
   if (settings.multiLabel.enabled && !settings.multiLabel.colorTable.empty())
     return guarded(BadArguments, [&] { return ColorTable::read(settings.multiLabel.colorTable); });
   return {};
-}
-
-/** One structure on its way through the run: the mask, one label of a label map, or one ROI of a
- *  structure set. A mask is traced into contours; an ROI comes with its contours. */
-struct Structure
-{
-  LabelReport report;                              ///< label (the ROI number), name, file, figures, error
-  std::array<unsigned char, 4> rgba{ 128, 128, 128, 255 };
-  /** Null for an ROI; released once its contours are traced (the stack frame stays in `contours`). */
-  MaskVolume::Pointer mask;
-  StackedContours contours;                        ///< an ROI's stack, frame and grid spacing; a mask's frame
-  MeshedContours meshing;
-  bool live() const { return report.meshed(); } ///< neither failed nor dropped
-  SliceFrame frame() const { return this->contours.frame; }
-};
-
-/** "label 3 (Hippocampus): ", "ROI 2 (PTV): " or nothing (a one-mesh run). */
-std::string who(const Structure& s, const std::string& noun)
-{
-  return noun.empty() ? std::string() : noun + " " + std::to_string(s.report.label) + " (" + s.report.name + "): ";
-}
-
-/** The single mask of a one-mesh run, after --minimumComponentVolume. */
-Structure maskStructure(StoredVolume volume, const PipelineSettings& settings)
-{
-  Structure s;
-  s.mask = guarded(EmptySegmentation, [&] { return segmentStoredVolume(std::move(volume), settings.segmentation); });
-  if (settings.minimumComponentVolume > 0.0)
-  {
-    const SmallComponentRemoval removal =
-      guarded(MeshingFailed, [&] { return removeSmallComponents(s.mask, settings.minimumComponentVolume); });
-    if (removal.removedComponents == removal.components)
-    {
-      std::ostringstream message;
-      message << "every one of the " << removal.components << " connected components of the segmentation of '"
-              << settings.inputVolume << "' is smaller than the minimum component volume "
-              << settings.minimumComponentVolume << " mm^3 (the largest is " << removal.largestComponentVolume
-              << " mm^3)";
-      throw PipelineFailure(EmptySegmentation, message.str());
-    }
-  }
-  return s;
-}
-
-/** What one structure of a multi-label run is cut from: a label value of one label map (the volume,
- *  or a layer of a segmentation file) with its box, and the number, name and colour it goes by. */
-struct LabelSource
-{
-  StoredVolume labelMap;
-  LabelExtent extent; ///< no voxels: an empty segment
-  int number = 0;     ///< the label value, or the segment's number
-  std::string name;
-  std::array<unsigned char, 4> rgba{ 128, 128, 128, 255 };
-};
-
-/** Every non-zero label of a label map, in increasing order, named and coloured by the table; one
- *  pass over the volume finds them all. */
-std::vector<LabelSource> labelMapSources(const StoredVolume& volume, const ColorTable& colors)
-{
-  std::vector<LabelSource> sources;
-  const auto index = [&] { return std::visit([](const auto& image) { return indexLabels(image.GetPointer()); }, volume); };
-  for (const LabelExtent& e : guarded(EmptySegmentation, index))
-  {
-    const LabelColor entry = colors.entry(e.label);
-    sources.push_back({ volume, e, e.label, entry.name, entry.rgba });
-  }
-  return sources;
-}
-
-/** Every segment of a segmentation file, in the file's order, named and coloured by the file; one
- *  pass over each layer finds them all. A segment without voxels keeps an empty extent. */
-std::vector<LabelSource> segmentSources(const SegmentationFile& file, const std::string& path)
-{
-  std::vector<std::vector<LabelExtent>> layerExtents;
-  for (const ScalarVolume::Pointer& layer : file.layers)
-  {
-    try
-    {
-      layerExtents.push_back(indexLabels(layer));
-    }
-    catch (const std::exception& e)
-    {
-      throw PipelineFailure(UnreadableInput, path + ": " + e.what());
-    }
-  }
-  std::vector<LabelSource> sources;
-  for (const SegmentationFile::Segment& segment : file.segments)
-  {
-    LabelSource source{ file.layers[segment.layer], {}, segment.number, segment.name, segment.rgba };
-    source.extent.label = segment.labelValue;
-    for (const LabelExtent& e : layerExtents[segment.layer])
-      if (e.label == segment.labelValue)
-        source.extent = e;
-    sources.push_back(source);
-  }
-  if (std::none_of(sources.begin(), sources.end(), [](const LabelSource& s) { return s.extent.voxels > 0; }))
-    throw PipelineFailure(EmptySegmentation, path + ": every segment of the " + file.format + " is empty; nothing to mesh");
-  return sources;
-}
-
-std::string lowerCase(std::string text)
-{
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-  return text;
-}
-
-/** One structure per source asked for (by number: label values or segment numbers; by name, any
- *  case; neither: all), each a mask cropped to its box. An empty source (a segment without voxels)
- *  is reported and dropped. */
-std::vector<Structure> labelStructures(std::vector<LabelSource> sources, const std::vector<int>& numbers,
-                                       const std::vector<std::string>& names, bool segments,
-                                       const PipelineSettings& settings)
-{
-  if (!numbers.empty() || !names.empty())
-  {
-    std::set<int> wanted(numbers.begin(), numbers.end());
-    std::set<std::string> wantedNames;
-    for (const std::string& name : names)
-      wantedNames.insert(lowerCase(name));
-    std::vector<LabelSource> chosen;
-    std::set<std::string> foundNames; // several labels may share a name: each is picked
-    for (const LabelSource& source : sources)
-    {
-      const bool byNumber = wanted.erase(source.number) > 0;
-      const bool byName = wantedNames.count(lowerCase(source.name)) > 0;
-      if (byName)
-        foundNames.insert(lowerCase(source.name));
-      if (byNumber || byName)
-        chosen.push_back(source);
-    }
-    for (const std::string& name : foundNames)
-      wantedNames.erase(name);
-    if (!wanted.empty() || !wantedNames.empty())
-    {
-      std::ostringstream message;
-      message << settings.inputVolume;
-      if (!wanted.empty())
-      {
-        message << (segments ? ": no segment numbered" : ": no voxel has label");
-        for (int label : wanted)
-          message << " " << label;
-      }
-      else
-      {
-        message << (segments ? ": no segment named" : ": no label named");
-        for (const std::string& name : names)
-          if (wantedNames.count(lowerCase(name)))
-            message << " '" << name << "'";
-      }
-      if (segments || wanted.empty())
-      {
-        constexpr std::size_t listed = 20; // enough to spot a misspelling, short enough for one line
-        message << (segments ? " (its segments:" : " (its labels:");
-        for (std::size_t n = 0; n < std::min(sources.size(), listed); ++n)
-          message << (n ? ", " : " ") << sources[n].number << " " << sources[n].name;
-        if (sources.size() > listed)
-          message << ", ... " << sources.size() << " in all";
-        message << ")";
-      }
-      else
-        message << " (" << sources.size() << " labels present)";
-      throw PipelineFailure(EmptySegmentation, message.str());
-    }
-    sources = chosen;
-  }
-  if (sources.empty())
-    throw PipelineFailure(EmptySegmentation, settings.inputVolume + ": every voxel is 0; nothing to mesh");
-  if (!settings.segmentation.refinement.seeds.empty())
-    std::cerr << "SliceMesh: warning: seed points are ignored when meshing every label separately" << std::endl;
-  MaskRefinementOptions refinement = settings.segmentation.refinement;
-  refinement.seeds.clear();
-
-  std::vector<Structure> structures(sources.size());
-  for (std::size_t n = 0; n < sources.size(); ++n)
-  {
-    Structure& s = structures[n];
-    const LabelSource& source = sources[n];
-    s.report.label = source.number;
-    s.report.name = source.name;
-    s.report.voxels = source.extent.voxels;
-    s.rgba = source.rgba;
-    if (source.extent.voxels == 0)
-    {
-      // An empty segment is not a failure: the file says it exists, it has nothing to mesh.
-      s.report.dropped = true;
-      std::cerr << "SliceMesh: warning: segment " << source.number << " (" << source.name
-                << ") is empty; no mesh" << std::endl;
-      continue;
-    }
-    try
-    {
-      s.mask = std::visit([&](const auto& image) { return cropLabelMask(image.GetPointer(), source.extent); },
-                          source.labelMap);
-      if (refinement.any())
-        refineMask(s.mask, refinement);
-      if (settings.minimumComponentVolume > 0.0)
-      {
-        const SmallComponentRemoval removal = removeSmallComponents(s.mask, settings.minimumComponentVolume);
-        s.report.removedComponents = removal.removedComponents;
-        if (removal.removedComponents == removal.components)
-        {
-          // Specks only: dropped, not a failure (the option asks for exactly this).
-          s.report.dropped = true;
-          std::cerr << "SliceMesh: warning: label " << s.report.label << " (" << s.report.name << ") dropped: each of its "
-                    << removal.components
-                    << " connected components is smaller than the minimum component volume "
-                    << settings.minimumComponentVolume << " mm^3 (the largest is " << removal.largestComponentVolume
-                    << " mm^3)" << std::endl;
-        }
-      }
-    }
-    catch (const std::exception& e)
-    {
-      s.report.error = e.what();
-    }
-  }
-  return structures;
-}
-
-/** One structure per ROI asked for (every ROI by default), in the file's order: its contours as a
- *  stack along the reference image's slice direction and spacing when they lie on its slices (else
- *  along their own normal, with one warning for the set), crossings and keyholes repaired. An ROI whose contours lie in
- *  one slice is one slice spacing thick, the usual spacing of the other ROIs. An ROI that cannot
- *  be stacked (no contours, no spacing known) carries its error; every fault is one warning line. */
-std::vector<Structure> roiStructures(const StructureSet& set, const std::optional<VolumeGeometry>& reference,
-                                     const PipelineSettings& settings)
-{
-  const std::vector<PlanarStructure> rois =
-    guarded(EmptySegmentation, [&] { return chosenStructures(set, settings.contours.rois); });
-  std::vector<Structure> structures(rois.size());
-  ContourStackingOptions stacking;
-  stacking.sliceNormal = set.sliceNormal;
-  if (reference)
-  {
-    stacking.sliceNormal = reference->sliceDirection();
-    stacking.expectedSliceSpacing = reference->spacing[2];
-  }
-  std::vector<double> spacings;
-  auto stack = [&](std::size_t n)
-  {
-    try
-    {
-      structures[n].contours = stackContours(rois[n].contours, stacking);
-      structures[n].report.error.clear();
-      return true;
-    }
-    catch (const Error& e)
-    {
-      structures[n].report.error = e.what();
-      return false;
-    }
-  };
-  for (std::size_t n = 0; n < rois.size(); ++n)
-  {
-    Structure& s = structures[n];
-    s.report.label = rois[n].number;
-    s.report.name = rois[n].name;
-    s.rgba = { rois[n].rgb[0], rois[n].rgb[1], rois[n].rgb[2], 255 };
-    for (const std::string& note : rois[n].notes)
-      std::cerr << "SliceMesh: warning: " << who(s, "ROI") << oneLine(note) << std::endl;
-    if (rois[n].contours.empty())
-      s.report.error = "has no contours";
-    else if (stack(n) && s.contours.stack.slices.size() > 1)
-      spacings.push_back(s.contours.stack.sliceSpacing);
-  }
-  // An ROI in one slice gets the set's usual spacing as its thickness.
-  stacking.fallbackSliceSpacing = median(spacings, 0.0);
-  for (std::size_t n = 0; n < rois.size(); ++n)
-    if (!structures[n].report.error.empty() && !rois[n].contours.empty() && stacking.fallbackSliceSpacing > 0.0)
-      stack(n);
-  // Contours off the image's slices are a mismatch of the whole set as a rule: one line for all.
-  std::string offSlices;
-  double largestDeviation = 0.0;
-  for (const Structure& s : structures)
-    if (s.report.error.empty() && s.contours.normalDeviationDegrees && !s.contours.givenNormalUsed)
-    {
-      offSlices += (offSlices.empty() ? "" : ", ") + std::to_string(s.report.label) + " (" + s.report.name + ")";
-      largestDeviation = std::max(largestDeviation, *s.contours.normalDeviationDegrees);
-    }
-  if (!offSlices.empty())
-  {
-    std::ostringstream warning;
-    warning.precision(3);
-    warning << "the contours of ROI " << offSlices << " are not on the slices of '"
-            << (reference ? settings.contours.referenceImage : settings.contours.path) << "': their slice normal is up to "
-            << largestDeviation << " degrees from its slice direction (" << stacking.maxNormalDeviationDegrees
-            << " allowed); each is stacked along its contours' own normal";
-    std::cerr << "SliceMesh: warning: " << oneLine(warning.str()) << std::endl;
-  }
-  for (Structure& s : structures)
-  {
-    if (!s.report.error.empty())
-      continue;
-    std::size_t filled = 0;
-    for (const Slice& slice : s.contours.stack.slices)
-      filled += slice.contours.empty() ? 0 : 1;
-    if (filled == 1 && settings.meshing.reconstruction.capPlacement == CapPlacement::AtSlice)
-    {
-      s.report.error = "all its contours lie in one slice, which has no thickness with the caps at the slice "
-                       "(--capPlacement AtSlice)";
-      continue;
-    }
-    ContourRepairReport repair;
-    s.contours.stack = repairContours(s.contours.stack, settings.contours.repair, &repair);
-    if (repair.any()) // a keyhole's perimeter is not its contours'
-    {
-      const double pointSpacing = automaticPointSpacing(s.contours.stack);
-      s.contours.spacing[0] = s.contours.spacing[1] = s.contours.frame.spacing[0] = s.contours.frame.spacing[1] =
-        pointSpacing;
-    }
-    for (const std::string& note : s.contours.notes)
-      std::cerr << "SliceMesh: warning: " << who(s, "ROI") << oneLine(note) << std::endl;
-    if (repair.any())
-      std::cerr << "SliceMesh: warning: " << who(s, "ROI") << repair.summary(settings.contours.repair.channelWidth)
-                << std::endl;
-  }
-  return structures;
-}
-
-std::size_t contourPoints(const ContourStack& stack)
-{
-  std::size_t points = 0;
-  for (const Slice& slice : stack.slices)
-    for (const Polygon2& contour : slice.contours)
-      points += contour.size();
-  return points;
 }
 
 /** The run's figures of one finished structure, for the summary line and the report. */
