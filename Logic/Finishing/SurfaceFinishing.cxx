@@ -423,6 +423,7 @@ FinishedPiece finishedSpeck(const TriangleMesh& tiled, const MeshValidation& ref
   {
     SurfaceFinishingOptions ownScale = options;
     ownScale.remeshing.targetEdgeLength = speckEdgeLength(tiled, reference, options.remeshing.targetEdgeLength);
+    ownScale.remeshing.projectEachRound = true;
     std::string why;
     if (std::optional<FinishedPiece> remeshed =
           remeshedPiece(tiled, reference, ownScale, volumeScale * reference.volume, threads, why))

@@ -13,7 +13,10 @@ namespace slicemesh
 struct SurfaceRemeshingOptions
 {
   double targetEdgeLength = 1.0; ///< mm
-  int iterations = 3;            ///< rounds of split, collapse, flip, relax and project
+  int iterations = 3;            ///< rounds of split, collapse, flip and relax; one projection after them
+  /** Project onto the input after every round, not only the last: for a piece about an edge across
+   *  (a speck), which curves away within an edge, so that a round's relaxation leaves it. */
+  bool projectEachRound = false;
   /** A piece of at least twice this many triangles is remeshed in slabs of about this many, side by
    *  side, then in bands around their seams; 0: always whole. */
   std::size_t trianglesPerRegion = 40000;
@@ -25,7 +28,7 @@ struct SurfaceRemeshingOptions
 };
 
 /** Remeshes the surface with triangles whose edges are close to the target length: long edges
- *  split, short ones collapsed, edges flipped towards valence 6, vertices relaxed tangentially and
+ *  split, short ones collapsed, edges flipped towards valence 6, vertices relaxed tangentially, then
  *  projected back onto the input surface (Botsch and Kobbelt's method, as CGAL implements it in
  *  Polygon_mesh_processing::isotropic_remeshing). The topology is kept. Throws Error if the mesh is
  *  not a manifold surface CGAL can hold. The relaxation's targets and the projection run on `threads`
