@@ -42,10 +42,12 @@ SegmentationFormat segmentationFormatOf(const std::string& path);
 
 /** 3D Slicer's .seg.nrrd: one layer per volume of its list axis (one for a 3-D file), the segments
  *  from the SegmentN_Name, _ID, _Color (r g b, 0..1), _Layer and _LabelValue fields. Files of Slicer
- *  versions without _Layer / _LabelValue (one layer per segment, value 1) are read too. Throws
- *  slicemesh::Error with a one-line message naming the file when it cannot be read or its fields
- *  contradict its image (a layer that does not exist, a stored representation other than a binary
- *  labelmap). */
+ *  versions without _Layer / _LabelValue (one layer per segment, value 1) are read too. A fractional
+ *  labelmap (one layer per segment) comes back as binary: each layer its segment's label map, value
+ *  1 where the fraction is at least one half within the segment's _Extent (FractionalLabelmap.h).
+ *  Throws slicemesh::Error with a one-line message naming the file when it cannot be read or its
+ *  fields contradict its image (a layer that does not exist, two fractional segments in one layer, a
+ *  fraction outside its range, a stored representation that is no labelmap). */
 SegmentationFile readSlicerSegmentation(const std::string& path);
 
 /** DICOM SEG (binary or fractional; fractional voxels count from half the maximum fraction up):

@@ -1,10 +1,12 @@
 // 3D Slicer's segmentation file (.seg.nrrd): a NRRD label map, or a stack of them along a list axis
 // (the layers, when segments overlap), with the segments described in SegmentN_ header fields.
 // ITK's NRRD reader gives the list axis as the voxel's components and keeps the fields in the
-// image's MetaDataDictionary.
+// image's MetaDataDictionary. A fractional labelmap has a layer of fractions per segment, each
+// thresholded here into that segment's label map (FractionalLabelmap.h).
 #include "SegmentationFile.h"
 
 #include "ColorTable.h"
+#include "FractionalLabelmap.h"
 #include "ItkErrorText.h"
 #include "MemoryBudget.h"
 
@@ -83,6 +85,21 @@ std::array<unsigned char, 4> colorField(const std::string& path, const std::stri
   return rgba;
 }
 
+/** A fractional labelmap's range when the header gives none: Slicer's, for its signed char voxels.
+ *  Slicer keeps the range as field data of the image in memory, which its NRRD writer does not
+ *  write; voxels of another type are of a scale SliceMesh cannot know. */
+FractionalRange defaultRange(const std::string& path, itk::IOComponentEnum voxelType)
+{
+  if (voxelType != itk::IOComponentEnum::CHAR)
+  {
+    std::string type = itk::ImageIOBase::GetComponentTypeAsString(voxelType);
+    std::replace(type.begin(), type.end(), '_', ' ');
+    throw Error(path + ": a fractional labelmap of " + type +
+                " voxels without SegmentN_ScalarRange fields; Slicer's are signed char from -108 to 108");
+  }
+  return slicerFractionalRange;
+}
+
 } // namespace
 
 SegmentationFile readSlicerSegmentation(const std::string& path)
@@ -102,11 +119,14 @@ SegmentationFile readSlicerSegmentation(const std::string& path)
     throw Error(path + ": a segmentation of " + std::to_string(io->GetNumberOfDimensions()) +
                 " spatial dimensions; SliceMesh needs 3 (and a list axis of layers at most)");
   const itk::MetaDataDictionary dictionary = io->GetMetaDataDictionary();
-  std::string representation = headerField(dictionary, "Segmentation_SourceRepresentation");
+  // Slicer writes Segmentation_MasterRepresentation (its source representation, by its old name).
+  std::string representation = headerField(dictionary, "Segmentation_MasterRepresentation");
   if (representation.empty())
-    representation = headerField(dictionary, "Segmentation_MasterRepresentation"); // Slicer before 5.2
-  if (!representation.empty() && representation != "Binary labelmap")
-    throw Error(path + ": holds a '" + representation + "' segmentation; SliceMesh reads binary labelmaps");
+    representation = headerField(dictionary, "Segmentation_SourceRepresentation");
+  const bool fractional = representation == "Fractional labelmap";
+  if (!representation.empty() && representation != "Binary labelmap" && !fractional)
+    throw Error(path + ": holds a '" + representation +
+                "' segmentation; SliceMesh reads binary and fractional labelmaps");
 
   const std::size_t layerCount = io->GetNumberOfComponents();
   {
@@ -153,6 +173,15 @@ SegmentationFile readSlicerSegmentation(const std::string& path)
   }
 
   const auto fields = segmentFields(dictionary);
+  struct FractionalSegment
+  {
+    std::size_t layer;
+    FractionalRange range;
+    VoxelExtent extent;
+    std::string what; ///< "<path>: Segment<N>", for messages
+  };
+  std::vector<FractionalSegment> fractionalSegments;
+  std::map<std::size_t, std::string> layerSegment; // a fractional file's layers, each with its SegmentN
   // Slicer before 4.11 wrote one layer per segment, each segment's voxels 1, without _Layer and
   // _LabelValue.
   const bool layerPerSegment = layerCount > 1 && layerCount == fields.size();
@@ -181,15 +210,43 @@ SegmentationFile readSlicerSegmentation(const std::string& path)
       throw Error(path + ": " + key("Layer") + " is " + std::to_string(layer) + " but the file has " +
                   std::to_string(layerCount) + " layer(s)");
     segment.layer = static_cast<std::size_t>(layer);
-    const long value = field("LabelValue").empty() ? 1 : integerField(path, key("LabelValue"), field("LabelValue"));
-    if (value <= 0 || value > 2147483647L)
-      throw Error(path + ": " + key("LabelValue") + " is " + std::to_string(value) + "; a label value is a positive integer");
-    segment.labelValue = static_cast<int>(value);
+    if (fractional)
+    {
+      // The layer holds this segment's fractions only; its _LabelValue does not apply.
+      const std::string name = "Segment" + std::to_string(index);
+      if (!layerSegment.emplace(segment.layer, name).second)
+        throw Error(path + ": " + name + " is in layer " + std::to_string(segment.layer) + " with " +
+                    layerSegment[segment.layer] + "; a fractional labelmap has a layer of its own for each segment");
+      fractionalSegments.push_back(
+        { segment.layer,
+          field("ScalarRange").empty() ? defaultRange(path, io->GetComponentType())
+                                       : fractionalRangeField(path, key("ScalarRange"), field("ScalarRange")),
+          field("Extent").empty() ? wholeExtent(file.layers[segment.layer])
+                                  : voxelExtentField(path, key("Extent"), field("Extent")),
+          path + ": " + name });
+      segment.labelValue = 1;
+    }
+    else
+    {
+      const long value = field("LabelValue").empty() ? 1 : integerField(path, key("LabelValue"), field("LabelValue"));
+      if (value <= 0 || value > 2147483647L)
+        throw Error(path + ": " + key("LabelValue") + " is " + std::to_string(value) +
+                    "; a label value is a positive integer");
+      segment.labelValue = static_cast<int>(value);
+    }
     file.segments.push_back(segment);
     ++position;
   }
   if (file.segments.empty())
     throw Error(path + ": a segmentation file without segments (no SegmentN_ header fields)");
+  // Each fractional layer becomes its segment's label map (value 1), as a binary layer is one; a
+  // layer no segment names holds no voxel.
+  for (const FractionalSegment& s : fractionalSegments)
+    thresholdFractionalLayer(file.layers[s.layer], s.range, s.extent, s.what);
+  if (fractional)
+    for (std::size_t layer = 0; layer < layerCount; ++layer)
+      if (layerSegment.count(layer) == 0)
+        file.layers[layer]->FillBuffer(0.0f);
   return file;
 }
 

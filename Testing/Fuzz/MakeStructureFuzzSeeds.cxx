@@ -1,7 +1,8 @@
 // Writes the StructureFuzzer's seeds into a folder: one small file of each kind the command line
 // reads as structures - an RT Structure Set (with a hole, a keyhole and a POINT item), SliceMesh's
-// JSON contours, 3D Slicer's planar contours as legacy and XML VTK polydata, a two-layer .seg.nrrd
-// and a binary DICOM SEG - so that the fuzzer starts inside each reader rather than at its magic.
+// JSON contours, 3D Slicer's planar contours as legacy and XML VTK polydata, a two-layer .seg.nrrd,
+// a fractional one and a binary DICOM SEG - so that the fuzzer starts inside each reader rather than
+// at its magic.
 //   MakeStructureFuzzSeeds <folder>
 #include "SegmentationFileWriters.h"
 #include "StructureSetWriter.h"
@@ -94,7 +95,7 @@ void writeJson(const fs::path& path)
                          "[[2,1],[3,1],[3,2]] ] }, { \"z\": 2.5, \"polygons\": [ [[0,0,2.5],[8,0,2.5],[8,4,2.5]] ] } ] } ] }\n";
 }
 
-void writeSegmentations(const fs::path& nrrd, const fs::path& dicom)
+void writeSegmentations(const fs::path& nrrd, const fs::path& fractional, const fs::path& dicom)
 {
   testing::ImageGrid grid;
   grid.size = { 4, 3, 3 };
@@ -105,6 +106,11 @@ void writeSegmentations(const fs::path& nrrd, const fs::path& dicom)
     { [&](const testing::PhysicalPoint& p) { return static_cast<unsigned char>(ball(p) ? 1 : 0); },
       [&](const testing::PhysicalPoint& p) { return static_cast<unsigned char>(p[0] > 1.0 ? 2 : 0); } },
     { { "Segment_1", "Ball", "1 0 0", "0", "1" }, { "Segment_2", "Slab", "0 0 1", "1", "2" } });
+  testing::writeSlicerFractionalSegmentation(
+    fractional, grid,
+    { [&](const testing::PhysicalPoint& p) { return testing::slicerFraction(grid, p, ball); },
+      [&](const testing::PhysicalPoint& p) { return p[0] > 1.0 ? 108 : 0; } },
+    { { "Segment_1", "Ball", "1 0 0", "0", "1", "0 3 0 2 0 2" }, { "Segment_2", "Slab", "0 0 1", "1", "1", "1 3 0 2 0 1" } });
   testing::writeDicomSegmentation(dicom, grid,
                                   { { "Ball", { 1.0, 0.0, 0.0 }, [&](const testing::PhysicalPoint& p) { return ball(p) ? 1.0 : 0.0; } } });
 }
@@ -123,6 +129,6 @@ int main(int argc, char** argv)
   writeStructureSet(folder / "structure-set.dcm");
   writePolyData(folder);
   writeJson(folder / "contours.json");
-  writeSegmentations(folder / "segmentation.seg.nrrd", folder / "segmentation-seg.dcm");
+  writeSegmentations(folder / "segmentation.seg.nrrd", folder / "fractional.seg.nrrd", folder / "segmentation-seg.dcm");
   return 0;
 }

@@ -1,6 +1,6 @@
 // Reading segmentation files: 3D Slicer's .seg.nrrd (one and two layers, the fields of older
-// Slicers) and DICOM SEG (binary and fractional), written by the test: segments, names, colours,
-// layers, and voxels in the physical place they were written at.
+// Slicers, fractional labelmaps) and DICOM SEG (binary and fractional), written by the test:
+// segments, names, colours, layers, and voxels in the physical place they were written at.
 #include "SegmentationFile.h"
 #include "SegmentationFileWriters.h"
 
@@ -184,8 +184,8 @@ TEST_F(SegmentationFileTest, SlicerFieldsThatContradictTheImageAreErrors)
   EXPECT_THROW(readSlicerSegmentation(write("layer.seg.nrrd", { "a", "A", "1 0 0", "2", "1" })), Error);
   EXPECT_THROW(readSlicerSegmentation(write("value.seg.nrrd", { "a", "A", "1 0 0", "0", "one" })), Error);
   EXPECT_THROW(readSlicerSegmentation(write("colour.seg.nrrd", { "a", "A", "red", "0", "1" })), Error);
-  EXPECT_THROW(readSlicerSegmentation(write("fraction.seg.nrrd", { "a", "A", "1 0 0", "0", "1" },
-                                            { "Segmentation_SourceRepresentation:=Fractional labelmap" })),
+  EXPECT_THROW(readSlicerSegmentation(write("contour.seg.nrrd", { "a", "A", "1 0 0", "0", "1" },
+                                            { "Segmentation_MasterRepresentation:=Planar contour" })),
                Error);
   // A truncated file: the header promises more voxels than there are.
   const std::string whole = write("whole.seg.nrrd", { "a", "A", "1 0 0", "0", "1" });
@@ -200,6 +200,134 @@ TEST_F(SegmentationFileTest, SlicerFieldsThatContradictTheImageAreErrors)
     EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find(whole), std::string::npos) << e.what();
   }
+}
+
+/** The index of the voxel centred at p along `axis` of the grid. */
+int indexAlong(const ImageGrid& grid, const PhysicalPoint& p, int axis)
+{
+  double t = 0;
+  for (int a = 0; a < 3; ++a)
+    t += (p[a] - grid.origin[a]) * grid.axes[axis][a];
+  return static_cast<int>(std::lround(t / grid.spacing[axis]));
+}
+
+TEST_F(SegmentationFileTest, SlicerFractionalLayersBecomeLabelMapsFromHalfTheRangeWithinTheExtent)
+{
+  const ImageGrid grid = mirroredGrid();
+  // As Slicer writes a fractional labelmap: signed char, a layer per segment, no scalar range (so
+  // -108..108, half at 0). Layer 0 ramps along i: value i - 6, so i = 5 (-1) is out and i = 6 (0)
+  // in. Layer 1 is full (108) on j >= 5 and empty (-108) below, within its extent (i 2..8, k 1..6);
+  // outside it Slicer pads with 0, half full but not the segment's. Layer 2 is an empty segment as
+  // Slicer writes one: all 0, extent "0 -1 0 -1 0 -1".
+  testing::writeSlicerFractionalSegmentation(
+    path("fractional.seg.nrrd"), grid,
+    { [&](const PhysicalPoint& p) { return indexAlong(grid, p, 0) - 6; },
+      [&](const PhysicalPoint& p)
+      {
+        const int i = indexAlong(grid, p, 0), j = indexAlong(grid, p, 1), k = indexAlong(grid, p, 2);
+        if (i < 2 || i > 8 || k < 1 || k > 6)
+          return 0;
+        return j >= 5 ? 108 : -108;
+      },
+      [](const PhysicalPoint&) { return 0; } },
+    { { "Segment_1", "Ramp", "0.9 0.2 0.1", "0", "1", "0 11 0 9 0 7" },
+      { "Segment_2", "Slab", "0 0.5 1", "1", "1", "2 8 0 9 1 6" },
+      { "Segment_3", "Nothing", "1 1 0", "2", "1", "0 -1 0 -1 0 -1" } });
+
+  ASSERT_EQ(segmentationFormatOf(path("fractional.seg.nrrd")), SegmentationFormat::SlicerNrrd);
+  const SegmentationFile file = readSegmentationFile(path("fractional.seg.nrrd"));
+  ASSERT_EQ(file.layers.size(), 3u);
+  ASSERT_EQ(file.segments.size(), 3u);
+  const std::array<std::string, 3> names{ "Ramp", "Slab", "Nothing" };
+  for (std::size_t n = 0; n < 3; ++n)
+  {
+    EXPECT_EQ(file.segments[n].name, names[n]);
+    EXPECT_EQ(file.segments[n].layer, n);
+    EXPECT_EQ(file.segments[n].labelValue, 1);
+  }
+  EXPECT_EQ(file.segments[1].rgba[2], 255);
+  for (int k = 0; k < grid.size[2]; ++k)
+    for (int j = 0; j < grid.size[1]; ++j)
+      for (int i = 0; i < grid.size[0]; ++i)
+      {
+        const PhysicalPoint p = grid.point(i, j, k);
+        EXPECT_EQ(valueAt(file.layers[0], p), i >= 6 ? 1.0f : 0.0f) << i << " " << j << " " << k;
+        const bool inSlab = i >= 2 && i <= 8 && k >= 1 && k <= 6 && j >= 5;
+        EXPECT_EQ(valueAt(file.layers[1], p), inSlab ? 1.0f : 0.0f) << i << " " << j << " " << k;
+        EXPECT_EQ(valueAt(file.layers[2], p), 0.0f) << i << " " << j << " " << k;
+      }
+}
+
+TEST_F(SegmentationFileTest, SlicerFractionalRangeFromTheHeaderSetsTheHalf)
+{
+  // Unsigned char fractions from 0 to 216 (the other scale Slicer's code knows), with the range in
+  // the header: half is 108, so i * 30 is in from i = 4 (120) and out at 3 (90). Without the range
+  // the scale of unsigned char voxels is unknown: an error.
+  ImageGrid grid;
+  grid.size = { 8, 3, 2 };
+  auto write = [&](const std::string& name, const std::vector<std::string>& extra)
+  {
+    testing::writeSlicerFractionalSegmentation(path(name), grid,
+                                               { [](const PhysicalPoint& p) { return static_cast<int>(p[0]) * 30; } },
+                                               { { "Segment_1", "Ramp", "1 0 0", "0", "1" } }, extra, false,
+                                               "unsigned char");
+    return path(name);
+  };
+  const SegmentationFile file = readSlicerSegmentation(write("ranged.seg.nrrd", { "Segment0_ScalarRange:=0 216" }));
+  ASSERT_EQ(file.layers.size(), 1u);
+  for (int i = 0; i < grid.size[0]; ++i)
+    EXPECT_EQ(valueAt(file.layers[0], grid.point(i, 1, 1)), i >= 4 ? 1.0f : 0.0f) << i;
+  try
+  {
+    readSlicerSegmentation(write("unranged.seg.nrrd", {}));
+    ADD_FAILURE() << "a fractional labelmap of unsigned char without a range was read";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("a fractional labelmap of unsigned char voxels without SegmentN_ScalarRange"),
+              std::string::npos)
+      << e.what();
+  }
+}
+
+TEST_F(SegmentationFileTest, SlicerFractionalLayoutsThatCannotBeReadAreErrors)
+{
+  const ImageGrid grid = mirroredGrid();
+  auto message = [&](const std::string& name, const std::vector<std::function<int(const PhysicalPoint&)>>& layers,
+                     const std::vector<testing::SlicerSegmentSpec>& segments,
+                     const std::vector<std::string>& extra = {})
+  {
+    testing::writeSlicerFractionalSegmentation(path(name), grid, layers, segments, extra);
+    try
+    {
+      readSegmentationFile(path(name));
+    }
+    catch (const Error& e)
+    {
+      const std::string text = e.what();
+      EXPECT_EQ(text.find('\n'), std::string::npos) << text;
+      EXPECT_NE(text.find(path(name)), std::string::npos) << text;
+      return text;
+    }
+    return std::string("read without an error");
+  };
+  const auto half = [](const PhysicalPoint&) { return 0; };
+  // Two segments in one layer: a fractional layer holds one segment's fractions.
+  EXPECT_NE(message("shared.seg.nrrd", { half }, { { "a", "A", "1 0 0", "0", "1" }, { "b", "B", "0 1 0", "0", "2" } })
+              .find("Segment1 is in layer 0 with Segment0; a fractional labelmap has a layer of its own for each segment"),
+            std::string::npos);
+  // A voxel above the range: not Slicer's -108..108 scale.
+  EXPECT_NE(message("over.seg.nrrd", { [](const PhysicalPoint& p) { return p[2] > 10.0 ? 120 : 0; } },
+                    { { "a", "A", "1 0 0", "0", "1" } })
+              .find("Segment0: voxel (0, 0, 5) is 120, outside the fractional range -108 to 108"),
+            std::string::npos);
+  // Fields that are not a range or an extent.
+  EXPECT_NE(message("range.seg.nrrd", { half }, { { "a", "A", "1 0 0", "0", "1" } }, { "Segment0_ScalarRange:=1 0" })
+              .find("header field Segment0_ScalarRange is '1 0', not a range of fractions"),
+            std::string::npos);
+  EXPECT_NE(message("extent.seg.nrrd", { half }, { { "a", "A", "1 0 0", "0", "1", "0 3 0 3" } })
+              .find("header field Segment0_Extent is '0 3 0 3', not six integers"),
+            std::string::npos);
 }
 
 TEST_F(SegmentationFileTest, OrdinaryVolumesAreNotSegmentationFiles)

@@ -33,6 +33,7 @@ struct SlicerSegmentSpec
   std::string color;      ///< "r g b", 0..1
   std::string layer;      ///< SegmentN_Layer
   std::string labelValue; ///< SegmentN_LabelValue
+  std::string extent;     ///< SegmentN_Extent: "i0 i1 j0 j1 k0 k1", the voxels the segment may have
 };
 
 /** Writes a .seg.nrrd of unsigned char voxels: 3-D for one layer, else 4-D with a leading list axis
@@ -43,6 +44,23 @@ void writeSlicerSegmentation(const std::filesystem::path& path, const ImageGrid&
                              const std::vector<std::function<unsigned char(const PhysicalPoint&)>>& layers,
                              const std::vector<SlicerSegmentSpec>& segments,
                              const std::vector<std::string>& extraFields = {}, bool gzip = false);
+
+/** Writes a .seg.nrrd as 3D Slicer writes a segmentation whose source representation is "Fractional
+ *  labelmap": signed char voxels (`voxelType` names another NRRD type, for files Slicer does not
+ *  write), a layer per segment (a 3-D file for one), the Segmentation_ fields Slicer writes (master
+ *  representation, conversion parameters with the threshold fraction 0.5), and no scalar range (it
+ *  stays in Slicer's memory). Layer l's voxel (i, j, k) is layers[l](grid.point(i, j, k)), cast to
+ *  the voxel type; `extraFields` are written as they are. */
+void writeSlicerFractionalSegmentation(const std::filesystem::path& path, const ImageGrid& grid,
+                                       const std::vector<std::function<int(const PhysicalPoint&)>>& layers,
+                                       const std::vector<SlicerSegmentSpec>& segments,
+                                       const std::vector<std::string>& extraFields = {}, bool gzip = false,
+                                       const std::string& voxelType = "signed char");
+
+/** The value Slicer's fractional labelmap holds for the voxel centred at `centre`: -108 plus how
+ *  many of the voxel's 6 x 6 x 6 evenly spread sample points are inside the shape (as Slicer sums
+ *  216 shifted binary labelmaps), from -108 (empty) to 108 (full). */
+int slicerFraction(const ImageGrid& grid, const PhysicalPoint& centre, const std::function<bool(const PhysicalPoint&)>& inside);
 
 /** One segment of a DICOM SEG: inside(point) is the fraction of the segment at a pixel centre (0..1;
  *  a binary file sets the pixels where it is at least one half). */
