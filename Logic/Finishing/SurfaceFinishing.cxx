@@ -76,14 +76,16 @@ std::size_t unsmoothAround(TriangleMesh& mesh, const std::vector<Point3>& unsmoo
 
 /** Two sheets a voxel apart (a thin gap between gyri, a thin wall) can be smoothed into each other:
  *  there, and only there, the vertices go back to where `unsmoothed` has them (growing rings, three
- *  tries). `validation` is the mesh's, kept up to date. Returns how many vertices went back. */
-std::size_t unsmoothCrossings(TriangleMesh& mesh, const std::vector<Point3>& unsmoothed, MeshValidation& validation)
+ *  tries). `validation` and `crossings` are the mesh's (validateMesh), kept up to date. Returns how
+ *  many vertices went back. */
+std::size_t unsmoothCrossings(TriangleMesh& mesh, const std::vector<Point3>& unsmoothed, MeshValidation& validation,
+                              std::vector<std::pair<std::size_t, std::size_t>>& crossings)
 {
   std::size_t moved = 0;
   for (int rings = 1; rings <= 4 && validation.selfIntersections > 0; rings *= 2)
   {
-    moved += unsmoothAround(mesh, unsmoothed, selfIntersectingPairs(mesh), rings);
-    validation = validateMesh(mesh);
+    moved += unsmoothAround(mesh, unsmoothed, crossings, rings);
+    validation = validateMesh(mesh, crossings);
   }
   return moved;
 }
@@ -177,6 +179,8 @@ struct FinishedPiece
   std::size_t trianglesKeptTiled = 0; ///< of a remeshed piece: tiled triangles kept around `kept`
   /** Of a piece remeshed around places: those places. Remeshed again, it keeps them and adds new ones. */
   KeptPlaces kept;
+  /** The pairs of triangles of `mesh` that cross, from its validation (none in a valid piece). */
+  std::vector<std::pair<std::size_t, std::size_t>> crossings;
 };
 
 /** The validation of a piece of the tiling as it was tiled, without its self-intersection test:
@@ -254,9 +258,11 @@ FinishedPiece smoothedRemesh(TriangleMesh remeshed, const SurfaceFinishingOption
   offsetToVolume(remeshed, volume);
   // After the offset, which would move them too (outwards: towards the other piece).
   std::size_t unsmoothedVertices = leftAsTiled.empty() ? 0 : unsmooth(remeshed, unsmoothed, leftAsTiled);
-  MeshValidation validation = validateMesh(remeshed);
-  unsmoothedVertices += unsmoothCrossings(remeshed, unsmoothed, validation);
-  return FinishedPiece{ std::move(remeshed), SurfaceFinish::Remeshed, {}, unsmoothedVertices, validation };
+  std::vector<std::pair<std::size_t, std::size_t>> crossings;
+  MeshValidation validation = validateMesh(remeshed, crossings);
+  unsmoothedVertices += unsmoothCrossings(remeshed, unsmoothed, validation, crossings);
+  return FinishedPiece{ std::move(remeshed), SurfaceFinish::Remeshed, {}, unsmoothedVertices, validation, 0, {},
+                        std::move(crossings) };
 }
 
 Point3 centroid(const TriangleMesh& mesh, std::size_t t)
@@ -267,13 +273,13 @@ Point3 centroid(const TriangleMesh& mesh, std::size_t t)
   return { (a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0, (a.z + b.z + c.z) / 3.0 };
 }
 
-/** Where `mesh` crosses itself: the centroid of every triangle of a crossing pair. */
-std::vector<Point3> crossingPlaces(const TriangleMesh& mesh)
+/** Where the piece crosses itself: the centroid of every triangle of a crossing pair. */
+std::vector<Point3> crossingPlaces(const FinishedPiece& piece)
 {
   std::vector<Point3> places;
-  for (const auto& [first, second] : selfIntersectingPairs(mesh))
+  for (const auto& [first, second] : piece.crossings)
     for (std::size_t t : { first, second })
-      places.push_back(centroid(mesh, t));
+      places.push_back(centroid(piece.mesh, t));
   return places;
 }
 
@@ -316,7 +322,7 @@ std::optional<FinishedPiece> remeshedAround(const TriangleMesh& tiled, const Mes
     }
     if (!crossesItselfInAFewPlaces(around->validation))
       return std::nullopt;
-    const std::vector<Point3> more = crossingPlaces(around->mesh);
+    const std::vector<Point3> more = crossingPlaces(*around);
     places.crossedItself.insert(places.crossedItself.end(), more.begin(), more.end());
   }
   return std::nullopt;
@@ -348,7 +354,7 @@ std::optional<FinishedPiece> remeshedPiece(const TriangleMesh& tiled, const Mesh
     return piece;
   if (!crossesItselfInAFewPlaces(piece->validation))
     return std::nullopt;
-  KeptPlaces places{ crossingPlaces(piece->mesh), {} };
+  KeptPlaces places{ crossingPlaces(*piece), {} };
   piece.reset(); // not held beside the second remesh
   return remeshedAround(tiled, reference, options, volume, threads, std::move(places));
 }
@@ -392,8 +398,9 @@ FinishedPiece finishPiece(const TriangleMesh& tiled, const MeshValidation& refer
   smoothSurface(smoothed, options.smoothing, threads);
   if (volumeScale != 1.0 && options.smoothing.iterations > 0) // no iterations asked: the tiling itself
     offsetToVolume(smoothed, volumeScale * reference.volume);
-  MeshValidation validation = validateMesh(smoothed);
-  const std::size_t unsmoothedVertices = unsmoothCrossings(smoothed, tiled.points, validation);
+  std::vector<std::pair<std::size_t, std::size_t>> crossings;
+  MeshValidation validation = validateMesh(smoothed, crossings);
+  const std::size_t unsmoothedVertices = unsmoothCrossings(smoothed, tiled.points, validation, crossings);
   const std::string why = rejection(validation, reference);
   if (why.empty())
   {

@@ -214,15 +214,23 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
   return v;
 }
 
-MeshValidation validateMesh(const TriangleMesh& mesh)
+MeshValidation validateMesh(const TriangleMesh& mesh, std::vector<std::pair<std::size_t, std::size_t>>& crossings)
 {
   MeshValidation v = validateMeshTopology(mesh);
+  crossings.clear();
   if (v.manifold() && v.inconsistentEdges == 0)
   {
-    v.selfIntersections = selfIntersectingTrianglePairs(mesh).size();
+    crossings = selfIntersectingTrianglePairs(mesh);
+    v.selfIntersections = crossings.size();
     v.selfIntersectionChecked = true;
   }
   return v;
+}
+
+MeshValidation validateMesh(const TriangleMesh& mesh)
+{
+  std::vector<std::pair<std::size_t, std::size_t>> crossings;
+  return validateMesh(mesh, crossings);
 }
 
 MeshValidation joinedValidation(const std::vector<MeshValidation>& parts, std::size_t crossingPairs)

@@ -50,6 +50,11 @@ struct MeshValidation
  *  triangles cross there, but a rotation or rounding of the coordinates may make them cross. */
 MeshValidation validateMesh(const TriangleMesh& mesh);
 
+/** validateMesh, with the pairs of triangles that cross (as selfIntersectingPairs gives them) from
+ *  the same test: for a caller that acts on them, one test of the whole mesh instead of two. Empty
+ *  when the test was not run (a mesh not manifold). */
+MeshValidation validateMesh(const TriangleMesh& mesh, std::vector<std::pair<std::size_t, std::size_t>>& crossings);
+
 /** validateMesh without the self-intersection test (selfIntersectionChecked false): the topology,
  *  orientation and measures, in time linear in the triangles (and, for a mesh of several components
  *  whose boxes nest, O(n log n) to tell which component lies inside which). */
