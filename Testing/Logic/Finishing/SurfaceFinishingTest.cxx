@@ -173,6 +173,50 @@ TEST(SurfaceRemeshing, GivesEdgesOfTheTargetLengthOnTheSameSurface)
   }
 }
 
+TEST(SurfaceRemeshing, OneProjectionAfterTheRoundsLeavesEveryVertexOnTheInput)
+{
+  // The rounds between relax vertices within their tangent planes without projecting them: the
+  // last projection must still put every vertex on the input (a polyhedron inside the sphere, whose
+  // faces lie at most its sagitta below it), and the triangles must be those of a projection after
+  // every round within a percent.
+  const double radius = 10.0;
+  const TriangleMesh sphere = octaSphere(30, radius);
+  double largestEdge = 0.0;
+  for (const Triangle& t : sphere.triangles)
+    for (int i = 0; i < 3; ++i)
+    {
+      const Point3& a = sphere.points[static_cast<std::size_t>(t[i])];
+      const Point3& b = sphere.points[static_cast<std::size_t>(t[(i + 1) % 3])];
+      largestEdge = std::max(largestEdge, std::hypot(a.x - b.x, a.y - b.y, a.z - b.z));
+    }
+  const double sagitta = radius - std::sqrt(radius * radius - largestEdge * largestEdge / 3.0);
+  SurfaceRemeshingOptions once;
+  once.targetEdgeLength = 1.2;
+  SurfaceRemeshingOptions eachRound = once;
+  eachRound.projectEachRound = true;
+  const TriangleMesh a = remeshSurface(sphere, once), b = remeshSurface(sphere, eachRound);
+  for (const TriangleMesh* m : { &a, &b })
+  {
+    double lowest = radius, highest = 0.0;
+    for (const Point3& p : m->points)
+    {
+      const double r = std::hypot(p.x, p.y, p.z);
+      lowest = std::min(lowest, r);
+      highest = std::max(highest, r);
+    }
+    std::printf("%s: radius %.4f to %.4f (input within %.4f below %.1f), %zu triangles\n",
+                m == &a ? "projected once" : "projected each round", lowest, highest, sagitta, radius,
+                m->triangles.size());
+    EXPECT_LE(highest, radius + 1e-9);
+    EXPECT_GE(lowest, radius - sagitta - 1e-9);
+    const MeshValidation v = validateMesh(*m);
+    EXPECT_TRUE(v.valid()) << v.summary();
+    EXPECT_LT(v.fractionAnglesBelow30, 0.01);
+  }
+  EXPECT_NEAR(static_cast<double>(a.triangles.size()) / static_cast<double>(b.triangles.size()), 1.0, 0.01);
+  EXPECT_NEAR(meanRadiusError(a, radius), meanRadiusError(b, radius), 0.1 * sagitta);
+}
+
 TEST(SurfaceRemeshing, InSlabsAndSeamBandsLikeAWholeRemesh)
 {
   // A sphere of about 51,000 triangles in slabs of about 8,000: six slabs remeshed side by side,
