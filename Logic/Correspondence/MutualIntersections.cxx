@@ -177,4 +177,129 @@ std::size_t insertMutualIntersections(std::vector<Polygon2>& lower, std::vector<
   return crossings;
 }
 
+std::size_t removeVerticesNearCommonOnes(std::vector<Polygon2>& contours, const std::vector<Polygon2>* below,
+                                         const std::vector<Polygon2>* above, double shortLength, double tolerance)
+{
+  if (!(shortLength > 0.0) || contours.empty())
+    return 0;
+  // The neighbour slices' points (with their contour) and edges, and the slice's own points as they
+  // were (a removed vertex still counts: conservative, and it keeps the hash simple).
+  struct NeighbourPoint
+  {
+    Point2 p;
+    int contour;
+  };
+  std::vector<Polygon2> neighbourContours;
+  std::vector<NeighbourPoint> neighbours;
+  for (const std::vector<Polygon2>* slice : { below, above })
+    if (slice)
+      for (const Polygon2& polygon : *slice)
+      {
+        for (const Point2& p : polygon)
+          neighbours.push_back({ p, static_cast<int>(neighbourContours.size()) });
+        neighbourContours.push_back(polygon);
+      }
+  if (neighbours.empty())
+    return 0;
+  std::vector<Point2> own;
+  for (const Polygon2& polygon : contours)
+    own.insert(own.end(), polygon.begin(), polygon.end());
+  SpatialHash neighbourCells(shortLength), ownCells(shortLength);
+  for (int i = 0; i < static_cast<int>(neighbours.size()); ++i)
+    neighbourCells.insert(neighbours[i].p, i);
+  for (int i = 0; i < static_cast<int>(own.size()); ++i)
+    ownCells.insert(own[i], i);
+  const EdgeGrid neighbourEdges(neighbourContours, 2.0 * shortLength, tolerance);
+
+  auto isCommon = [&](const Point2& p) {
+    return neighbourCells.anyIn(neighbourCells.cellsWithin(p, tolerance),
+                                [&](int i) { return distance(neighbours[i].p, p) <= tolerance; });
+  };
+  // Whether p lies in the closed triangle cba, or within tolerance of its new edge ca.
+  auto inCutOff = [&](const Point2& c, const Point2& b, const Point2& a, const Point2& p) {
+    if (distanceToSegment(p, c, a) <= tolerance)
+      return true;
+    const int o = orientation(c, b, a);
+    return o != 0 && orientation(c, b, p) * o >= 0 && orientation(b, a, p) * o >= 0 && orientation(a, c, p) * o >= 0;
+  };
+  // Removing b replaces edges cb and ba by the chord ca. The slices still meet only at common vertices
+  // if no neighbour edge meets the chord but at a common end of it; a neighbour contour may then pass
+  // into the cut-off corner (through a or c), but not lie in it whole (it would change sides). Own
+  // contours cannot cross cb or ba, so one meets the chord only with a point in the corner.
+  auto mayRemove = [&](const Point2& c, const Point2& b, const Point2& a, bool cCommon) {
+    const Box2 box{ std::min({ a.x, b.x, c.x }) - tolerance, std::min({ a.y, b.y, c.y }) - tolerance,
+                    std::max({ a.x, b.x, c.x }) + tolerance, std::max({ a.y, b.y, c.y }) + tolerance };
+    const bool ownInside = ownCells.anyIn(ownCells.cellsOf(box), [&](int i) {
+      const Point2& p = own[i];
+      const bool corner = (p.x == a.x && p.y == a.y) || (p.x == b.x && p.y == b.y) || (p.x == c.x && p.y == c.y);
+      return !corner && inCutOff(c, b, a, p);
+    });
+    if (ownInside)
+      return false;
+    auto atEnd = [&](const Point2& p) {
+      return distance(p, a) <= tolerance || (cCommon && distance(p, c) <= tolerance);
+    };
+    bool meets = false;
+    neighbourEdges.forEachNear(c, a, [&](const EdgeRef& ref) {
+      if (meets)
+        return;
+      const Polygon2& polygon = neighbourContours[ref.contour];
+      const Point2& p = polygon[ref.edge];
+      const Point2& q = polygon[(ref.edge + 1) % polygon.size()];
+      const bool pEnd = atEnd(p), qEnd = atEnd(q);
+      if (pEnd && qEnd)
+        meets = true; // runs along the chord
+      else if (pEnd)
+        meets = distanceToSegment(q, c, a) <= tolerance;
+      else if (qEnd)
+        meets = distanceToSegment(p, c, a) <= tolerance;
+      else
+        meets = distanceToSegment(p, c, a) <= tolerance || distanceToSegment(q, c, a) <= tolerance ||
+                distanceToSegment(c, p, q) <= tolerance || distanceToSegment(a, p, q) <= tolerance ||
+                (orientation(c, a, p) * orientation(c, a, q) <= 0 && orientation(p, q, c) * orientation(p, q, a) <= 0);
+    });
+    if (meets)
+      return false;
+    // A neighbour contour with a point in the corner must also have one outside it.
+    std::vector<int> inside;
+    neighbourCells.forEachIn(neighbourCells.cellsOf(box), [&](int i) {
+      if (!atEnd(neighbours[i].p) && inCutOff(c, b, a, neighbours[i].p))
+        inside.push_back(neighbours[i].contour);
+    });
+    for (const int contour : inside)
+    {
+      const Polygon2& polygon = neighbourContours[contour];
+      if (std::all_of(polygon.begin(), polygon.end(),
+                      [&](const Point2& p) { return atEnd(p) || inCutOff(c, b, a, p); }))
+        return false;
+    }
+    return true;
+  };
+
+  std::size_t removed = 0;
+  for (Polygon2& polygon : contours)
+    for (std::size_t i = 0; i < polygon.size(); ++i)
+    {
+      if (!isCommon(polygon[i]))
+        continue;
+      // Free vertices closer than shortLength on either side, one at a time while the chord that
+      // replaces them is no shorter than the edge they end.
+      for (const int step : { 1, -1 })
+        while (polygon.size() > 8)
+        {
+          const std::size_t n = polygon.size();
+          const std::size_t bi = (i + n + step) % n, ci = (i + n + 2 * step) % n;
+          const Point2 a = polygon[i], b = polygon[bi], c = polygon[ci];
+          if (distance(a, b) >= shortLength || distance(c, a) < distance(a, b) || isCommon(b) ||
+              !mayRemove(c, b, a, isCommon(c)))
+            break;
+          polygon.erase(polygon.begin() + static_cast<std::ptrdiff_t>(bi));
+          if (bi < i)
+            --i;
+          ++removed;
+        }
+    }
+  return removed;
+}
+
 } // namespace slicemesh

@@ -1,6 +1,5 @@
 #include "Measures/DirichletEnergy.h"
 
-#include "Core/NearestSegment.h"
 #include "Core/PlanarGeometry.h"
 
 #include <algorithm>
@@ -88,32 +87,11 @@ DirichletEnergy measureDirichletEnergy(const TriangleMesh& mesh, const ContourSt
     result.energy += triangleEnergy(a, b, c);
   }
 
-  // Contour segments per slice, for the constraint test.
-  std::vector<std::unique_ptr<NearestSegment>> contourSegments(slices.size());
+  // A contour edge (a constraint) is an edge level at a slice's height: the tiling splits every other
+  // chord between two points of one slice (Algorithm.md, step 6). Not the stack's own contour
+  // segments: the tiling removes contour vertices next to crossing points (step 3).
   auto onContour = [&](const Point3& p, const Point3& q) -> bool
-  {
-    if (std::abs(p.z - q.z) > tolerance)
-      return false;
-    const long s = sliceAt(p.z);
-    if (s < 0)
-      return false;
-    if (!contourSegments[s])
-    {
-      std::vector<NearestSegment::Segment> segments;
-      double total = 0.0;
-      for (const Polygon2& contour : slices[s].contours)
-        for (std::size_t i = 0; i < contour.size(); ++i)
-        {
-          segments.push_back({ contour[i], contour[(i + 1) % contour.size()] });
-          total += distance(segments.back().first, segments.back().second);
-        }
-      const double cell = segments.empty() ? 1.0 : std::max(total / segments.size(), 1e-3);
-      contourSegments[s] = std::make_unique<NearestSegment>(std::move(segments), cell);
-    }
-    const Point2 middle{ 0.5 * (p.x + q.x), 0.5 * (p.y + q.y) };
-    return contourSegments[s]->distance(middle) <= 1e3 * tolerance &&
-           contourSegments[s]->distance(xy(p)) <= 1e3 * tolerance && contourSegments[s]->distance(xy(q)) <= 1e3 * tolerance;
-  };
+  { return std::abs(p.z - q.z) <= tolerance && sliceAt(p.z) >= 0; };
 
   // Triangles on each side of every edge: the edges sorted by key (and triangle), no hash map.
   std::vector<std::pair<std::uint64_t, std::size_t>> edges;

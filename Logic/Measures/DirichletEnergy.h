@@ -28,8 +28,9 @@ struct DirichletEnergy
  *  [z_k, z_k+1] of two consecutive slices; it is sloped when its vertices are not all at one
  *  height and its projection onto the slice plane is not degenerate (walls are vertical, caps and
  *  flat chord triangles level). An edge is a flip candidate when its two triangles are sloped
- *  triangles of the same slab that face the same way in projection, the edge does not lie on a
- *  contour (a constraint) of either slice, the quadrilateral the two triangles form is strictly
+ *  triangles of the same slab that face the same way in projection, the edge is not a contour edge
+ *  (a constraint: level at a slice's height, since the tiling splits every other chord between two
+ *  points of one slice), the quadrilateral the two triangles form is strictly
  *  convex in projection, and its other diagonal is not already an edge. A flip lowers the energy
  *  when the energy of the two new triangles is below that of the old ones by more than
  *  `relativeTolerance` of it (cocircular quads tie). */

@@ -101,6 +101,8 @@ TriangleMesh reconstructSurface(const ContourStack& stack, const ReconstructionO
   if (!anyContour)
     throw Error("contour stack: no contour to mesh");
 
+  // Short means: against the median contour edge as given, before crossing points shorten edges.
+  const double medianEdgeBefore = medianEdgeLength(slices);
   // Adjacent slices must meet only at common vertices: a forward pass carries split points up the
   // stack, a backward pass carries them down along coincident walls.
   for (std::size_t k = 0; k + 1 < n; ++k)
@@ -109,6 +111,13 @@ TriangleMesh reconstructSurface(const ContourStack& stack, const ReconstructionO
   for (std::size_t k = n - 1; k-- > 0;)
     statistics.crossingPoints +=
       insertMutualIntersections(slices[k].contours, slices[k + 1].contours, options.mergeTolerance);
+  // A crossing point next to a contour vertex leaves a short contour edge; the vertex is shared by the
+  // slabs on both sides, so it goes from the contour itself, before either slab is tiled.
+  if (options.shortEdgeFraction > 0.0)
+    for (std::size_t k = 0; k < n; ++k)
+      statistics.verticesRemoved += removeVerticesNearCommonOnes(
+        slices[k].contours, k > 0 ? &slices[k - 1].contours : nullptr, k + 1 < n ? &slices[k + 1].contours : nullptr,
+        options.shortEdgeFraction * medianEdgeBefore, options.mergeTolerance);
 
   MeshBuilder mesh;
   for (PreparedSlice& slice : slices)

@@ -32,6 +32,10 @@ struct ReconstructionOptions
    *  flipped towards the largest smallest angle of the lifted 3D triangles, which planar Delaunay
    *  cannot give where the surface climbs steeply between nearly parallel contours. */
   bool planarTiling = false;
+  /** A contour vertex closer to a crossing point (or another vertex its slice shares with a neighbour)
+   *  than this fraction of the median contour edge is removed, where that changes no contour's
+   *  crossings, rather than leave a short contour edge (MutualIntersections.h); 0 keeps them all. */
+  double shortEdgeFraction = 0.3;
   /** Points of the same slice closer than this (mm) are one point. */
   double mergeTolerance = 1e-6;
   /** Threads to tile slabs side by side (0: every core); the mesh does not depend on it. */
@@ -44,6 +48,7 @@ struct ReconstructionStatistics
 {
   std::size_t slabs = 0;
   std::size_t crossingPoints = 0;   ///< points where a contour crosses its neighbour's contour
+  std::size_t verticesRemoved = 0;  ///< contour vertices removed next to crossing points
   std::size_t steinerPoints = 0;    ///< interior points inserted to lift flat chords
   std::size_t wallTriangles = 0;    ///< triangles on vertical walls (coincident contours, cap rims)
   std::size_t capTriangles = 0;     ///< triangles closing the ends of components

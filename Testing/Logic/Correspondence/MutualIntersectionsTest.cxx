@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using namespace slicemesh;
 using namespace slicemesh::testing;
 
@@ -51,4 +53,40 @@ TEST(MutualIntersections, DisjointContoursAreUntouched)
   EXPECT_EQ(insertMutualIntersections(lower, upper, 1e-9), 0u);
   EXPECT_EQ(lower[0].size(), 16u);
   EXPECT_EQ(upper[0].size(), 16u);
+}
+
+TEST(MutualIntersections, VertexNextToACrossingIsRemoved)
+{
+  // The rectangle's left edge crosses the circle 0.06 from its vertices at +-15 degrees: those two
+  // vertices would end contour edges a tenth as long as the others.
+  std::vector<Polygon2> lower{ circle(0, 0, 2, 24) };
+  std::vector<Polygon2> upper{ rectangle(1.94, -1.2, 3, 1.2) };
+  EXPECT_EQ(insertMutualIntersections(lower, upper, 1e-9), 2u);
+  ASSERT_EQ(lower[0].size(), 26u);
+  const Point2 nearVertex = lower[0][2];
+  EXPECT_EQ(removeVerticesNearCommonOnes(upper, &lower, nullptr, 0.15, 1e-9), 0u) << "a contour keeps eight points";
+  EXPECT_EQ(removeVerticesNearCommonOnes(lower, nullptr, &upper, 0.15, 1e-9), 2u);
+  EXPECT_EQ(lower[0].size(), 24u);
+  EXPECT_FALSE(hasVertex(lower[0], nearVertex));
+  for (const Point2& crossing : upper[0])
+    if (crossing.x == 1.94 && std::abs(crossing.y) < 1.0)
+      EXPECT_TRUE(hasVertex(lower[0], crossing));
+  // The slices still meet only at their common vertices: nothing more to insert.
+  EXPECT_EQ(insertMutualIntersections(lower, upper, 1e-9), 0u);
+  EXPECT_EQ(lower[0].size(), 24u);
+  EXPECT_EQ(upper[0].size(), 6u);
+}
+
+TEST(MutualIntersections, VertexWhoseCornerHoldsAContourStays)
+{
+  // A small contour of the next slice lies whole in the corner the vertex would cut off: removing
+  // the vertex would put it outside the lower contour.
+  std::vector<Polygon2> lower{ circle(0, 0, 2, 24) };
+  std::vector<Polygon2> upper{ rectangle(1.94, -1.2, 3, 1.2) };
+  insertMutualIntersections(lower, upper, 1e-9);
+  const Point2 b = lower[0][2], c = lower[0][3];
+  const Point2 inCorner{ (b.x + c.x + lower[0][1].x) / 3.0, (b.y + c.y + lower[0][1].y) / 3.0 };
+  upper.push_back(circle(inCorner.x, inCorner.y, 1e-3, 8));
+  EXPECT_EQ(removeVerticesNearCommonOnes(lower, nullptr, &upper, 0.15, 1e-9), 1u) << "only the vertex at -15 degrees";
+  EXPECT_TRUE(hasVertex(lower[0], b));
 }

@@ -6,6 +6,7 @@
 
 #include "ContourStacks.h"
 
+#include "Core/PlanarGeometry.h"
 #include "Measures/MeshValidation.h"
 
 #include <gtest/gtest.h>
@@ -64,6 +65,11 @@ bool flipOneEdge(TriangleMesh& mesh, const ContourStack& stack)
     for (std::int32_t v : t2)
       if (v != a && v != b)
         d = v;
+    // Only a legal flip: the quad strictly convex in projection (as the measure's candidates are).
+    auto xyOf = [&](std::int32_t v) { return Point2{ mesh.points[v].x, mesh.points[v].y }; };
+    if (d < 0 || orientation(xyOf(a), xyOf(b), xyOf(c)) * orientation(xyOf(a), xyOf(b), xyOf(d)) >= 0 ||
+        orientation(xyOf(c), xyOf(d), xyOf(a)) * orientation(xyOf(c), xyOf(d), xyOf(b)) >= 0)
+      continue;
     // t1 = (p, q, c), t2 = (q, p, d) -> (p, d, c) and (d, q, c)
     t1 = { p, d, c };
     t2 = { d, q, c };
