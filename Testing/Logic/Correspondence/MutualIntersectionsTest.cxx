@@ -18,6 +18,15 @@ bool hasVertex(const Polygon2& polygon, const Point2& p)
       return true;
   return false;
 }
+
+/** A circle of 24 points whose neighbour slice is a rectangle with its left edge 0.06 from the
+ *  circle's vertices at +-15 degrees, after the crossing points went into both. */
+struct CircleCrossedNextToTwoVertices
+{
+  std::vector<Polygon2> lower{ circle(0, 0, 2, 24) };
+  std::vector<Polygon2> upper{ rectangle(1.94, -1.2, 3, 1.2) };
+  std::size_t crossings = insertMutualIntersections(lower, upper, 1e-9);
+};
 } // namespace
 
 TEST(MutualIntersections, CrossingSquaresShareTheirCrossingPoints)
@@ -57,11 +66,11 @@ TEST(MutualIntersections, DisjointContoursAreUntouched)
 
 TEST(MutualIntersections, VertexNextToACrossingIsRemoved)
 {
-  // The rectangle's left edge crosses the circle 0.06 from its vertices at +-15 degrees: those two
-  // vertices would end contour edges a tenth as long as the others.
-  std::vector<Polygon2> lower{ circle(0, 0, 2, 24) };
-  std::vector<Polygon2> upper{ rectangle(1.94, -1.2, 3, 1.2) };
-  EXPECT_EQ(insertMutualIntersections(lower, upper, 1e-9), 2u);
+  // The two vertices next to the crossings would end contour edges a tenth as long as the others.
+  CircleCrossedNextToTwoVertices slices;
+  std::vector<Polygon2>& lower = slices.lower;
+  std::vector<Polygon2>& upper = slices.upper;
+  EXPECT_EQ(slices.crossings, 2u);
   ASSERT_EQ(lower[0].size(), 26u);
   const Point2 nearVertex = lower[0][2];
   EXPECT_EQ(removeVerticesNearCommonOnes(upper, &lower, nullptr, 0.15, 1e-9), 0u) << "a contour keeps eight points";
@@ -81,9 +90,9 @@ TEST(MutualIntersections, VertexWhoseCornerHoldsAContourStays)
 {
   // A small contour of the next slice lies whole in the corner the vertex would cut off: removing
   // the vertex would put it outside the lower contour.
-  std::vector<Polygon2> lower{ circle(0, 0, 2, 24) };
-  std::vector<Polygon2> upper{ rectangle(1.94, -1.2, 3, 1.2) };
-  insertMutualIntersections(lower, upper, 1e-9);
+  CircleCrossedNextToTwoVertices slices;
+  std::vector<Polygon2>& lower = slices.lower;
+  std::vector<Polygon2>& upper = slices.upper;
   const Point2 b = lower[0][2], c = lower[0][3];
   const Point2 inCorner{ (b.x + c.x + lower[0][1].x) / 3.0, (b.y + c.y + lower[0][1].y) / 3.0 };
   upper.push_back(circle(inCorner.x, inCorner.y, 1e-3, 8));
