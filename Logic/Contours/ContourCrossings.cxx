@@ -40,9 +40,20 @@ bool foldsBack(const Point2& a, const Point2& b, const Point2& c)
   return orientation(a, b, c) == 0 && (a.x - b.x) * (c.x - b.x) + (a.y - b.y) * (c.y - b.y) > 0.0;
 }
 
-} // namespace
+/** Closed segments ab and cd come within `gap` of each other (share a point when gap is 0). */
+bool segmentsWithin(const Point2& a, const Point2& b, const Point2& c, const Point2& d, double gap)
+{
+  if (segmentsMeet(a, b, c, d))
+    return true;
+  // Apart, their closest points include an end of one of them.
+  return gap > 0.0 && std::min({ distanceToSegment(a, c, d), distanceToSegment(b, c, d), distanceToSegment(c, a, b),
+                                 distanceToSegment(d, a, b) }) <= gap;
+}
 
-std::vector<std::pair<ContourEdge, ContourEdge>> contourCrossings(const std::vector<Polygon2>& contours)
+/** The pairs of edges within `gap` of each other, apart from consecutive edges of one contour (which
+ *  meet at their vertex) unless they fold back onto each other: a sweep over x of the edges' boxes
+ *  grown by gap. */
+std::vector<std::pair<ContourEdge, ContourEdge>> edgesWithin(const std::vector<Polygon2>& contours, double gap)
 {
   struct Item
   {
@@ -60,7 +71,8 @@ std::vector<std::pair<ContourEdge, ContourEdge>> contourCrossings(const std::vec
     {
       const Point2& a = polygon[e];
       const Point2& b = polygon[(e + 1) % n];
-      items.push_back({ std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y), { c, e } });
+      items.push_back({ std::min(a.x, b.x) - gap, std::max(a.x, b.x) + gap, std::min(a.y, b.y) - gap,
+                        std::max(a.y, b.y) + gap, { c, e } });
     }
   }
   std::sort(items.begin(), items.end(),
@@ -105,12 +117,24 @@ std::vector<std::pair<ContourEdge, ContourEdge>> contourCrossings(const std::vec
           continue;
         }
       }
-      if (segmentsMeet(a, b, c, d))
+      if (segmentsWithin(a, b, c, d, gap))
         crossings.push_back({ f, e });
     }
     active.push_back(i);
   }
   return crossings;
+}
+
+} // namespace
+
+std::vector<std::pair<ContourEdge, ContourEdge>> contourCrossings(const std::vector<Polygon2>& contours)
+{
+  return edgesWithin(contours, 0.0);
+}
+
+std::vector<std::pair<ContourEdge, ContourEdge>> contourEdgesWithin(const std::vector<Polygon2>& contours, double gap)
+{
+  return edgesWithin(contours, std::max(0.0, gap));
 }
 
 } // namespace slicemesh

@@ -118,5 +118,50 @@ TEST(ContourRepair, CleanSlicesAreKeptExactly)
     }
 }
 
+TEST(ContourRepair, EdgesWithinAGapAreFoundOnlyCloserThanIt)
+{
+  // Two squares 0.2 mm apart along x: their facing edges are the only pair within 0.25 mm.
+  const Polygon2 a{ { 0, 0 }, { 10, 0 }, { 10, 10 }, { 0, 10 } };
+  const Polygon2 b{ { 10.2, 0 }, { 20, 0 }, { 20, 10 }, { 10.2, 10 } };
+  EXPECT_TRUE(contourEdgesWithin({ a, b }, 0.15).empty());
+  // Within 0.25: a's right side with b's left, bottom and top; a's bottom and top with b's left and
+  // with the side of b they are collinear with (their ends 0.2 apart).
+  const auto close = contourEdgesWithin({ a, b }, 0.25);
+  EXPECT_EQ(close.size(), 7u);
+  for (const auto& [e, f] : close)
+    EXPECT_NE(e.contour, f.contour);
+  EXPECT_TRUE(contourEdgesWithin({ a }, 9.9).empty()) << "consecutive sides are left out, opposite ones are 10 apart";
+  EXPECT_EQ(contourEdgesWithin({ a }, 10.0).size(), 2u);
+  EXPECT_TRUE(contourCrossings({ a, b }).empty());
+}
+
+TEST(ContourRepair, SlicesAreKeptWithoutClosingOnlyWhereClosingCannotChangeThem)
+{
+  // Two circles and a keyhole at gaps on both sides of the 0.1 mm channel width: wherever no edges
+  // come within the width, closing keeps every contour (so the slice may be kept as given), and
+  // well below the width the slice is still repaired.
+  for (double gap : { 0.02, 0.05, 0.09, 0.099, 0.101, 0.104, 0.11, 0.2, 0.5, 2.0 })
+  {
+    const std::vector<Polygon2> twoCircles{ flat(circle(0, 0, 0, 5.0)), flat(circle(10.0 + gap, 0, 0, 5.0)) };
+    const std::vector<Polygon2> keyhole{ flat(keyholeAnnulus(0.0, 0.0, 0.0, 20.0, 10.0, gap)) };
+    for (const std::vector<Polygon2>& contours : { twoCircles, keyhole })
+    {
+      if (contourEdgesWithin(contours, 0.1 + 3e-3).empty())
+        EXPECT_EQ(evenOddRegion(contours).size(), contours.size()) << "gap " << gap;
+      ContourStack stack;
+      stack.slices.push_back({ 0.0, contours });
+      ContourRepairReport report;
+      const ContourStack repaired = repairContours(stack, {}, &report);
+      if (gap <= 0.05) // nearer the width the closing's own rounding decides
+      {
+        EXPECT_NE(repaired.slices[0].contours.size(), contours.size()) << "gap " << gap;
+        EXPECT_EQ(report.channelSlices.size(), 1u) << "gap " << gap;
+      }
+      else if (gap > 0.11)
+        EXPECT_FALSE(report.any()) << "gap " << gap;
+    }
+  }
+}
+
 } // namespace
 } // namespace slicemesh::testing
