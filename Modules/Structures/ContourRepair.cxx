@@ -23,17 +23,24 @@ constexpr double Separation = 1.5e-3;
 // and the points are scaled by Scale. A kilometre's worth of margin over any anatomy in a file.
 constexpr double Reach = 1e6;
 
+/** Throws unless every point is a number within Reach of the origin. */
+void requireWithinReach(const std::vector<Polygon2>& contours)
+{
+  for (const Polygon2& contour : contours)
+    for (const Point2& p : contour)
+      if (!(std::abs(p.x) <= Reach && std::abs(p.y) <= Reach))
+        throw Error("a contour point lies " + std::to_string(std::max(std::abs(p.x), std::abs(p.y))) +
+                    " mm from the origin, beyond the 1 km any anatomy lies within");
+}
+
 ClipperLib::Paths toPaths(const std::vector<Polygon2>& contours)
 {
+  requireWithinReach(contours);
   ClipperLib::Paths paths;
   for (const Polygon2& contour : contours)
   {
     ClipperLib::Path path;
     path.reserve(contour.size());
-    for (const Point2& p : contour)
-      if (!(std::abs(p.x) <= Reach && std::abs(p.y) <= Reach))
-        throw Error("a contour point lies " + std::to_string(std::max(std::abs(p.x), std::abs(p.y))) +
-                    " mm from the origin, beyond the 1 km any anatomy lies within");
     for (const Point2& p : contour)
       path.push_back({ static_cast<ClipperLib::cInt>(std::llround(p.x * Scale)),
                        static_cast<ClipperLib::cInt>(std::llround(p.y * Scale)) });
@@ -140,6 +147,7 @@ namespace
  *  set are such; the closing's offsets were most of reading one. */
 bool keptWithoutClosing(const std::vector<Polygon2>& contours, const ContourRepairOptions& options)
 {
+  requireWithinReach(contours); // a point that is no number, or absurdly far, is an error either way
   const double smallest = options.channelWidth * options.channelWidth;
   for (const Polygon2& contour : contours)
     if (contour.size() < 3 || std::abs(0.5 * twiceSignedArea(contour)) < 2.0 * smallest)

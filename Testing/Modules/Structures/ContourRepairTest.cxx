@@ -99,6 +99,13 @@ TEST(ContourRepair, APointFarBeyondAnyAnatomyIsAnErrorNotACrash)
   const Polygon2 notANumber{ { 0, 0 }, { 4, 0 }, { std::nan(""), 4 }, { 0, 4 } };
   EXPECT_THROW(evenOddRegion({ notANumber }), Error);
   EXPECT_NO_THROW(evenOddRegion({ Polygon2{ { 9e5, 0 }, { 9e5 + 4, 0 }, { 9e5 + 4, 4 }, { 9e5, 4 } } }));
+  // A slice repaired or kept as given alike: the point is an error, not passed on to the tiling.
+  for (const Polygon2& bad : { far, notANumber })
+  {
+    ContourStack stack;
+    stack.slices.push_back({ 0.0, { bad } });
+    EXPECT_THROW(repairContours(stack), Error);
+  }
 }
 
 TEST(ContourRepair, CleanSlicesAreKeptExactly)
