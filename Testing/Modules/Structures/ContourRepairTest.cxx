@@ -127,7 +127,7 @@ TEST(ContourRepair, CleanSlicesAreKeptExactly)
 
 TEST(ContourRepair, EdgesWithinAGapAreFoundOnlyCloserThanIt)
 {
-  // Two squares 0.2 mm apart along x: their facing edges are the only pair within 0.25 mm.
+  // Two squares 0.2 mm apart along x: no edges within 0.15 mm, seven pairs within 0.25 mm.
   const Polygon2 a{ { 0, 0 }, { 10, 0 }, { 10, 10 }, { 0, 10 } };
   const Polygon2 b{ { 10.2, 0 }, { 20, 0 }, { 20, 10 }, { 10.2, 10 } };
   EXPECT_TRUE(contourEdgesWithin({ a, b }, 0.15).empty());
@@ -145,8 +145,8 @@ TEST(ContourRepair, EdgesWithinAGapAreFoundOnlyCloserThanIt)
 TEST(ContourRepair, SlicesAreKeptWithoutClosingOnlyWhereClosingCannotChangeThem)
 {
   // Two circles, a keyhole and a spike at gaps on both sides of the 0.1 mm channel width: wherever
-  // no edges come within the width, closing keeps every contour (so the slice may be kept as given), and
-  // well below the width the slice is still repaired.
+  // no edges come within the width, closing keeps every contour (so the slice may be kept as
+  // given), and well below the width the slice is still repaired.
   for (double gap : { 0.02, 0.05, 0.09, 0.099, 0.101, 0.104, 0.11, 0.2, 0.5, 2.0 })
   {
     const std::vector<Polygon2> twoCircles{ flat(circle(0, 0, 0, 5.0)), flat(circle(10.0 + gap, 0, 0, 5.0)) };
