@@ -342,19 +342,49 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   // From here on each mesh is the finished one: what is written, pictured and reported (only the
   // Dirichlet energy stays the tiling's).
   startStage(Writing);
-  // The output model: the structures' meshes in physical space, in label order. Each is appended
-  // and released as it is done, so that the meshes are not held twice (apart and merged).
-  TriangleMesh merged;
-  MeshAttributes mergedAttributes;
-  std::vector<LabelReport> reports;
-  std::vector<MeshValidation> validations;
   const fs::path output(settings.outputModel);
   const int width = perLabel && std::any_of(structures.begin(), structures.end(),
                                             [](const Structure& s) { return s.report.label >= 1000; })
                       ? 0
                       : 3;
-  for (Structure& s : structures)
+  auto attributesOf = [](const Structure& s, std::size_t triangles)
   {
+    MeshAttributes attributes;
+    attributes.cellLabels.assign(triangles, s.report.label);
+    attributes.cellColors.assign(triangles, { s.rgba[0], s.rgba[1], s.rgba[2] });
+    attributes.structures.push_back({ s.report.label, s.report.name, s.rgba });
+    return attributes;
+  };
+  // Each structure's mesh is put in physical space and written to its own file side by side (each
+  // to its own slot and file, so nothing depends on the threads); a failure is the first structure's
+  // in label order, as when they were written one by one. The physical copy replaces the finished
+  // mesh, so no mesh is held twice.
+  std::vector<TriangleMesh> physical(structures.size());
+  parallelFor(structures.size(), outerThreads,
+              [&](std::size_t n)
+              {
+                Structure& s = structures[n];
+                if (!s.live())
+                  return;
+                physical[n] = guarded(WriteFailed, [&]
+                                      { return mapToPhysicalSpace(s.meshing.surface.mesh, s.frame(), settings.coordinateSystem); });
+                s.meshing.surface.mesh = TriangleMesh();
+                if (perLabel && !settings.multiLabel.outputDirectory.empty())
+                {
+                  s.report.path = (fs::path(settings.multiLabel.outputDirectory) /
+                                   labelFileName(s, width, output.extension().string())).string();
+                  guarded(WriteFailed, [&]
+                          { writeMesh(physical[n], settings.coordinateSystem, s.report.path, attributesOf(s, physical[n].triangles.size())); });
+                }
+              });
+  // The output model: the structures' meshes in label order, each appended and released in turn.
+  TriangleMesh merged;
+  MeshAttributes mergedAttributes;
+  std::vector<LabelReport> reports;
+  std::vector<MeshValidation> validations;
+  for (std::size_t n = 0; n < structures.size(); ++n)
+  {
+    Structure& s = structures[n];
     if (s.live())
     {
       const FinishedSurface& surface = s.meshing.surface;
@@ -364,23 +394,10 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
       if (!surface.fallback.empty())
         std::cerr << "SliceMesh: warning: " << who(s, noun) << "surface finishing: " << oneLine(surface.fallback)
                   << std::endl;
-      TriangleMesh physical = guarded(WriteFailed, [&]
-                           { return mapToPhysicalSpace(surface.mesh, s.frame(), settings.coordinateSystem); });
-      s.meshing.surface.mesh = TriangleMesh(); // its physical copy is what is written
       validations.push_back(surface.validation);
       if (perLabel)
       {
-        MeshAttributes attributes;
-        const std::array<unsigned char, 3> rgb{ s.rgba[0], s.rgba[1], s.rgba[2] };
-        attributes.cellLabels.assign(physical.triangles.size(), s.report.label);
-        attributes.cellColors.assign(physical.triangles.size(), rgb);
-        attributes.structures.push_back({ s.report.label, s.report.name, s.rgba });
-        if (!settings.multiLabel.outputDirectory.empty())
-        {
-          s.report.path = (fs::path(settings.multiLabel.outputDirectory) /
-                           labelFileName(s, width, output.extension().string())).string();
-          guarded(WriteFailed, [&] { writeMesh(physical, settings.coordinateSystem, s.report.path, attributes); });
-        }
+        const MeshAttributes attributes = attributesOf(s, physical[n].triangles.size());
         mergedAttributes.cellLabels.insert(mergedAttributes.cellLabels.end(), attributes.cellLabels.begin(),
                                            attributes.cellLabels.end());
         mergedAttributes.cellColors.insert(mergedAttributes.cellColors.end(), attributes.cellColors.begin(),
@@ -388,9 +405,10 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
         mergedAttributes.structures.push_back(attributes.structures.front());
       }
       if (merged.points.empty())
-        merged = std::move(physical); // the same as appending it to nothing, without a copy
+        merged = std::move(physical[n]); // the same as appending it to nothing, without a copy
       else
-        appendMesh(merged, physical);
+        appendMesh(merged, physical[n]);
+      physical[n] = TriangleMesh();
     }
     reports.push_back(s.report);
   }
@@ -401,20 +419,28 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
             << settings.minimumComponentVolume << " mm^3; nothing to mesh";
     throw PipelineFailure(EmptySegmentation, message.str());
   }
-  if (!merged.triangles.empty())
-    guarded(WriteFailed,
-            [&]
-            {
-              if (perLabel)
-                writeMesh(merged, settings.coordinateSystem, settings.outputModel, mergedAttributes);
-              else
-                writeMesh(merged, settings.coordinateSystem, settings.outputModel);
-            });
   // Neighbouring labels touch by design: each label's mesh is checked on its own, not against the others.
   result.validation = joinedValidation(validations, 0);
-  if (perLabel)
-    result.quality = combinedQuality(reports, result.validation, merged);
-  else
+  // The merged model is written while the whole model's triangle shapes are measured beside it.
+  parallelFor(2, threads,
+              [&](std::size_t task)
+              {
+                if (task == 0)
+                {
+                  if (!merged.triangles.empty())
+                    guarded(WriteFailed,
+                            [&]
+                            {
+                              if (perLabel)
+                                writeMesh(merged, settings.coordinateSystem, settings.outputModel, mergedAttributes);
+                              else
+                                writeMesh(merged, settings.coordinateSystem, settings.outputModel);
+                            });
+                }
+                else if (perLabel)
+                  result.quality = combinedQuality(reports, result.validation, merged);
+              });
+  if (!perLabel)
   {
     result.quality = structures.front().report.quality;
     result.validation = structures.front().report.validation;

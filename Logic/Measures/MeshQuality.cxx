@@ -90,10 +90,15 @@ MeshQuality measureMeshQuality(const TriangleMesh& mesh)
   q.fractionBelow30 = below30 / n;
   q.fractionBelow10 = below10 / n;
   q.meanAspectRatio = aspectSum / n;
-  std::sort(aspects.begin(), aspects.end());
-  q.medianAspectRatio = aspects[aspects.size() / 2];
-  q.p95AspectRatio = aspects[std::min(aspects.size() - 1, static_cast<std::size_t>(0.95 * n))];
-  q.maxAspectRatio = aspects.back();
+  // Three selections rather than a sort: the same order statistics in linear time.
+  const auto at = [&aspects](std::size_t rank)
+  {
+    std::nth_element(aspects.begin(), aspects.begin() + static_cast<std::ptrdiff_t>(rank), aspects.end());
+    return aspects[rank];
+  };
+  q.maxAspectRatio = at(aspects.size() - 1);
+  q.p95AspectRatio = at(std::min(aspects.size() - 1, static_cast<std::size_t>(0.95 * n)));
+  q.medianAspectRatio = at(aspects.size() / 2);
   return q;
 }
 

@@ -6,6 +6,7 @@
 #include <vtkExecutive.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkIntArray.h>
@@ -18,6 +19,7 @@
 #include <vtkSTLWriter.h>
 #include <vtkSmartPointer.h>
 #include <vtkStringArray.h>
+#include <vtkTypeInt32Array.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <algorithm>
@@ -61,24 +63,41 @@ std::string lowercaseExtension(const std::filesystem::path& path)
   return extension;
 }
 
-/** The mesh as vtkPolyData, with the SPACE string array in its field data (how Slicer tags .vtp). */
+/** The mesh as vtkPolyData, with the SPACE string array in its field data (how Slicer tags .vtp).
+ *  The arrays are filled in place, not point by point and cell by cell through VTK's insertion
+ *  calls; the triangles are stored with 32-bit indices (as the mesh holds them), which halves the
+ *  connectivity a .vtp file has to compress and write. */
 vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh, CoordinateSystem system)
 {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
-  for (std::size_t i = 0; i < mesh.points.size(); ++i)
+  vtkNew<vtkDoubleArray> coordinates;
+  coordinates->SetNumberOfComponents(3);
+  coordinates->SetNumberOfTuples(static_cast<vtkIdType>(mesh.points.size()));
+  double* xyz = coordinates->GetPointer(0);
+  for (const Point3& p : mesh.points)
   {
-    const Point3& p = mesh.points[i];
-    points->SetPoint(static_cast<vtkIdType>(i), p.x, p.y, p.z);
+    *xyz++ = p.x;
+    *xyz++ = p.y;
+    *xyz++ = p.z;
   }
-  vtkNew<vtkCellArray> polys;
-  polys->AllocateExact(static_cast<vtkIdType>(mesh.triangles.size()), 3 * static_cast<vtkIdType>(mesh.triangles.size()));
+  vtkNew<vtkPoints> points;
+  points->SetData(coordinates);
+  const std::size_t triangles = mesh.triangles.size(); // at most what 32-bit offsets hold (writeMesh)
+  vtkNew<vtkTypeInt32Array> offsets;
+  vtkNew<vtkTypeInt32Array> connectivity;
+  offsets->SetNumberOfValues(static_cast<vtkIdType>(triangles + 1));
+  connectivity->SetNumberOfValues(static_cast<vtkIdType>(3 * triangles));
+  std::int32_t* offset = offsets->GetPointer(0);
+  std::int32_t* corner = connectivity->GetPointer(0);
+  for (std::size_t t = 0; t <= triangles; ++t)
+    offset[t] = static_cast<std::int32_t>(3 * t);
   for (const Triangle& t : mesh.triangles)
   {
-    const vtkIdType ids[3] = { t[0], t[1], t[2] };
-    polys->InsertNextCell(3, ids);
+    *corner++ = t[0];
+    *corner++ = t[1];
+    *corner++ = t[2];
   }
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, connectivity);
   auto polyData = vtkSmartPointer<vtkPolyData>::New();
   polyData->SetPoints(points);
   polyData->SetPolys(polys);
@@ -324,6 +343,9 @@ void writeMesh(const TriangleMesh& physicalMesh, CoordinateSystem system, const 
   if ((!attributes.cellLabels.empty() && attributes.cellLabels.size() != triangles) ||
       (!attributes.cellColors.empty() && attributes.cellColors.size() != triangles))
     throw Error("cannot write mesh '" + path + "': the per-triangle labels or colours do not match the triangles");
+  if (3 * triangles > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+    throw Error("cannot write mesh '" + path + "': " + std::to_string(triangles) +
+                " triangles are more than a file's 32-bit indices can hold");
   const bool hasAttributes =
     !attributes.cellLabels.empty() || !attributes.cellColors.empty() || !attributes.structures.empty();
   namespace fs = std::filesystem;
