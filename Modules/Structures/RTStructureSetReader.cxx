@@ -1,6 +1,7 @@
 // DICOM RT Structure Sets through DCMTK's typed RT classes (dcmrt).
 #include "StructureSet.h"
 
+#include <dcmtk/dcmdata/dcbytstr.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
 #include <dcmtk/dcmrt/drtstrct.h>
 #include <dcmtk/oflog/oflog.h>
@@ -24,6 +25,26 @@ void quietDcmtk()
   }();
   (void)quiet;
 }
+
+/** Turns off DCMTK's character-by-character check of string values while it lives: dcmrt runs it on
+ *  every number of every contour as it reads them, which took most of the reading of a 50,000-point
+ *  structure set, to raise warnings that are not shown (quietDcmtk). A value that is no number is
+ *  still caught where the points are taken. The setting is put back as it was. */
+class StringValueCheckOff
+{
+public:
+  StringValueCheckOff()
+    : Before(dcmEnableVRCheckerForStringValues.get())
+  {
+    dcmEnableVRCheckerForStringValues.set(OFFalse);
+  }
+  ~StringValueCheckOff() { dcmEnableVRCheckerForStringValues.set(this->Before); }
+  StringValueCheckOff(const StringValueCheckOff&) = delete;
+  StringValueCheckOff& operator=(const StringValueCheckOff&) = delete;
+
+private:
+  const OFBool Before;
+};
 
 std::string trimmed(const OFString& text)
 {
@@ -61,6 +82,7 @@ StructureSet readRTStructureSet(const std::string& path)
     throw Error("'" + path + "' is not a DICOM RT Structure Set (Modality " +
                 (modality.empty() ? std::string("missing") : std::string(modality.c_str())) + ")");
   DRTStructureSetIOD iod;
+  const StringValueCheckOff unchecked;
   const OFCondition read = iod.read(dataset);
   if (read.bad())
     throw Error("cannot read the RT Structure Set '" + path + "': " + read.text());
