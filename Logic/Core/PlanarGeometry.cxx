@@ -95,7 +95,8 @@ double distanceToSegment(const Point2& p, const Point2& a, const Point2& b, doub
     t = std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / len2, 0.0, 1.0);
   if (tOut)
     *tOut = t;
-  return std::hypot(a.x + t * dx - p.x, a.y + t * dy - p.y);
+  const double ex = a.x + t * dx - p.x, ey = a.y + t * dy - p.y;
+  return std::sqrt(ex * ex + ey * ey);
 }
 
 Box2 boundingBox(const Polygon2& polygon)

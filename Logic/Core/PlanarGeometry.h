@@ -25,9 +25,12 @@ bool isInside(const Polygon2& polygon, const Point2& p);
 /** Distance from p to the segment ab, and the parameter t of the closest point. */
 double distanceToSegment(const Point2& p, const Point2& a, const Point2& b, double* t = nullptr);
 
+/** Distances here take the square root of the sum of squares, not std::hypot: coordinates are
+ *  millimetres, far from where squaring overflows, and hypot's guarding took 3-4% of a run. */
 inline double distance(const Point2& a, const Point2& b)
 {
-  return std::hypot(a.x - b.x, a.y - b.y);
+  const double dx = a.x - b.x, dy = a.y - b.y;
+  return std::sqrt(dx * dx + dy * dy);
 }
 
 struct Box2

@@ -33,7 +33,8 @@ public:
   {
     return m_Cells.anyIn(m_Cells.cellsWithin({ p.x, p.y }, radius), [&](int index) {
       const Point3& q = m_Points[index];
-      return std::hypot(p.x - q.x, p.y - q.y, p.z - q.z) < radius;
+      const double dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
+      return dx * dx + dy * dy + dz * dz < radius * radius;
     });
   }
   /** Adds p unless a point lies within radius of it; whether it did. */
@@ -72,8 +73,8 @@ bool SlabOverlay::Impl::insertSteiner(const Point2& p, double z, MeshBuilder& me
 {
   // Measured in 3D: a row point just above a contour in projection is fine, a point beside a contour
   // at that contour's own height makes a sliver.
-  if (clearance > 0.0 && (std::hypot(lowerNearest->distance(p), z - z0) < clearance ||
-                          std::hypot(upperNearest->distance(p), z1 - z) < clearance))
+  const auto within = [clearance](double flat, double dz) { return flat * flat + dz * dz < clearance * clearance; };
+  if (clearance > 0.0 && (within(lowerNearest->distance(p), z - z0) || within(upperNearest->distance(p), z1 - z)))
     return false;
   // Steiner points go strictly inside difference polygons: never on a contour edge, which the
   // neighbouring slab shares.
