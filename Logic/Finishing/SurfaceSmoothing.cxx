@@ -4,8 +4,10 @@
 #include "Core/BoundingBox.h"
 #include "Core/ParallelFor.h"
 #include "Measures/MeshComponents.h"
+#include "Measures/TriangleAngles.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -218,6 +220,74 @@ void tangentialStep(std::vector<Point3>& points, TriangleMesh& mesh, const std::
   points.swap(scratch);
 }
 
+/** `steps` more relaxation steps (as tangentialStep) for the vertices of the triangles that have an
+ *  angle under 30 degrees, and for their neighbours, within the bound. Rows as in tangentialStep;
+ *  `mesh` gives the triangles only. Worked on that patch alone, so that the cost follows the narrow
+ *  triangles (a few on most surfaces), not the mesh. */
+void relaxAroundNarrowTriangles(std::vector<Point3>& points, const TriangleMesh& mesh,
+                                const std::vector<std::int32_t>& rank, const VertexNeighbours& neighbours,
+                                const DisplacementBound& bound, int steps)
+{
+  if (steps <= 0)
+    return;
+  auto row = [&rank](std::int32_t v) { return static_cast<std::size_t>(rank[static_cast<std::size_t>(v)]); };
+  const double cos30 = std::sqrt(3.0) / 2.0;
+  std::vector<char> narrow(points.size(), 0);
+  for (const Triangle& t : mesh.triangles)
+    if (smallestAngleCosine(points[row(t[0])], points[row(t[1])], points[row(t[2])]) > cos30)
+      for (std::int32_t v : t)
+        narrow[row(v)] = 1;
+  std::vector<std::size_t> rows; // the narrow triangles' vertices and their neighbours
+  std::vector<char> moving = narrow;
+  for (std::size_t r = 0; r < narrow.size(); ++r)
+    if (narrow[r])
+      for (std::size_t k = neighbours.first[r]; k < neighbours.first[r + 1]; ++k)
+        moving[static_cast<std::size_t>(neighbours.ids[k])] = 1;
+  for (std::size_t r = 0; r < moving.size(); ++r)
+    if (moving[r])
+      rows.push_back(r);
+  if (rows.empty())
+    return;
+  std::vector<std::array<std::size_t, 3>> around; // every triangle of a moving vertex, by rows
+  for (const Triangle& t : mesh.triangles)
+  {
+    const std::array<std::size_t, 3> r{ row(t[0]), row(t[1]), row(t[2]) };
+    if (moving[r[0]] || moving[r[1]] || moving[r[2]])
+      around.push_back(r);
+  }
+  std::vector<Point3> normals(points.size());
+  std::vector<Point3> targets(rows.size());
+  for (int step = 0; step < steps; ++step)
+  {
+    for (std::size_t r : rows)
+      normals[r] = { 0.0, 0.0, 0.0 };
+    for (const auto& [a, b, c] : around)
+    {
+      const Point3 n = areaNormal(points[a], points[b], points[c]);
+      for (std::size_t r : { a, b, c })
+        if (moving[r])
+          normals[r] = { normals[r].x + n.x, normals[r].y + n.y, normals[r].z + n.z };
+    }
+    for (std::size_t i = 0; i < rows.size(); ++i)
+    {
+      const std::size_t r = rows[i];
+      Point3 n = normals[r];
+      const double length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+      if (length > 0.0)
+        n = { n.x / length, n.y / length, n.z / length };
+      const Point3 mean = neighbourMean(points, neighbours, r);
+      double dx = mean.x - points[r].x, dy = mean.y - points[r].y, dz = mean.z - points[r].z;
+      const double along = dx * n.x + dy * n.y + dz * n.z;
+      dx -= along * n.x;
+      dy -= along * n.y;
+      dz -= along * n.z;
+      targets[i] = bound.clamped({ points[r].x + 0.5 * dx, points[r].y + 0.5 * dy, points[r].z + 0.5 * dz }, r);
+    }
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      points[rows[i]] = targets[i];
+  }
+}
+
 /** Gives every component back the signed volume it had (`target`) by moving its vertices along their
  *  normals by one common distance (a few Newton steps: the volume grows by the area per unit of
  *  offset). Taubin's filter keeps large shapes, but shrinks a structure a few edges across, whose
@@ -298,6 +368,7 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
   // two thick) it crowds them: triangles it leaves with small angles, relaxed back along the surface.
   for (int i = 0; i < options.tangentialRelaxations; ++i)
     tangentialStep(points, mesh, order, neighbours, scratch, bound, threads);
+  relaxAroundNarrowTriangles(points, mesh, rank, neighbours, bound, options.narrowTriangleRelaxations);
   for (std::size_t i = 0; i < order.size(); ++i)
     mesh.points[static_cast<std::size_t>(order[i])] = points[i];
   // A component a few edges across has no shape below the pass band: the filter collapses it, and

@@ -27,11 +27,17 @@ struct SurfaceSmoothingOptions
    *  within its tangent plane, within the same bound): the filter crowds vertices where the surface
    *  folds sharply, and its triangles there get small angles. The shape moves only to second order. */
   int tangentialRelaxations = 3;
+  /** Further steps of the same relaxation for the vertices of the triangles that still have an angle
+   *  under 30 degrees and their neighbours only: where a thin structure folds sharply (a tract a
+   *  voxel thick) a few steps do not undo the crowding, and more over the whole surface would move
+   *  it everywhere. */
+  int narrowTriangleRelaxations = 30;
 };
 
 /** Smooths every vertex of the mesh: `iterations` pairs of p += lambda * L(p) and p += mu * L(p),
  *  where L(p) is the mean of p's neighbours minus p, each pair followed by the maxDisplacement
- *  clamp, and `tangentialRelaxations` steps along the surface (within the same clamp); then gives
+ *  clamp, `tangentialRelaxations` steps along the surface (within the same clamp) and
+ *  `narrowTriangleRelaxations` more for the vertices of narrow triangles only; then gives
  *  every connected component its signed
  *  volume back by one offset along the vertex normals (small structures, a few edges across, shrink
  *  under the filter). A component that lost half its volume or more (a speck the filter collapses)
