@@ -250,6 +250,31 @@ std::vector<char> trianglesNear(const TriangleMesh& mesh, const std::vector<Poin
 /** A remeshed piece smoothed, given its volume, and put back where smoothing made it cross; its
  *  vertices within keptRadius of `crossedOthers` (KeptPlaces: there its remesh kept the tiled
  *  triangles) are put back where the remesh left them, as tiled. */
+/** Vertices put back where they were before the smoothing (where two sheets met) undo its
+ *  relaxation around them too, and their triangles are the narrow ones it was for. Relaxed again
+ *  with those vertices kept (and, where that makes sheets meet, without the relaxation there), the
+ *  piece is kept so only if it crosses itself nowhere; `validation` (no crossings) is then the new
+ *  piece's. */
+void relaxBesidePutBack(TriangleMesh& mesh, const std::vector<Point3>& unsmoothed, MeshValidation& validation,
+                        const SurfaceFinishingOptions& options)
+{
+  std::vector<char> putBack(mesh.points.size(), 0);
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    putBack[v] = mesh.points[v].x == unsmoothed[v].x && mesh.points[v].y == unsmoothed[v].y &&
+                 mesh.points[v].z == unsmoothed[v].z;
+  TriangleMesh relaxed = mesh;
+  relaxNarrowTriangles(relaxed, unsmoothed, putBack, options.smoothing);
+  std::vector<std::pair<std::size_t, std::size_t>> crossings;
+  MeshValidation after = validateMesh(relaxed, crossings);
+  // Where the relaxation made sheets meet, its vertices go back to where they were before it.
+  unsmoothCrossings(relaxed, mesh.points, after, crossings);
+  if (after.selfIntersections == 0 && rejection(after, validation).empty())
+  {
+    mesh = std::move(relaxed);
+    validation = after;
+  }
+}
+
 FinishedPiece smoothedRemesh(TriangleMesh remeshed, const SurfaceFinishingOptions& options, double volume,
                              unsigned int threads, const std::vector<Point3>& crossedOthers = {})
 {
@@ -264,6 +289,8 @@ FinishedPiece smoothedRemesh(TriangleMesh remeshed, const SurfaceFinishingOption
   std::vector<std::pair<std::size_t, std::size_t>> crossings;
   MeshValidation validation = validateMesh(remeshed, crossings);
   unsmoothedVertices += unsmoothCrossings(remeshed, unsmoothed, validation, crossings);
+  if (unsmoothedVertices > 0 && validation.selfIntersections == 0)
+    relaxBesidePutBack(remeshed, unsmoothed, validation, options);
   return FinishedPiece{ std::move(remeshed), SurfaceFinish::Remeshed, {}, unsmoothedVertices, validation, 0, {},
                         std::move(crossings) };
 }

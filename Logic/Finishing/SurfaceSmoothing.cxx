@@ -226,7 +226,7 @@ void tangentialStep(std::vector<Point3>& points, TriangleMesh& mesh, const std::
  *  triangles (a few on most surfaces), not the mesh. */
 void relaxAroundNarrowTriangles(std::vector<Point3>& points, const TriangleMesh& mesh,
                                 const std::vector<std::int32_t>& rank, const VertexNeighbours& neighbours,
-                                const DisplacementBound& bound, int steps)
+                                const DisplacementBound& bound, int steps, const std::vector<char>& fixed = {})
 {
   if (steps <= 0)
     return;
@@ -244,8 +244,12 @@ void relaxAroundNarrowTriangles(std::vector<Point3>& points, const TriangleMesh&
       for (std::size_t k = neighbours.first[r]; k < neighbours.first[r + 1]; ++k)
         moving[static_cast<std::size_t>(neighbours.ids[k])] = 1;
   for (std::size_t r = 0; r < moving.size(); ++r)
+  {
+    if (!fixed.empty() && fixed[r])
+      moving[r] = 0;
     if (moving[r])
       rows.push_back(r);
+  }
   if (rows.empty())
     return;
   std::vector<std::array<std::size_t, 3>> around; // every triangle of a moving vertex, by rows
@@ -288,6 +292,15 @@ void relaxAroundNarrowTriangles(std::vector<Point3>& points, const TriangleMesh&
   }
 }
 
+/** The identity: vertex v is row v. */
+std::vector<std::int32_t> identityRank(std::size_t count)
+{
+  std::vector<std::int32_t> rank(count);
+  for (std::size_t v = 0; v < count; ++v)
+    rank[v] = static_cast<std::int32_t>(v);
+  return rank;
+}
+
 /** Gives every component back the signed volume it had (`target`) by moving its vertices along their
  *  normals by one common distance (a few Newton steps: the volume grows by the area per unit of
  *  offset). Taubin's filter keeps large shapes, but shrinks a structure a few edges across, whose
@@ -318,6 +331,19 @@ void restoreVolumes(TriangleMesh& mesh, const std::vector<std::size_t>& componen
 }
 
 } // namespace
+
+void relaxNarrowTriangles(TriangleMesh& mesh, const std::vector<Point3>& start, const std::vector<char>& fixed,
+                          const SurfaceSmoothingOptions& options)
+{
+  if (mesh.triangles.empty() || start.size() != mesh.points.size() || fixed.size() != mesh.points.size())
+    return;
+  const bool bounded = std::any_of(options.maxDisplacement.begin(), options.maxDisplacement.end(),
+                                   [](double axis) { return axis > 0.0; });
+  const DisplacementBound bound{ start, options.maxDisplacement, bounded };
+  const std::vector<std::int32_t> rank = identityRank(mesh.points.size());
+  relaxAroundNarrowTriangles(mesh.points, mesh, rank, neighboursOf(mesh, rank), bound,
+                             options.narrowTriangleRelaxations, fixed);
+}
 
 void offsetToVolume(TriangleMesh& mesh, double volume)
 {

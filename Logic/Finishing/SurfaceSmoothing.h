@@ -6,6 +6,7 @@
 #include "Core/SliceMeshTypes.h"
 
 #include <array>
+#include <vector>
 
 namespace slicemesh
 {
@@ -46,6 +47,13 @@ struct SurfaceSmoothingOptions
  *  not depend on the number.
  *  G. Taubin, "A signal processing approach to fair surface design", SIGGRAPH 1995. */
 void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, unsigned int threads = 1);
+
+/** Only the relaxation around narrow triangles of smoothSurface (options.narrowTriangleRelaxations
+ *  steps, options.maxDisplacement around `start`, one point per vertex), with the vertices flagged
+ *  in `fixed` kept where they are: for a smoothed surface some of whose vertices were put back where
+ *  they were before the smoothing. */
+void relaxNarrowTriangles(TriangleMesh& mesh, const std::vector<Point3>& start, const std::vector<char>& fixed,
+                          const SurfaceSmoothingOptions& options);
 
 /** Moves every vertex of a closed, consistently oriented mesh along its vertex normal by one common
  *  distance so that its signed volume becomes `volume` (a few Newton steps: the volume grows by the

@@ -3,7 +3,9 @@
 // Testing/Pipeline/SurfaceFinishingPhantomTest.cxx.
 #include "Contours/MarchingSquares.h"
 #include "Measures/MeshValidation.h"
+#include "Measures/TriangleAngles.h"
 #include "Finishing/SurfaceFinishing.h"
+#include "Finishing/SurfaceSmoothing.h"
 #include "Tiling/SurfaceReconstruction.h"
 
 #include <gtest/gtest.h>
@@ -599,6 +601,51 @@ TEST(SurfaceSmoothing, RelaxationAroundNarrowTrianglesOpensThemAndLeavesTheRestA
   std::printf("largest difference below the equator %.2g mm, in the cap %.2g mm\n", far, cap);
   EXPECT_LT(far, 1e-3);
   EXPECT_GT(cap, 0.05);
+}
+
+TEST(SurfaceSmoothing, RelaxingNarrowTrianglesKeepsTheFixedVerticesWhereTheyAre)
+{
+  // The crowded cap again (after one pair of the filter), every seventh of its vertices fixed, as
+  // vertices put back where two sheets met are: they do not move, the narrow triangles without a
+  // fixed corner open, no vertex leaves the bound around its start, and the surface stays valid.
+  TriangleMesh crowded = crowdedSphere(0.7, 6.0);
+  SurfaceSmoothingOptions filterOnly; // one pair: the crowded sphere as the filter leaves it, unfolded
+  filterOnly.iterations = 1;
+  filterOnly.tangentialRelaxations = 0;
+  filterOnly.narrowTriangleRelaxations = 0;
+  smoothSurface(crowded, filterOnly);
+  ASSERT_TRUE(validateMesh(crowded).valid());
+  std::vector<char> fixed(crowded.points.size(), 0);
+  for (std::size_t v = 0; v < crowded.points.size(); ++v)
+    fixed[v] = crowded.points[v].z > 6.0 && v % 7 == 0;
+  SurfaceSmoothingOptions options;
+  options.maxDisplacement = { 0.3, 0.3, 0.3 };
+  TriangleMesh relaxed = crowded;
+  relaxNarrowTriangles(relaxed, crowded.points, fixed, options);
+  auto narrowAwayFromFixed = [&fixed](const TriangleMesh& mesh)
+  {
+    std::size_t count = 0;
+    for (const Triangle& t : mesh.triangles)
+      if (!fixed[t[0]] && !fixed[t[1]] && !fixed[t[2]] &&
+          smallestAngle(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]) < 30.0 * M_PI / 180.0)
+        ++count;
+    return count;
+  };
+  std::printf("narrow triangles without a fixed corner: %zu -> %zu\n", narrowAwayFromFixed(crowded),
+              narrowAwayFromFixed(relaxed));
+  ASSERT_GT(narrowAwayFromFixed(crowded), 10u);
+  EXPECT_LT(narrowAwayFromFixed(relaxed), narrowAwayFromFixed(crowded) / 4);
+  for (std::size_t v = 0; v < crowded.points.size(); ++v)
+  {
+    const Point3 &p = relaxed.points[v], &q = crowded.points[v];
+    const double moved = std::sqrt((p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y) + (p.z - q.z) * (p.z - q.z));
+    if (fixed[v])
+      EXPECT_EQ(moved, 0.0);
+    else
+      EXPECT_LE(moved, 0.3 + 1e-12);
+  }
+  const MeshValidation v = validateMesh(relaxed);
+  EXPECT_TRUE(v.valid()) << v.summary();
 }
 
 TEST(SurfaceSmoothing, ASpeckTheFilterWouldCollapseKeepsItsShape)
