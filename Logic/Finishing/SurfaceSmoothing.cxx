@@ -191,6 +191,20 @@ std::vector<Point3> vertexNormals(const TriangleMesh& mesh)
   return normals;
 }
 
+/** Where one relaxation step takes row v: half way towards the mean of its neighbours, within its
+ *  tangent plane (unit normal n: the displacement's part along it removed), clamped to its bound. */
+Point3 relaxedPoint(const std::vector<Point3>& points, const VertexNeighbours& neighbours, std::size_t v, const Point3& n,
+                    const DisplacementBound& bound)
+{
+  const Point3 mean = neighbourMean(points, neighbours, v);
+  double dx = mean.x - points[v].x, dy = mean.y - points[v].y, dz = mean.z - points[v].z;
+  const double along = dx * n.x + dy * n.y + dz * n.z;
+  dx -= along * n.x;
+  dy -= along * n.y;
+  dz -= along * n.z;
+  return bound.clamped({ points[v].x + 0.5 * dx, points[v].y + 0.5 * dy, points[v].z + 0.5 * dz }, v);
+}
+
 /** One step of tangential relaxation: every vertex moves half way towards the mean of its neighbours,
  *  within its tangent plane (the displacement's part along the vertex normal removed), clamped to
  *  its bound. `points` and the neighbours are in the smoothing's order, `mesh` (its triangles, for
@@ -206,16 +220,7 @@ void tangentialStep(std::vector<Point3>& points, TriangleMesh& mesh, const std::
                     [&](std::size_t first, std::size_t last)
                     {
                       for (std::size_t v = first; v < last; ++v)
-                      {
-                        const Point3 mean = neighbourMean(points, neighbours, v);
-                        const Point3& n = normals[static_cast<std::size_t>(order[v])];
-                        double dx = mean.x - points[v].x, dy = mean.y - points[v].y, dz = mean.z - points[v].z;
-                        const double along = dx * n.x + dy * n.y + dz * n.z;
-                        dx -= along * n.x;
-                        dy -= along * n.y;
-                        dz -= along * n.z;
-                        scratch[v] = bound.clamped({ points[v].x + 0.5 * dx, points[v].y + 0.5 * dy, points[v].z + 0.5 * dz }, v);
-                      }
+                        scratch[v] = relaxedPoint(points, neighbours, v, normals[static_cast<std::size_t>(order[v])], bound);
                     });
   points.swap(scratch);
 }
@@ -279,13 +284,7 @@ void relaxAroundNarrowTriangles(std::vector<Point3>& points, const TriangleMesh&
       const double length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
       if (length > 0.0)
         n = { n.x / length, n.y / length, n.z / length };
-      const Point3 mean = neighbourMean(points, neighbours, r);
-      double dx = mean.x - points[r].x, dy = mean.y - points[r].y, dz = mean.z - points[r].z;
-      const double along = dx * n.x + dy * n.y + dz * n.z;
-      dx -= along * n.x;
-      dy -= along * n.y;
-      dz -= along * n.z;
-      targets[i] = bound.clamped({ points[r].x + 0.5 * dx, points[r].y + 0.5 * dy, points[r].z + 0.5 * dz }, r);
+      targets[i] = relaxedPoint(points, neighbours, r, n, bound);
     }
     for (std::size_t i = 0; i < rows.size(); ++i)
       points[rows[i]] = targets[i];

@@ -534,6 +534,16 @@ TriangleMesh crowdedSphere(double fraction, double above = -20.0)
   return crowded;
 }
 
+/** One pair of the filter and nothing after it (no relaxation). */
+SurfaceSmoothingOptions onePairOnly()
+{
+  SurfaceSmoothingOptions options;
+  options.iterations = 1;
+  options.tangentialRelaxations = 0;
+  options.narrowTriangleRelaxations = 0;
+  return options;
+}
+
 } // namespace
 
 TEST(SurfaceSmoothing, TangentialRelaxationUncrowdsVerticesAlongTheSurface)
@@ -542,10 +552,7 @@ TEST(SurfaceSmoothing, TangentialRelaxationUncrowdsVerticesAlongTheSurface)
   // the filter alone leaves some small angles (measured 0.2% under 30 degrees); three relaxation
   // steps after it leave fewer (none), with the shape no farther from the sphere.
   const TriangleMesh crowded = crowdedSphere(1.0 / 3.0);
-  SurfaceSmoothingOptions filterOnly;
-  filterOnly.iterations = 1;
-  filterOnly.tangentialRelaxations = 0;
-  filterOnly.narrowTriangleRelaxations = 0;
+  const SurfaceSmoothingOptions filterOnly = onePairOnly();
   SurfaceSmoothingOptions relaxed = filterOnly;
   relaxed.tangentialRelaxations = 3;
   TriangleMesh a = crowded, b = crowded;
@@ -569,10 +576,7 @@ TEST(SurfaceSmoothing, RelaxationAroundNarrowTrianglesOpensThemAndLeavesTheRestA
   // 30 degrees and 12.8 degrees at the smallest before, 0.04% and 28.1 degrees after) and moves no
   // vertex far from the cap; the shape stays as close to the sphere and keeps its volume.
   const TriangleMesh crowded = crowdedSphere(0.7, 6.0);
-  SurfaceSmoothingOptions without;
-  without.iterations = 1;
-  without.tangentialRelaxations = 0;
-  without.narrowTriangleRelaxations = 0;
+  SurfaceSmoothingOptions without = onePairOnly();
   without.maxDisplacement = { 0.3, 0.3, 0.3 };
   SurfaceSmoothingOptions with = without;
   with.narrowTriangleRelaxations = 30;
@@ -609,11 +613,7 @@ TEST(SurfaceSmoothing, RelaxingNarrowTrianglesKeepsTheFixedVerticesWhereTheyAre)
   // vertices put back where two sheets met are: they do not move, the narrow triangles without a
   // fixed corner open, no vertex leaves the bound around its start, and the surface stays valid.
   TriangleMesh crowded = crowdedSphere(0.7, 6.0);
-  SurfaceSmoothingOptions filterOnly; // one pair: the crowded sphere as the filter leaves it, unfolded
-  filterOnly.iterations = 1;
-  filterOnly.tangentialRelaxations = 0;
-  filterOnly.narrowTriangleRelaxations = 0;
-  smoothSurface(crowded, filterOnly);
+  smoothSurface(crowded, onePairOnly()); // the crowded sphere as the filter leaves it, unfolded
   ASSERT_TRUE(validateMesh(crowded).valid());
   std::vector<char> fixed(crowded.points.size(), 0);
   for (std::size_t v = 0; v < crowded.points.size(); ++v)
