@@ -205,10 +205,9 @@ FinishedPiece keptAsTiled(const TriangleMesh& piece, const MeshValidation& tiled
 }
 
 /** How far from a place where a remesh crossed the tiled triangles are kept: one target edge, so
- *  that the remeshed triangles around them, an edge long, stay clear of the crossing. (Two kept
- *  2.4 times as many tiled triangles on natbrainlab, whose narrow angles were most of what its
- *  finished surface had under 30 degrees, and took longer: remeshes around the crossings failed
- *  and were tried again no less often.) */
+ *  that the remeshed triangles around them, an edge long, stay clear of the crossing. No farther:
+ *  each tiled triangle kept is one the remesh does not even out, and their narrow angles were most
+ *  of what a tract atlas's finished surface had under 30 degrees. */
 double keptRadius(const SurfaceFinishingOptions& options)
 {
   return options.remeshing.targetEdgeLength;
