@@ -246,9 +246,6 @@ std::vector<char> trianglesNear(const TriangleMesh& mesh, const std::vector<Poin
   return flagged;
 }
 
-/** A remeshed piece smoothed, given its volume, and put back where smoothing made it cross; its
- *  vertices within keptRadius of `crossedOthers` (KeptPlaces: there its remesh kept the tiled
- *  triangles) are put back where the remesh left them, as tiled. */
 /** Vertices put back where they were before the smoothing (where two sheets met) undo its
  *  relaxation around them too, and their triangles are the narrow ones it was for. Relaxed again
  *  with those vertices kept (and, where that makes sheets meet, without the relaxation there), the
@@ -274,6 +271,9 @@ void relaxBesidePutBack(TriangleMesh& mesh, const std::vector<Point3>& unsmoothe
   }
 }
 
+/** A remeshed piece smoothed, given its volume, and put back where smoothing made it cross; its
+ *  vertices within keptRadius of `crossedOthers` (KeptPlaces: there its remesh kept the tiled
+ *  triangles) are put back where the remesh left them, as tiled. */
 FinishedPiece smoothedRemesh(TriangleMesh remeshed, const SurfaceFinishingOptions& options, double volume,
                              unsigned int threads, const std::vector<Point3>& crossedOthers = {})
 {
