@@ -259,7 +259,8 @@ void relaxBesidePutBack(TriangleMesh& mesh, const std::vector<Point3>& unsmoothe
     putBack[v] = mesh.points[v].x == unsmoothed[v].x && mesh.points[v].y == unsmoothed[v].y &&
                  mesh.points[v].z == unsmoothed[v].z;
   TriangleMesh relaxed = mesh;
-  relaxNarrowTriangles(relaxed, unsmoothed, putBack, options.smoothing);
+  if (!relaxNarrowTriangles(relaxed, unsmoothed, putBack, options.smoothing))
+    return; // nothing narrow beside them: the piece as it is, already validated
   std::vector<std::pair<std::size_t, std::size_t>> crossings;
   MeshValidation after = validateMesh(relaxed, crossings);
   // Where the relaxation made sheets meet, its vertices go back to where they were before it.

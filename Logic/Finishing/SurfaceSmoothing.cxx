@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <vector>
 
 namespace slicemesh
@@ -168,6 +169,13 @@ void measureComponents(const TriangleMesh& mesh, const std::vector<std::size_t>&
   }
 }
 
+/** n scaled to unit length; a zero vector stays zero. */
+Point3 unitOrZero(const Point3& n)
+{
+  const double length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+  return length > 0.0 ? Point3{ n.x / length, n.y / length, n.z / length } : n;
+}
+
 /** Unit vertex normals: the sum of the area-weighted normals of the vertex's triangles. */
 std::vector<Point3> vertexNormals(const TriangleMesh& mesh)
 {
@@ -183,11 +191,7 @@ std::vector<Point3> vertexNormals(const TriangleMesh& mesh)
     }
   }
   for (Point3& n : normals)
-  {
-    const double length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-    if (length > 0.0)
-      n = { n.x / length, n.y / length, n.z / length };
-  }
+    n = unitOrZero(n);
   return normals;
 }
 
@@ -228,13 +232,13 @@ void tangentialStep(std::vector<Point3>& points, TriangleMesh& mesh, const std::
 /** `steps` more relaxation steps (as tangentialStep) for the vertices of the triangles that have an
  *  angle under 30 degrees, and for their neighbours, within the bound. Rows as in tangentialStep;
  *  `mesh` gives the triangles only. Worked on that patch alone, so that the cost follows the narrow
- *  triangles (a few on most surfaces), not the mesh. */
-void relaxAroundNarrowTriangles(std::vector<Point3>& points, const TriangleMesh& mesh,
+ *  triangles (a few on most surfaces), not the mesh. Whether there was any vertex to relax. */
+bool relaxAroundNarrowTriangles(std::vector<Point3>& points, const TriangleMesh& mesh,
                                 const std::vector<std::int32_t>& rank, const VertexNeighbours& neighbours,
                                 const DisplacementBound& bound, int steps, const std::vector<char>& fixed = {})
 {
   if (steps <= 0)
-    return;
+    return false;
   auto row = [&rank](std::int32_t v) { return static_cast<std::size_t>(rank[static_cast<std::size_t>(v)]); };
   const double cos30 = std::sqrt(3.0) / 2.0;
   std::vector<char> narrow(points.size(), 0);
@@ -256,7 +260,7 @@ void relaxAroundNarrowTriangles(std::vector<Point3>& points, const TriangleMesh&
       rows.push_back(r);
   }
   if (rows.empty())
-    return;
+    return false;
   std::vector<std::array<std::size_t, 3>> around; // every triangle of a moving vertex, by rows
   for (const Triangle& t : mesh.triangles)
   {
@@ -278,26 +282,11 @@ void relaxAroundNarrowTriangles(std::vector<Point3>& points, const TriangleMesh&
           normals[r] = { normals[r].x + n.x, normals[r].y + n.y, normals[r].z + n.z };
     }
     for (std::size_t i = 0; i < rows.size(); ++i)
-    {
-      const std::size_t r = rows[i];
-      Point3 n = normals[r];
-      const double length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-      if (length > 0.0)
-        n = { n.x / length, n.y / length, n.z / length };
-      targets[i] = relaxedPoint(points, neighbours, r, n, bound);
-    }
+      targets[i] = relaxedPoint(points, neighbours, rows[i], unitOrZero(normals[rows[i]]), bound);
     for (std::size_t i = 0; i < rows.size(); ++i)
       points[rows[i]] = targets[i];
   }
-}
-
-/** The identity: vertex v is row v. */
-std::vector<std::int32_t> identityRank(std::size_t count)
-{
-  std::vector<std::int32_t> rank(count);
-  for (std::size_t v = 0; v < count; ++v)
-    rank[v] = static_cast<std::int32_t>(v);
-  return rank;
+  return true;
 }
 
 /** Gives every component back the signed volume it had (`target`) by moving its vertices along their
@@ -331,17 +320,18 @@ void restoreVolumes(TriangleMesh& mesh, const std::vector<std::size_t>& componen
 
 } // namespace
 
-void relaxNarrowTriangles(TriangleMesh& mesh, const std::vector<Point3>& start, const std::vector<char>& fixed,
+bool relaxNarrowTriangles(TriangleMesh& mesh, const std::vector<Point3>& start, const std::vector<char>& fixed,
                           const SurfaceSmoothingOptions& options)
 {
   if (mesh.triangles.empty() || start.size() != mesh.points.size() || fixed.size() != mesh.points.size())
-    return;
+    return false;
   const bool bounded = std::any_of(options.maxDisplacement.begin(), options.maxDisplacement.end(),
                                    [](double axis) { return axis > 0.0; });
   const DisplacementBound bound{ start, options.maxDisplacement, bounded };
-  const std::vector<std::int32_t> rank = identityRank(mesh.points.size());
-  relaxAroundNarrowTriangles(mesh.points, mesh, rank, neighboursOf(mesh, rank), bound,
-                             options.narrowTriangleRelaxations, fixed);
+  std::vector<std::int32_t> rank(mesh.points.size()); // the mesh's own order: vertex v is row v
+  std::iota(rank.begin(), rank.end(), 0);
+  return relaxAroundNarrowTriangles(mesh.points, mesh, rank, neighboursOf(mesh, rank), bound,
+                                    options.narrowTriangleRelaxations, fixed);
 }
 
 void offsetToVolume(TriangleMesh& mesh, double volume)

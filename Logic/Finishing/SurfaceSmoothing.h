@@ -51,8 +51,8 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
 /** Only the relaxation around narrow triangles of smoothSurface (options.narrowTriangleRelaxations
  *  steps, options.maxDisplacement around `start`, one point per vertex), with the vertices flagged
  *  in `fixed` kept where they are: for a smoothed surface some of whose vertices were put back where
- *  they were before the smoothing. */
-void relaxNarrowTriangles(TriangleMesh& mesh, const std::vector<Point3>& start, const std::vector<char>& fixed,
+ *  they were before the smoothing. Returns whether any vertex was relaxed (false: mesh untouched). */
+bool relaxNarrowTriangles(TriangleMesh& mesh, const std::vector<Point3>& start, const std::vector<char>& fixed,
                           const SurfaceSmoothingOptions& options);
 
 /** Moves every vertex of a closed, consistently oriented mesh along its vertex normal by one common
