@@ -25,31 +25,54 @@ struct VertexNeighbours
   std::vector<std::int32_t> ids;
 };
 
-/** The neighbours of every vertex, numbered by `rank` (the vertex's place in the smoothing's order). */
-VertexNeighbours neighboursOf(const TriangleMesh& mesh, const std::vector<std::int32_t>& rank)
+/** The neighbours of every vertex, numbered by `rank` (the vertex's place in the smoothing's order),
+ *  in increasing order. Each corner of a triangle has the two others for neighbours: they are
+ *  counted and placed per vertex, then each vertex's few are sorted and made unique, the vertices
+ *  side by side on `threads` threads. (One sort of every edge of the mesh ran on one thread while
+ *  the other waited.) */
+VertexNeighbours neighboursOf(const TriangleMesh& mesh, const std::vector<std::int32_t>& rank, unsigned int threads)
 {
-  std::vector<std::pair<std::int32_t, std::int32_t>> edges;
-  edges.reserve(mesh.triangles.size() * 6);
+  const std::size_t vertices = mesh.points.size();
+  std::vector<std::size_t> start(vertices + 1, 0);
   for (const Triangle& t : mesh.triangles)
-    for (int corner = 0; corner < 3; ++corner)
-    {
-      const std::int32_t a = rank[static_cast<std::size_t>(t[corner])];
-      const std::int32_t b = rank[static_cast<std::size_t>(t[(corner + 1) % 3])];
-      edges.emplace_back(a, b);
-      edges.emplace_back(b, a);
-    }
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  VertexNeighbours neighbours;
-  neighbours.first.assign(mesh.points.size() + 1, 0);
-  neighbours.ids.reserve(edges.size());
-  for (const auto& [from, to] : edges)
+    for (std::int32_t corner : t)
+      start[static_cast<std::size_t>(rank[static_cast<std::size_t>(corner)]) + 1] += 2;
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<std::int32_t> around(start[vertices]);
   {
-    ++neighbours.first[static_cast<std::size_t>(from) + 1];
-    neighbours.ids.push_back(to);
+    std::vector<std::size_t> next(start.begin(), start.end() - 1);
+    for (const Triangle& t : mesh.triangles)
+      for (int corner = 0; corner < 3; ++corner)
+      {
+        std::size_t& at = next[static_cast<std::size_t>(rank[static_cast<std::size_t>(t[corner])])];
+        around[at++] = rank[static_cast<std::size_t>(t[(corner + 1) % 3])];
+        around[at++] = rank[static_cast<std::size_t>(t[(corner + 2) % 3])];
+      }
   }
-  for (std::size_t v = 0; v < mesh.points.size(); ++v)
-    neighbours.first[v + 1] += neighbours.first[v];
+  std::vector<std::size_t> distinct(vertices, 0);
+  parallelForRanges(vertices, threads,
+                    [&](std::size_t first, std::size_t last)
+                    {
+                      for (std::size_t v = first; v < last; ++v)
+                      {
+                        const auto from = around.begin() + static_cast<std::ptrdiff_t>(start[v]);
+                        const auto to = around.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
+                        std::sort(from, to);
+                        distinct[v] = static_cast<std::size_t>(std::unique(from, to) - from);
+                      }
+                    });
+  VertexNeighbours neighbours;
+  neighbours.first.assign(vertices + 1, 0);
+  for (std::size_t v = 0; v < vertices; ++v)
+    neighbours.first[v + 1] = neighbours.first[v] + distinct[v];
+  neighbours.ids.resize(neighbours.first[vertices]);
+  parallelForRanges(vertices, threads,
+                    [&](std::size_t first, std::size_t last)
+                    {
+                      for (std::size_t v = first; v < last; ++v)
+                        std::copy_n(around.begin() + static_cast<std::ptrdiff_t>(start[v]), distinct[v],
+                                    neighbours.ids.begin() + static_cast<std::ptrdiff_t>(neighbours.first[v]));
+                    });
   return neighbours;
 }
 
@@ -209,22 +232,54 @@ Point3 relaxedPoint(const std::vector<Point3>& points, const VertexNeighbours& n
   return bound.clamped({ points[v].x + 0.5 * dx, points[v].y + 0.5 * dy, points[v].z + 0.5 * dz }, v);
 }
 
+/** The triangles around every row of the smoothing's order, in compressed rows: those of row i are
+ *  ids[first[i]] .. ids[first[i + 1]] - 1, in increasing order. */
+struct RowTriangles
+{
+  std::vector<std::size_t> first;
+  std::vector<std::size_t> ids;
+};
+
+RowTriangles trianglesOfRows(const TriangleMesh& mesh, const std::vector<std::int32_t>& rank)
+{
+  RowTriangles rows;
+  rows.first.assign(rank.size() + 1, 0);
+  for (const Triangle& t : mesh.triangles)
+    for (std::int32_t v : t)
+      ++rows.first[static_cast<std::size_t>(rank[static_cast<std::size_t>(v)]) + 1];
+  std::partial_sum(rows.first.begin(), rows.first.end(), rows.first.begin());
+  rows.ids.resize(rows.first.back());
+  std::vector<std::size_t> next(rows.first.begin(), rows.first.end() - 1);
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    for (std::int32_t v : mesh.triangles[f])
+      rows.ids[next[static_cast<std::size_t>(rank[static_cast<std::size_t>(v)])]++] = f;
+  return rows;
+}
+
 /** One step of tangential relaxation: every vertex moves half way towards the mean of its neighbours,
  *  within its tangent plane (the displacement's part along the vertex normal removed), clamped to
- *  its bound. `points` and the neighbours are in the smoothing's order, `mesh` (its triangles, for
- *  the normals) in the mesh's own; `order[i]` is the mesh's vertex for row i. */
-void tangentialStep(std::vector<Point3>& points, TriangleMesh& mesh, const std::vector<std::int32_t>& order,
-                    const VertexNeighbours& neighbours, std::vector<Point3>& scratch, const DisplacementBound& bound,
-                    unsigned int threads)
+ *  its bound. `points` and the neighbours are in the smoothing's order (`rank[v]` is vertex v's
+ *  row), `mesh` gives the triangles; each row's normal is the sum of its triangles' area normals,
+ *  taken row by row so that the rows run side by side. */
+void tangentialStep(std::vector<Point3>& points, const TriangleMesh& mesh, const std::vector<std::int32_t>& rank,
+                    const RowTriangles& around, const VertexNeighbours& neighbours, std::vector<Point3>& scratch,
+                    const DisplacementBound& bound, unsigned int threads)
 {
-  for (std::size_t i = 0; i < order.size(); ++i)
-    mesh.points[static_cast<std::size_t>(order[i])] = points[i];
-  const std::vector<Point3> normals = vertexNormals(mesh);
+  auto at = [&](std::int32_t v) -> const Point3& { return points[static_cast<std::size_t>(rank[static_cast<std::size_t>(v)])]; };
   parallelForRanges(points.size(), threads,
                     [&](std::size_t first, std::size_t last)
                     {
                       for (std::size_t v = first; v < last; ++v)
-                        scratch[v] = relaxedPoint(points, neighbours, v, normals[static_cast<std::size_t>(order[v])], bound);
+                      {
+                        Point3 normal{ 0.0, 0.0, 0.0 };
+                        for (std::size_t k = around.first[v]; k < around.first[v + 1]; ++k)
+                        {
+                          const Triangle& t = mesh.triangles[around.ids[k]];
+                          const Point3 n = areaNormal(at(t[0]), at(t[1]), at(t[2]));
+                          normal = { normal.x + n.x, normal.y + n.y, normal.z + n.z };
+                        }
+                        scratch[v] = relaxedPoint(points, neighbours, v, unitOrZero(normal), bound);
+                      }
                     });
   points.swap(scratch);
 }
@@ -232,19 +287,33 @@ void tangentialStep(std::vector<Point3>& points, TriangleMesh& mesh, const std::
 /** `steps` more relaxation steps (as tangentialStep) for the vertices of the triangles that have an
  *  angle under 30 degrees, and for their neighbours, within the bound. Rows as in tangentialStep;
  *  `mesh` gives the triangles only. Worked on that patch alone, so that the cost follows the narrow
- *  triangles (a few on most surfaces), not the mesh. Whether there was any vertex to relax. */
+ *  triangles (a few on most surfaces), not the mesh; its rows side by side on `threads` threads,
+ *  each row's normal summed over its own triangles in one order, so the result does not depend on
+ *  the number. Whether there was any vertex to relax. */
 bool relaxAroundNarrowTriangles(std::vector<Point3>& points, const TriangleMesh& mesh,
                                 const std::vector<std::int32_t>& rank, const VertexNeighbours& neighbours,
-                                const DisplacementBound& bound, int steps, const std::vector<char>& fixed = {})
+                                const DisplacementBound& bound, int steps, unsigned int threads,
+                                const std::vector<char>& fixed = {})
 {
   if (steps <= 0)
     return false;
   auto row = [&rank](std::int32_t v) { return static_cast<std::size_t>(rank[static_cast<std::size_t>(v)]); };
   const double cos30 = std::sqrt(3.0) / 2.0;
+  std::vector<char> narrowTriangle(mesh.triangles.size(), 0);
+  parallelForRanges(mesh.triangles.size(), threads,
+                    [&](std::size_t first, std::size_t last)
+                    {
+                      for (std::size_t f = first; f < last; ++f)
+                      {
+                        const Triangle& t = mesh.triangles[f];
+                        narrowTriangle[f] =
+                          smallestAngleCosine(points[row(t[0])], points[row(t[1])], points[row(t[2])]) > cos30;
+                      }
+                    });
   std::vector<char> narrow(points.size(), 0);
-  for (const Triangle& t : mesh.triangles)
-    if (smallestAngleCosine(points[row(t[0])], points[row(t[1])], points[row(t[2])]) > cos30)
-      for (std::int32_t v : t)
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    if (narrowTriangle[f])
+      for (std::int32_t v : mesh.triangles[f])
         narrow[row(v)] = 1;
   std::vector<std::size_t> rows; // the narrow triangles' vertices and their neighbours
   std::vector<char> moving = narrow;
@@ -252,37 +321,56 @@ bool relaxAroundNarrowTriangles(std::vector<Point3>& points, const TriangleMesh&
     if (narrow[r])
       for (std::size_t k = neighbours.first[r]; k < neighbours.first[r + 1]; ++k)
         moving[static_cast<std::size_t>(neighbours.ids[k])] = 1;
+  std::vector<std::size_t> slot(points.size(), 0); // a moving row's place in `rows`
   for (std::size_t r = 0; r < moving.size(); ++r)
   {
     if (!fixed.empty() && fixed[r])
       moving[r] = 0;
     if (moving[r])
+    {
+      slot[r] = rows.size();
       rows.push_back(r);
+    }
   }
   if (rows.empty())
     return false;
-  std::vector<std::array<std::size_t, 3>> around; // every triangle of a moving vertex, by rows
+  // Every triangle of each moving row, by rows, in the mesh's order (compressed rows).
+  std::vector<std::size_t> firstAround(rows.size() + 1, 0);
   for (const Triangle& t : mesh.triangles)
+    for (std::int32_t v : t)
+      if (moving[row(v)])
+        ++firstAround[slot[row(v)] + 1];
+  std::partial_sum(firstAround.begin(), firstAround.end(), firstAround.begin());
+  std::vector<std::array<std::size_t, 3>> around(firstAround.back());
   {
-    const std::array<std::size_t, 3> r{ row(t[0]), row(t[1]), row(t[2]) };
-    if (moving[r[0]] || moving[r[1]] || moving[r[2]])
-      around.push_back(r);
+    std::vector<std::size_t> next(firstAround.begin(), firstAround.end() - 1);
+    for (const Triangle& t : mesh.triangles)
+    {
+      const std::array<std::size_t, 3> r{ row(t[0]), row(t[1]), row(t[2]) };
+      for (std::size_t corner : r)
+        if (moving[corner])
+          around[next[slot[corner]]++] = r;
+    }
   }
-  std::vector<Point3> normals(points.size());
   std::vector<Point3> targets(rows.size());
   for (int step = 0; step < steps; ++step)
   {
-    for (std::size_t r : rows)
-      normals[r] = { 0.0, 0.0, 0.0 };
-    for (const auto& [a, b, c] : around)
-    {
-      const Point3 n = areaNormal(points[a], points[b], points[c]);
-      for (std::size_t r : { a, b, c })
-        if (moving[r])
-          normals[r] = { normals[r].x + n.x, normals[r].y + n.y, normals[r].z + n.z };
-    }
-    for (std::size_t i = 0; i < rows.size(); ++i)
-      targets[i] = relaxedPoint(points, neighbours, rows[i], unitOrZero(normals[rows[i]]), bound);
+    parallelForRanges(rows.size(), threads,
+                      [&](std::size_t first, std::size_t last)
+                      {
+                        for (std::size_t i = first; i < last; ++i)
+                        {
+                          Point3 normal{ 0.0, 0.0, 0.0 };
+                          for (std::size_t k = firstAround[i]; k < firstAround[i + 1]; ++k)
+                          {
+                            const auto& [a, b, c] = around[k];
+                            const Point3 n = areaNormal(points[a], points[b], points[c]);
+                            normal = { normal.x + n.x, normal.y + n.y, normal.z + n.z };
+                          }
+                          targets[i] = relaxedPoint(points, neighbours, rows[i], unitOrZero(normal), bound);
+                        }
+                      },
+                      1024);
     for (std::size_t i = 0; i < rows.size(); ++i)
       points[rows[i]] = targets[i];
   }
@@ -330,8 +418,8 @@ bool relaxNarrowTriangles(TriangleMesh& mesh, const std::vector<Point3>& start, 
   const DisplacementBound bound{ start, options.maxDisplacement, bounded };
   std::vector<std::int32_t> rank(mesh.points.size()); // the mesh's own order: vertex v is row v
   std::iota(rank.begin(), rank.end(), 0);
-  return relaxAroundNarrowTriangles(mesh.points, mesh, rank, neighboursOf(mesh, rank), bound,
-                                    options.narrowTriangleRelaxations, fixed);
+  return relaxAroundNarrowTriangles(mesh.points, mesh, rank, neighboursOf(mesh, rank, 1), bound,
+                                    options.narrowTriangleRelaxations, 1, fixed);
 }
 
 void offsetToVolume(TriangleMesh& mesh, double volume)
@@ -367,7 +455,7 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
   std::vector<std::int32_t> rank(order.size());
   for (std::size_t i = 0; i < order.size(); ++i)
     rank[static_cast<std::size_t>(order[i])] = static_cast<std::int32_t>(i);
-  const VertexNeighbours neighbours = neighboursOf(mesh, rank);
+  const VertexNeighbours neighbours = neighboursOf(mesh, rank, threads);
   std::vector<Point3> start(order.size());
   for (std::size_t i = 0; i < order.size(); ++i)
     start[i] = mesh.points[static_cast<std::size_t>(order[i])];
@@ -381,9 +469,13 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
   }
   // The filter moves vertices along the surface too, and where it folds sharply (a tract a voxel or
   // two thick) it crowds them: triangles it leaves with small angles, relaxed back along the surface.
-  for (int i = 0; i < options.tangentialRelaxations; ++i)
-    tangentialStep(points, mesh, order, neighbours, scratch, bound, threads);
-  relaxAroundNarrowTriangles(points, mesh, rank, neighbours, bound, options.narrowTriangleRelaxations);
+  if (options.tangentialRelaxations > 0)
+  {
+    const RowTriangles around = trianglesOfRows(mesh, rank);
+    for (int i = 0; i < options.tangentialRelaxations; ++i)
+      tangentialStep(points, mesh, rank, around, neighbours, scratch, bound, threads);
+  }
+  relaxAroundNarrowTriangles(points, mesh, rank, neighbours, bound, options.narrowTriangleRelaxations, threads);
   for (std::size_t i = 0; i < order.size(); ++i)
     mesh.points[static_cast<std::size_t>(order[i])] = points[i];
   // A component a few edges across has no shape below the pass band: the filter collapses it, and

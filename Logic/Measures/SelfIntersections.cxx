@@ -134,45 +134,94 @@ bool crossing(const TriangleMesh& mesh, std::size_t a, std::size_t b)
 std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(const TriangleMesh& mesh,
                                                                                unsigned int threads)
 {
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  // Every step runs on ranges of triangles or cells side by side: on one thread, building the grid
+  // took as long as testing the pairs on two.
+  const std::size_t nTriangles = mesh.triangles.size();
+  std::vector<BoundingBox> boxes(nTriangles);
+  std::vector<char> degenerate(nTriangles, 0);
+  parallelForRanges(nTriangles, threads,
+                    [&](std::size_t first, std::size_t last)
+                    {
+                      for (std::size_t t = first; t < last; ++t)
+                      {
+                        const Triangle& triangle = mesh.triangles[t];
+                        degenerate[t] = CGAL::collinear(corner(mesh, triangle[0]), corner(mesh, triangle[1]),
+                                                        corner(mesh, triangle[2]));
+                        boxes[t] = boxOfTriangle(mesh, t);
+                      }
+                    });
   // Degenerate triangles are reported with themselves and left out of the boxes (as CGAL does).
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
   std::vector<std::uint32_t> boxed;
-  std::vector<BoundingBox> boxes;
   BoundingBox all;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-  {
-    const Triangle& triangle = mesh.triangles[t];
-    if (CGAL::collinear(corner(mesh, triangle[0]), corner(mesh, triangle[1]), corner(mesh, triangle[2])))
-    {
+  for (std::size_t t = 0; t < nTriangles; ++t)
+    if (degenerate[t])
       pairs.emplace_back(t, t);
-      continue;
+    else
+    {
+      boxes[boxed.size()] = boxes[t];
+      all.add(boxes[t]);
+      boxed.push_back(static_cast<std::uint32_t>(t));
     }
-    boxes.push_back(boxOfTriangle(mesh, t));
-    all.add(boxes.back());
-    boxed.push_back(static_cast<std::uint32_t>(t));
-  }
+  boxes.resize(boxed.size());
   if (boxes.size() < 2)
     return pairs;
 
-  // Every box in every cell it covers, grouped by cell.
+  // Every box in every cell it covers, grouped by cell: the entries are dealt into a fixed number of
+  // bins by their cell, each bin sorted on its own. Which bin a cell falls in does not matter, since
+  // the pairs found are sorted at the end.
   const CellGrid grid = gridFor(boxes, all);
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;
-  entries.reserve(2 * boxes.size());
-  for (std::size_t b = 0; b < boxes.size(); ++b)
+  constexpr std::size_t bins = 256;
+  auto binOf = [](std::uint64_t key) { return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 56); };
+  auto forEachCell = [&grid](const BoundingBox& box, auto&& visit)
   {
-    const auto from = grid.cellOf(boxes[b].low), to = grid.cellOf(boxes[b].high);
+    const auto from = grid.cellOf(box.low), to = grid.cellOf(box.high);
     for (std::uint64_t x = from[0]; x <= to[0]; ++x)
       for (std::uint64_t y = from[1]; y <= to[1]; ++y)
         for (std::uint64_t z = from[2]; z <= to[2]; ++z)
-          entries.emplace_back(CellGrid::key(x, y, z), static_cast<std::uint32_t>(b));
+          visit(CellGrid::key(x, y, z));
+  };
+  // Ranges of boxes fixed by the count alone, so that the layout does not depend on the threads.
+  constexpr std::size_t boxesPerRange = 16384;
+  const std::size_t ranges = (boxes.size() + boxesPerRange - 1) / boxesPerRange;
+  std::vector<std::size_t> counts(ranges * bins, 0);
+  parallelFor(ranges, threads,
+              [&](std::size_t r)
+              {
+                for (std::size_t b = r * boxesPerRange; b < std::min(boxes.size(), (r + 1) * boxesPerRange); ++b)
+                  forEachCell(boxes[b], [&](std::uint64_t key) { ++counts[r * bins + binOf(key)]; });
+              });
+  // Bin by bin, range by range: where each range's entries of each bin go.
+  std::vector<std::size_t> binStart(bins + 1, 0), next(ranges * bins);
+  for (std::size_t bin = 0, at = 0; bin < bins; ++bin)
+  {
+    binStart[bin] = at;
+    for (std::size_t r = 0; r < ranges; ++r)
+    {
+      next[r * bins + bin] = at;
+      at += counts[r * bins + bin];
+    }
+    binStart[bin + 1] = at;
   }
-  std::sort(entries.begin(), entries.end());
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> entries(binStart[bins]);
+  parallelFor(ranges, threads,
+              [&](std::size_t r)
+              {
+                for (std::size_t b = r * boxesPerRange; b < std::min(boxes.size(), (r + 1) * boxesPerRange); ++b)
+                  forEachCell(boxes[b], [&](std::uint64_t key)
+                              { entries[next[r * bins + binOf(key)]++] = { key, static_cast<std::uint32_t>(b) }; });
+              });
+  parallelFor(bins, threads,
+              [&](std::size_t bin)
+              {
+                std::sort(entries.begin() + static_cast<std::ptrdiff_t>(binStart[bin]),
+                          entries.begin() + static_cast<std::ptrdiff_t>(binStart[bin + 1]));
+              });
   std::vector<std::size_t> groupStart;
   for (std::size_t e = 0; e < entries.size(); ++e)
     if (e == 0 || entries[e].first != entries[e - 1].first)
       groupStart.push_back(e);
   groupStart.push_back(entries.size());
-
   // Each pair of overlapping boxes is tested once: in the cell of the lower corner of their overlap.
   std::mutex found;
   parallelForRanges(groupStart.size() - 1, threads,
