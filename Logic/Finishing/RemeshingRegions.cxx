@@ -9,7 +9,7 @@
 namespace slicemesh
 {
 
-std::vector<int> slabRegions(const TriangleMesh& mesh, std::size_t trianglesPerRegion, int& count)
+std::vector<int> slabRegions(const TriangleMesh& mesh, std::size_t trianglesPerRegion, double minimumHeight, int& count)
 {
   const std::size_t n = mesh.triangles.size();
   std::vector<double> height(n);
@@ -21,11 +21,15 @@ std::vector<int> slabRegions(const TriangleMesh& mesh, std::size_t trianglesPerR
   const std::size_t slabs = std::max<std::size_t>(1, trianglesPerRegion > 0 ? n / trianglesPerRegion : 1);
   std::vector<double> sorted = height;
   std::sort(sorted.begin(), sorted.end());
+  // A cut closer than minimumHeight to the one before (or to the top) is skipped: where the surface
+  // lies flat across the slices a quantile slab is thin, and the bands around its two seams would
+  // meet and be remeshed as one large region on one thread.
   std::vector<double> cuts;
+  const double bottom = n > 0 ? sorted.front() : 0.0, top = n > 0 ? sorted.back() : 0.0;
   for (std::size_t k = 1; k < slabs; ++k)
   {
     const double cut = sorted[k * n / slabs];
-    if (cuts.empty() || cut > cuts.back())
+    if (cut - (cuts.empty() ? bottom : cuts.back()) >= minimumHeight && top - cut >= minimumHeight)
       cuts.push_back(cut);
   }
   count = static_cast<int>(cuts.size()) + 1;

@@ -21,8 +21,10 @@ struct MeshRegion
 };
 
 /** The region of every triangle: slabs along z (the slice axis) of about `trianglesPerRegion`
- *  triangles each, cut at quantiles of the triangles' centroid heights. Depends on the mesh only. */
-std::vector<int> slabRegions(const TriangleMesh& mesh, std::size_t trianglesPerRegion, int& count);
+ *  triangles each, cut at quantiles of the triangles' centroid heights, none of them (nor the
+ *  first and last) thinner than `minimumHeight` (mm). Depends on the mesh only. */
+std::vector<int> slabRegions(const TriangleMesh& mesh, std::size_t trianglesPerRegion, double minimumHeight,
+                             int& count);
 
 /** Whether each vertex lies on a seam: between triangles of two regions, or of a region and the
  *  rest (region -1). */

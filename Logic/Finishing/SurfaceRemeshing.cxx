@@ -312,6 +312,16 @@ void buildTreeOf(const TriangleMesh& mesh, Tree& tree)
   tree.build(); // before the queries run side by side
 }
 
+/** Rings each side of a seam between slabs remeshed again as a band: the band's own border then
+ *  lies among remeshed triangles. */
+constexpr int bandRings = 3;
+
+/** How tall a slab is at least, in target edges: a band reaches bandRings rings each side of its
+ *  seam, each ring at most one long edge (4/3 of the target: longer ones are split), so bands
+ *  around the two seams of a slab this tall stay two edges apart. Two bands that met would be one
+ *  region, remeshed on one thread. */
+constexpr double slabEdges = 2.0 * bandRings * 4.0 / 3.0 + 2.0;
+
 /** Remeshes one connected, closed piece, projecting onto it. A large piece is remeshed in slabs
  *  side by side, their seams kept, then in bands around the seams, side by side, so that no trace of
  *  the seams is left; the slabs and bands depend on the piece only, never on the threads. */
@@ -328,7 +338,7 @@ TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions
     return remeshRegion(whole, options, tree, threads).mesh;
   }
   int slabs = 0;
-  const std::vector<int> slabOf = slabRegions(mesh, perRegion, slabs);
+  const std::vector<int> slabOf = slabRegions(mesh, perRegion, slabEdges * options.targetEdgeLength, slabs);
   TriangleMesh slabbed;
   try
   {
@@ -340,11 +350,10 @@ TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions
     whole.trianglesPerRegion = 0;
     return remeshPiece(mesh, whole, threads);
   }
-  // Three rings each side of a seam: the band's own border then lies among remeshed triangles.
   std::vector<char> seam = seamVertices(mesh, slabOf); // the slabs' own vertices come after the piece's
   seam.resize(slabbed.points.size(), 0);
   int bands = 0;
-  const std::vector<int> bandOf = seamBands(slabbed, seam, 3, bands);
+  const std::vector<int> bandOf = seamBands(slabbed, seam, bandRings, bands);
   const TriangleMesh banded = remeshRegions(slabbed, bandOf, bands, options, tree, threads, /*keepFailed=*/true);
   slabbed = TriangleMesh(); // not held beside the banded mesh and its copy without unused vertices
   return withoutUnusedVertices(banded);

@@ -4,6 +4,7 @@
 #include "Contours/MarchingSquares.h"
 #include "Measures/MeshValidation.h"
 #include "Measures/TriangleAngles.h"
+#include "Finishing/RemeshingRegions.h"
 #include "Finishing/SurfaceFinishing.h"
 #include "Finishing/SurfaceSmoothing.h"
 #include "Tiling/SurfaceReconstruction.h"
@@ -221,9 +222,9 @@ TEST(SurfaceRemeshing, OneProjectionAfterTheRoundsLeavesEveryVertexOnTheInput)
 
 TEST(SurfaceRemeshing, InSlabsAndSeamBandsLikeAWholeRemesh)
 {
-  // A sphere of about 51,000 triangles in slabs of about 8,000: six slabs remeshed side by side,
-  // then bands around their five seams. No seam may show: the same surface, edge lengths, angles and
-  // triangle count as the sphere remeshed whole.
+  // A sphere of about 51,000 triangles in slabs of about 8,000, each at least ten edges (4 mm) tall:
+  // three slabs remeshed side by side, then bands around their two seams. No seam may show: the
+  // same surface, edge lengths, angles and triangle count as the sphere remeshed whole.
   const double radius = 10.0;
   const TriangleMesh sphere = octaSphere(80, radius);
   SurfaceRemeshingOptions whole;
@@ -248,6 +249,48 @@ TEST(SurfaceRemeshing, InSlabsAndSeamBandsLikeAWholeRemesh)
   // Volume: within 0.5% of the sphere's (the triangles are chords of it) and 0.1% of the whole remesh's.
   EXPECT_NEAR(v.volume / (4.0 / 3.0 * M_PI * radius * radius * radius), 1.0, 0.005);
   EXPECT_NEAR(v.volume / r.volume, 1.0, 0.001);
+}
+
+TEST(SurfaceRemeshing, SlabsAreNoThinnerThanTheirMinimumHeight)
+{
+  // A flat ellipsoid (20 x 20 x 2 mm) of about 51,000 triangles: quantiles of its heights alone would
+  // give six slabs a third of a millimetre thick. No slab may be thinner than the minimum asked;
+  // without one, the quantiles are kept.
+  TriangleMesh flat = octaSphere(80, 10.0);
+  for (Point3& p : flat.points)
+    p.z *= 0.1;
+  auto heights = [&flat](const std::vector<int>& slabOf, int count)
+  {
+    std::vector<double> low(static_cast<std::size_t>(count), 1e9), high(static_cast<std::size_t>(count), -1e9);
+    for (std::size_t t = 0; t < flat.triangles.size(); ++t)
+    {
+      const Triangle& tri = flat.triangles[t];
+      const double z = (flat.points[tri[0]].z + flat.points[tri[1]].z + flat.points[tri[2]].z) / 3.0;
+      const auto k = static_cast<std::size_t>(slabOf[t]);
+      low[k] = std::min(low[k], z);
+      high[k] = std::max(high[k], z);
+    }
+    return std::make_pair(low, high);
+  };
+  int count = 0;
+  std::vector<int> slabOf = slabRegions(flat, 8000, 0.0, count);
+  EXPECT_EQ(count, static_cast<int>(flat.triangles.size() / 8000));
+  for (const double minimum : { 0.5, 0.9 })
+  {
+    slabOf = slabRegions(flat, 8000, minimum, count);
+    ASSERT_GE(count, 2) << minimum;
+    EXPECT_LE(count, static_cast<int>(2.0 / minimum)) << minimum;
+    const auto [low, high] = heights(slabOf, count);
+    // Every slab spans at least the minimum from the first centroid above the cut below it to the
+    // cut above it: measured between its neighbours' highest and its own highest centroid.
+    for (int k = 0; k < count; ++k)
+    {
+      const double below = k == 0 ? low[0] : high[static_cast<std::size_t>(k - 1)];
+      EXPECT_GE(high[static_cast<std::size_t>(k)] - below, minimum - 1e-3) << "slab " << k << " of " << count;
+      if (k > 0)
+        EXPECT_GE(low[static_cast<std::size_t>(k)], high[static_cast<std::size_t>(k - 1)]) << "slabs overlap";
+    }
+  }
 }
 
 TEST(SurfaceRemeshing, RefusesANonManifoldMeshAndABadLength)
