@@ -141,6 +141,7 @@ RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshVal
       combined.capPlacement = q.capPlacement;
       combined.contourPointSpacing = q.contourPointSpacing;
       combined.contourSmoothingMaxShift = q.contourSmoothingMaxShift;
+      combined.contourSimplification = q.contourSimplification;
       combined.smoothingIterations = q.smoothingIterations;
       combined.smoothingPassBand = q.smoothingPassBand;
       combined.smoothingMaxDisplacement = q.smoothingMaxDisplacement;
@@ -240,6 +241,7 @@ void writeMeshBlocks(std::ostream& json, const std::string& indent, const MeshVa
   json << indent << "  \"contourPreparation\": " << jsonString(q.contourPreparation) << ",\n";
   number("contourPointSpacingMm", q.contourPointSpacing);
   number("contourSmoothingMaxShiftMm", q.contourSmoothingMaxShift);
+  number("contourSimplificationMm", q.contourSimplification);
   json << indent << "  \"capPlacement\": " << jsonString(q.capPlacement.empty() ? "HalfSliceBeyond" : q.capPlacement)
        << ",\n";
   number("wallRowHeightMm", q.wallRowHeight);

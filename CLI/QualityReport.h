@@ -53,6 +53,7 @@ struct RunQuality
   std::string contourPreparation;      ///< "Traced" or "Smoothed"
   double contourPointSpacing = 0.0;    ///< resampling spacing (mm); 0: the traced points kept
   double contourSmoothingMaxShift = 0.0; ///< mm, when Smoothed
+  double contourSimplification = 0.0;  ///< Douglas-Peucker tolerance (mm); 0: none
   double wallRowHeight = 0.0;          ///< mm
   /** Where the end caps lie, which is how the volume counts the end slices: "HalfSliceBeyond"
    *  (half a slice beyond the last contour, as planning systems count) or "AtSlice". */

@@ -105,6 +105,7 @@ RunQuality runQualityOf(const MeshedContours& m)
     m.options.reconstruction.capPlacement == CapPlacement::AtSlice ? "AtSlice" : "HalfSliceBeyond";
   quality.contourPointSpacing = contours.pointSpacing;
   quality.contourSmoothingMaxShift = contours.mode == ContourPreparation::Smoothed ? contours.smoothingMaxShift : 0.0;
+  quality.contourSimplification = contours.simplificationTolerance;
   quality.wallRowHeight = m.reconstruction.wallRowHeight;
   quality.steinerSpacing = m.reconstruction.steinerSpacing;
   const SurfaceFinishingOptions& finishing = m.options.finishing;

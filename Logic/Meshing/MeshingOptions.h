@@ -33,12 +33,17 @@ struct MeshingOptions
 constexpr double remeshedContourSpacing = 1.2;
 constexpr double resampledSliceRatio = 1.2;
 
+/** The simplification tolerance of a remeshed surface's traced contours, in pixels, when none is
+ *  given: only the points on the straight line between their neighbours go. */
+constexpr double collinearTolerance = 1e-3;
+
 /** The options with every automatic value replaced by its value for a grid of this spacing (x, y,
  *  slice; mm): the contour preparation (resolvedContourPreparation), the finishing
  *  (finishingOptionsFor: the target edge length, the smoothing's displacement bound) and, for a
  *  remeshed surface between slices resampledSliceRatio pixels thick or more, a contour point spacing
  *  of remeshedContourSpacing target edges where none is given (the traced contours' points are kept
- *  otherwise). */
+ *  otherwise), and for a remeshed surface's traced contours a simplification tolerance of
+ *  collinearTolerance pixels where none is given. */
 MeshingOptions resolvedMeshingOptions(const MeshingOptions& options, const std::array<double, 3>& spacing);
 
 } // namespace slicemesh

@@ -183,8 +183,9 @@ TEST(ContourPreparation, AutomaticSmoothsThickSlicesOnly)
 // Smoothed contours on the phantoms, at both grids: the mesh stays valid, its vertices come closer
 // to the exact surface than with the traced contours (measured 0.136 -> 0.101, 0.126 -> 0.076,
 // 0.155 -> 0.110 mm at 1 mm), the volume stays within 4% of the exact one (measured -0.6% to -3.5%;
-// the traced contours give -0.5% to -2.8%), and at thick slices the triangle count drops to less
-// than half (resampled contours: measured 4-5 times fewer).
+// the traced contours give -0.5% to -2.8%), and at thick slices the triangle count drops by a fifth
+// or more (resampled contours; measured 0.57-0.76 of the traced contours' count, whose points on
+// straight runs are dropped, and 4-5 times fewer when every traced point was kept).
 TEST(ContourPreparation, SmoothedContoursAreValidAndCloserOnThePhantoms)
 {
   const std::vector<std::pair<const char*, std::shared_ptr<const Phantom>>> phantoms = {
@@ -207,7 +208,7 @@ TEST(ContourPreparation, SmoothedContoursAreValidAndCloserOnThePhantoms)
       EXPECT_LT(smoothed.meanDistance, traced.meanDistance);
       EXPECT_NEAR(std::abs(smoothed.validation.volume), phantom->volume(), 0.04 * phantom->volume());
       if (grid.spacing[2] > 2.0 * grid.spacing[0])
-        EXPECT_LT(smoothed.mesh.triangles.size(), traced.mesh.triangles.size() / 2);
+        EXPECT_LT(static_cast<double>(smoothed.mesh.triangles.size()), 0.8 * static_cast<double>(traced.mesh.triangles.size()));
     }
 }
 

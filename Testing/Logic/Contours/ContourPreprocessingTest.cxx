@@ -1,6 +1,8 @@
 // Contour preprocessing: resampling to a point spacing, simplification within a tolerance, and
 // that neither creates crossings.
 #include "Contours/ContourCrossings.h"
+#include "Contours/ContourPreparation.h"
+#include "Meshing/MeshingOptions.h"
 #include "Contours/ContourResampling.h"
 #include "Contours/ContourSimplification.h"
 #include "Contours/ContourSmoothing.h"
@@ -310,4 +312,56 @@ TEST(ContourResampling, KeepingTheAreaUndoesTheChordsCut)
   // Through the slice version: crossing-free as before.
   const std::vector<Polygon2> ring = { circle(0, 0, 10, 400), circle(0, 0, 9.7, 400, true) };
   EXPECT_TRUE(contourCrossings(resampleContours(ring, 8.0, /*keepArea=*/true)).empty());
+}
+
+TEST(ContourPreparation, TracedContoursLoseOnlyThePointsOnAStraightRun)
+{
+  // A disc of radius 12 voxels and a 10 x 6 block, traced on 0.7 mm pixels: the default preparation
+  // of a remeshed surface's traced contours keeps every point where the staircase turns and drops
+  // those in between on a straight run (along a voxel wall or a 45-degree chamfer). The polygons are the same: every
+  // traced point lies on the prepared contour, and the areas agree to rounding.
+  ContourStack stack;
+  stack.sliceSpacing = 0.7;
+  Slice slice;
+  const double pixel = 0.7;
+  for (Polygon2 contour :
+       { staircaseContours(40, 40, [](double x, double y) { return (x - 20) * (x - 20) + (y - 20) * (y - 20) <= 144.0; })
+           .front(),
+         staircaseContours(20, 12, [](double x, double y) { return x >= 4 && x <= 13 && y >= 3 && y <= 8; }).front() })
+  {
+    for (Point2& p : contour)
+      p = { p.x * pixel, p.y * pixel };
+    slice.contours.push_back(contour);
+  }
+  stack.slices = { slice };
+  const ContourPreparationOptions resolved = resolvedMeshingOptions({}, { pixel, pixel, 0.7 }).contours;
+  ASSERT_EQ(resolved.mode, ContourPreparation::Traced);
+  EXPECT_NEAR(resolved.simplificationTolerance, 1e-3 * pixel, 1e-12);
+  const ContourStack prepared = prepareContours(stack, resolved);
+  ASSERT_EQ(prepared.slices.size(), 1u);
+  ASSERT_EQ(prepared.slices[0].contours.size(), 2u);
+  for (std::size_t c = 0; c < 2; ++c)
+  {
+    const Polygon2& traced = stack.slices[0].contours[c];
+    const Polygon2& kept = prepared.slices[0].contours[c];
+    std::printf("contour %zu: %zu traced points, %zu kept\n", c, traced.size(), kept.size());
+    EXPECT_LT(kept.size(), traced.size());
+    for (const Point2& p : traced)
+      EXPECT_LT(distanceToPolygon(p, kept), 1e-9);
+    EXPECT_NEAR(polygonArea(kept), polygonArea(traced), 1e-9 * std::abs(polygonArea(traced)));
+    // Only points on straight runs go: the staircase's turns are kept, and at most the three anchors
+    // the simplification splits a closed contour at besides.
+    std::size_t turns = 0;
+    for (std::size_t i = 0; i < traced.size(); ++i)
+    {
+      const Point2& a = traced[(i + traced.size() - 1) % traced.size()];
+      const Point2& b = traced[i];
+      const Point2& d = traced[(i + 1) % traced.size()];
+      turns += std::abs((b.x - a.x) * (d.y - b.y) - (b.y - a.y) * (d.x - b.x)) > 1e-9;
+    }
+    EXPECT_LE(kept.size(), turns + 3);
+    EXPECT_GE(kept.size(), turns);
+  }
+  // The block's contour is its four sides with a chamfer at each corner: eight points.
+  EXPECT_EQ(prepared.slices[0].contours[1].size(), 8u);
 }

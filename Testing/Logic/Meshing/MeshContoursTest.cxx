@@ -39,6 +39,13 @@ TEST(MeshingOptions, AutomaticValuesComeFromTheGrid)
   MeshingOptions smoothedOnly;
   smoothedOnly.finishing.finish = SurfaceFinish::Smoothed;
   EXPECT_EQ(resolvedMeshingOptions(smoothedOnly, { 0.8, 0.8, 3.0 }).contours.pointSpacing, 0.0); // traced points kept
+  // Remeshed, traced contours lose the points on straight runs (a thousandth of the smaller pixel);
+  // a surface left smoothed or tiled keeps every traced point, and a given tolerance is kept.
+  EXPECT_NEAR(resolvedMeshingOptions({}, { 0.8, 0.7, 1.0 }).contours.simplificationTolerance, 0.7e-3, 1e-15);
+  EXPECT_EQ(resolvedMeshingOptions(smoothedOnly, { 0.8, 0.8, 3.0 }).contours.simplificationTolerance, 0.0);
+  MeshingOptions simplified;
+  simplified.contours.simplificationTolerance = 0.2;
+  EXPECT_EQ(resolvedMeshingOptions(simplified, { 0.8, 0.8, 3.0 }).contours.simplificationTolerance, 0.2);
   MeshingOptions spaced;
   spaced.contours.pointSpacing = 0.5;
   EXPECT_EQ(resolvedMeshingOptions(spaced, { 0.8, 0.8, 3.0 }).contours.pointSpacing, 0.5);
