@@ -43,9 +43,9 @@ Shape shapeOf(const Point3& a, const Point3& b, const Point3& c)
     shape.largest = M_PI;
     return shape;
   }
-  const std::array<double, 3> angles = triangleAngles(a, b, c);
-  shape.smallest = std::min({ angles[0], angles[1], angles[2] });
-  shape.largest = std::max({ angles[0], angles[1], angles[2] });
+  // The corners opposite the shortest and the longest edge (law of sines): two arc tangents, not three.
+  shape.smallest = smallestAngle(a, b, c);
+  shape.largest = largestAngle(a, b, c);
   const double s = 0.5 * (x + y + z);
   const double inradius = area / s;
   const double circumradius = x * y * z / (4.0 * area);

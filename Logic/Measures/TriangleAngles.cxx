@@ -41,6 +41,15 @@ double smallestAngle(const Point3& a, const Point3& b, const Point3& c)
   return ca <= ab ? angleAt(b, c, a) : angleAt(c, a, b);
 }
 
+double largestAngle(const Point3& a, const Point3& b, const Point3& c)
+{
+  // The corner opposite the longest edge.
+  const double ab = squaredDistance(a, b), bc = squaredDistance(b, c), ca = squaredDistance(c, a);
+  if (bc >= ca && bc >= ab)
+    return angleAt(a, b, c);
+  return ca >= ab ? angleAt(b, c, a) : angleAt(c, a, b);
+}
+
 bool angleUnder(double radians, double boundDegrees)
 {
   return radians * 180.0 / M_PI < boundDegrees * (1.0 - 1e-12);

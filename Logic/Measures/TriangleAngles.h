@@ -17,6 +17,9 @@ std::array<double, 3> triangleAngles(const Point3& a, const Point3& b, const Poi
 /** The smallest angle of triangle abc (radians). */
 double smallestAngle(const Point3& a, const Point3& b, const Point3& c);
 
+/** The largest angle of triangle abc (radians). */
+double largestAngle(const Point3& a, const Point3& b, const Point3& c);
+
 /** Whether an angle (radians) lies under a bound (degrees) by more than the rounding of its
  *  computation. A corner that is the bound exactly (30 degrees comes out of half-voxel coordinates
  *  on isotropic grids, as between (1, 0.5, 0.5) and (0.5, 0.5, 0)) is not under it, whichever way the
