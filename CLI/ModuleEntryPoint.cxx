@@ -304,7 +304,9 @@ int ModuleEntryPoint(int argc, char* argv[])
     try
     {
       const PipelineSettings settings = settingsFrom(arguments);
-      // The self-intersection test's threads (TBB) stay within --threads too.
+      // Work that asks for every core (the validation, the self-intersection test, TBB's threads in
+      // CGAL) stays within --threads too.
+      everyCoreLimit() = threadCount(settings.threads);
       const tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, threadCount(settings.threads));
       auto printRois = [&]
       {

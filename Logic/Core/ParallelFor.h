@@ -16,10 +16,22 @@
 namespace slicemesh
 {
 
-/** The number of threads to use for `asked` (0: every core the machine reports; at least 1). */
+/** The most threads a call that asks for every core (0) gets, for the whole process: 0 (the
+ *  default) for every core the machine reports. A program that promises to stay within a number of
+ *  threads (the CLI's --threads) sets it once, before any work. */
+inline std::atomic<unsigned int>& everyCoreLimit()
+{
+  static std::atomic<unsigned int> limit{ 0 };
+  return limit;
+}
+
+/** The number of threads to use for `asked` (0: every core, within everyCoreLimit; at least 1). */
 inline unsigned int threadCount(unsigned int asked)
 {
-  return asked > 0 ? asked : std::max(1u, std::thread::hardware_concurrency());
+  if (asked > 0)
+    return asked;
+  const unsigned int limit = everyCoreLimit().load();
+  return limit > 0 ? limit : std::max(1u, std::thread::hardware_concurrency());
 }
 
 /** Calls body(i) for every i in [0, count), on up to threadCount(threads) threads (the calling one

@@ -29,7 +29,8 @@ std::vector<int> slabRegions(const TriangleMesh& mesh, std::size_t trianglesPerR
   for (std::size_t k = 1; k < slabs; ++k)
   {
     const double cut = sorted[k * n / slabs];
-    if (cut - (cuts.empty() ? bottom : cuts.back()) >= minimumHeight && top - cut >= minimumHeight)
+    const double previous = cuts.empty() ? bottom : cuts.back();
+    if (cut > previous && cut - previous >= minimumHeight && top - cut >= minimumHeight)
       cuts.push_back(cut);
   }
   count = static_cast<int>(cuts.size()) + 1;

@@ -317,9 +317,11 @@ void buildTreeOf(const TriangleMesh& mesh, Tree& tree)
 constexpr int bandRings = 3;
 
 /** How tall a slab is at least, in target edges: a band reaches bandRings rings each side of its
- *  seam, each ring at most one long edge (4/3 of the target: longer ones are split), so bands
- *  around the two seams of a slab this tall stay two edges apart. Two bands that met would be one
- *  region, remeshed on one thread. */
+ *  seam, each remeshed ring at most one long edge (4/3 of the target: longer ones are split), so
+ *  bands around the two seams of a slab this tall stay two edges apart (the tiled triangles each
+ *  slab keeps along its border can be longer, a slice spacing between thick slices: there the
+ *  margin is smaller; on the scaling benchmark's volumes no two bands met). Two bands that met would
+ *  be one region, remeshed on one thread; the mesh would be no worse. */
 constexpr double slabEdges = 2.0 * bandRings * 4.0 / 3.0 + 2.0;
 
 /** Remeshes one connected, closed piece, projecting onto it. A large piece is remeshed in slabs
@@ -330,15 +332,17 @@ TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions
   Tree tree;
   buildTreeOf(mesh, tree);
   const std::size_t perRegion = options.trianglesPerRegion;
-  if (perRegion == 0 || mesh.triangles.size() < 2 * perRegion)
+  int slabs = 1;
+  const std::vector<int> slabOf = perRegion == 0 || mesh.triangles.size() < 2 * perRegion
+                                    ? std::vector<int>()
+                                    : slabRegions(mesh, perRegion, slabEdges * options.targetEdgeLength, slabs);
+  if (slabs == 1) // small, or too flat for two slabs
   {
     MeshRegion whole{ mesh, {} };
     for (std::size_t v = 0; v < mesh.points.size(); ++v)
       whole.origin.push_back(static_cast<std::int32_t>(v));
     return remeshRegion(whole, options, tree, threads).mesh;
   }
-  int slabs = 0;
-  const std::vector<int> slabOf = slabRegions(mesh, perRegion, slabEdges * options.targetEdgeLength, slabs);
   TriangleMesh slabbed;
   try
   {

@@ -237,7 +237,7 @@ Point3 relaxedPoint(const std::vector<Point3>& points, const VertexNeighbours& n
 struct RowTriangles
 {
   std::vector<std::size_t> first;
-  std::vector<std::size_t> ids;
+  std::vector<std::uint32_t> ids; ///< triangle indices (a mesh's indices are 32-bit)
 };
 
 RowTriangles trianglesOfRows(const TriangleMesh& mesh, const std::vector<std::int32_t>& rank)
@@ -252,7 +252,7 @@ RowTriangles trianglesOfRows(const TriangleMesh& mesh, const std::vector<std::in
   std::vector<std::size_t> next(rows.first.begin(), rows.first.end() - 1);
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
     for (std::int32_t v : mesh.triangles[f])
-      rows.ids[next[static_cast<std::size_t>(rank[static_cast<std::size_t>(v)])]++] = f;
+      rows.ids[next[static_cast<std::size_t>(rank[static_cast<std::size_t>(v)])]++] = static_cast<std::uint32_t>(f);
   return rows;
 }
 

@@ -42,8 +42,8 @@ constexpr double collinearTolerance = 1e-3;
  *  (finishingOptionsFor: the target edge length, the smoothing's displacement bound) and, for a
  *  remeshed surface between slices resampledSliceRatio pixels thick or more, a contour point spacing
  *  of remeshedContourSpacing target edges where none is given (the traced contours' points are kept
- *  otherwise), and for a remeshed surface's traced contours a simplification tolerance of
- *  collinearTolerance pixels where none is given. */
+ *  otherwise), and for a remeshed surface's traced contours kept at their points a simplification
+ *  tolerance of collinearTolerance pixels where none is given. */
 MeshingOptions resolvedMeshingOptions(const MeshingOptions& options, const std::array<double, 3>& spacing);
 
 } // namespace slicemesh

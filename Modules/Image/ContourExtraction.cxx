@@ -3,6 +3,8 @@
 
 #include "SliceSmoothing.h"
 
+#include "Core/ParallelFor.h"
+
 #include "itkContourExtractor2DImageFilter.h"
 
 #include <algorithm>
@@ -157,7 +159,7 @@ ContourStack extractContours(const MaskVolume* mask, double inPlaneSigma)
   const unsigned char* buffer = mask->GetBufferPointer();
   const std::size_t sliceSize = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   const unsigned int workers =
-    static_cast<unsigned int>(std::max<long>(1, std::min<long>(depth, std::max(1u, std::thread::hardware_concurrency()))));
+    static_cast<unsigned int>(std::max<long>(1, std::min<long>(depth, threadCount(0))));
   std::vector<std::exception_ptr> failures(workers);
   auto work = [&](unsigned int worker) {
     try

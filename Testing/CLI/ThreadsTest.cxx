@@ -1,11 +1,16 @@
 // --threads: the same input gives the same files, byte for byte, on 1, 2 and 8 threads: one mesh of
 // a mask with several pieces, and one mesh per label.
 #include "CLITestSupport.h"
+#include "Core/ParallelFor.h"
 #include "ExitCodes.h"
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <mutex>
+#include <set>
+#include <thread>
 
 namespace fs = std::filesystem;
 
@@ -73,4 +78,32 @@ TEST(Threads, TheFilesAreTheSameOnOneTwoAndEightThreads)
 }
 
 } // namespace
+
+TEST(Threads, WorkAskingForEveryCoreStaysWithinTheLimit)
+{
+  // The CLI sets the limit from --threads: work that asks for every core (0), as the validation and
+  // the self-intersection test do, then runs on no more threads than that.
+  auto threadsUsed = [](unsigned int asked)
+  {
+    std::mutex lock;
+    std::set<std::thread::id> used;
+    parallelFor(64, asked,
+                [&](std::size_t)
+                {
+                  std::this_thread::sleep_for(std::chrono::milliseconds(2));
+                  const std::lock_guard<std::mutex> guard(lock);
+                  used.insert(std::this_thread::get_id());
+                });
+    return used.size();
+  };
+  everyCoreLimit() = 1;
+  EXPECT_EQ(threadCount(0), 1u);
+  EXPECT_EQ(threadsUsed(0), 1u);
+  EXPECT_EQ(threadCount(3), 3u); // an explicit count is kept
+  everyCoreLimit() = 0;
+  EXPECT_EQ(threadCount(0), std::max(1u, std::thread::hardware_concurrency()));
+  EXPECT_GE(threadsUsed(2), 1u);
+  EXPECT_LE(threadsUsed(2), 2u);
+}
+
 } // namespace slicemesh::testing

@@ -39,10 +39,12 @@ TEST(MeshingOptions, AutomaticValuesComeFromTheGrid)
   MeshingOptions smoothedOnly;
   smoothedOnly.finishing.finish = SurfaceFinish::Smoothed;
   EXPECT_EQ(resolvedMeshingOptions(smoothedOnly, { 0.8, 0.8, 3.0 }).contours.pointSpacing, 0.0); // traced points kept
-  // Remeshed, traced contours lose the points on straight runs (a thousandth of the smaller pixel);
+  // Remeshed, traced contours kept at their points lose those on straight runs (a thousandth of the
+  // smaller pixel); contours resampled anyway are not simplified first;
   // a surface left smoothed or tiled keeps every traced point, and a given tolerance is kept.
-  EXPECT_NEAR(resolvedMeshingOptions({}, { 0.8, 0.7, 1.0 }).contours.simplificationTolerance, 0.7e-3, 1e-15);
-  EXPECT_EQ(resolvedMeshingOptions(smoothedOnly, { 0.8, 0.8, 3.0 }).contours.simplificationTolerance, 0.0);
+  EXPECT_NEAR(resolvedMeshingOptions({}, { 0.8, 0.7, 0.8 }).contours.simplificationTolerance, 0.7e-3, 1e-15);
+  EXPECT_EQ(resolvedMeshingOptions(smoothedOnly, { 0.8, 0.8, 0.8 }).contours.simplificationTolerance, 0.0);
+  EXPECT_EQ(resolvedMeshingOptions({}, { 0.8, 0.8, 3.0 }).contours.simplificationTolerance, 0.0); // resampled
   MeshingOptions simplified;
   simplified.contours.simplificationTolerance = 0.2;
   EXPECT_EQ(resolvedMeshingOptions(simplified, { 0.8, 0.8, 3.0 }).contours.simplificationTolerance, 0.2);
