@@ -256,6 +256,22 @@ RowTriangles trianglesOfRows(const TriangleMesh& mesh, const std::vector<std::in
   return rows;
 }
 
+/** The unit normal of row v: the sum of its triangles' area normals (`around`, in increasing order),
+ *  the corners taken from `points` through `rank`. */
+Point3 rowNormal(const std::vector<Point3>& points, const TriangleMesh& mesh, const std::vector<std::int32_t>& rank,
+                 const RowTriangles& around, std::size_t v)
+{
+  auto at = [&](std::int32_t u) -> const Point3& { return points[static_cast<std::size_t>(rank[static_cast<std::size_t>(u)])]; };
+  Point3 normal{ 0.0, 0.0, 0.0 };
+  for (std::size_t k = around.first[v]; k < around.first[v + 1]; ++k)
+  {
+    const Triangle& t = mesh.triangles[around.ids[k]];
+    const Point3 n = areaNormal(at(t[0]), at(t[1]), at(t[2]));
+    normal = { normal.x + n.x, normal.y + n.y, normal.z + n.z };
+  }
+  return unitOrZero(normal);
+}
+
 /** One step of tangential relaxation: every vertex moves half way towards the mean of its neighbours,
  *  within its tangent plane (the displacement's part along the vertex normal removed), clamped to
  *  its bound. `points` and the neighbours are in the smoothing's order (`rank[v]` is vertex v's
@@ -265,21 +281,11 @@ void tangentialStep(std::vector<Point3>& points, const TriangleMesh& mesh, const
                     const RowTriangles& around, const VertexNeighbours& neighbours, std::vector<Point3>& scratch,
                     const DisplacementBound& bound, unsigned int threads)
 {
-  auto at = [&](std::int32_t v) -> const Point3& { return points[static_cast<std::size_t>(rank[static_cast<std::size_t>(v)])]; };
   parallelForRanges(points.size(), threads,
                     [&](std::size_t first, std::size_t last)
                     {
                       for (std::size_t v = first; v < last; ++v)
-                      {
-                        Point3 normal{ 0.0, 0.0, 0.0 };
-                        for (std::size_t k = around.first[v]; k < around.first[v + 1]; ++k)
-                        {
-                          const Triangle& t = mesh.triangles[around.ids[k]];
-                          const Point3 n = areaNormal(at(t[0]), at(t[1]), at(t[2]));
-                          normal = { normal.x + n.x, normal.y + n.y, normal.z + n.z };
-                        }
-                        scratch[v] = relaxedPoint(points, neighbours, v, unitOrZero(normal), bound);
-                      }
+                        scratch[v] = relaxedPoint(points, neighbours, v, rowNormal(points, mesh, rank, around, v), bound);
                     });
   points.swap(scratch);
 }
@@ -292,8 +298,8 @@ void tangentialStep(std::vector<Point3>& points, const TriangleMesh& mesh, const
  *  the number. Whether there was any vertex to relax. */
 bool relaxAroundNarrowTriangles(std::vector<Point3>& points, const TriangleMesh& mesh,
                                 const std::vector<std::int32_t>& rank, const VertexNeighbours& neighbours,
-                                const DisplacementBound& bound, int steps, unsigned int threads,
-                                const std::vector<char>& fixed = {})
+                                const RowTriangles& around, const DisplacementBound& bound, int steps,
+                                unsigned int threads, const std::vector<char>& fixed = {})
 {
   if (steps <= 0)
     return false;
@@ -321,37 +327,11 @@ bool relaxAroundNarrowTriangles(std::vector<Point3>& points, const TriangleMesh&
     if (narrow[r])
       for (std::size_t k = neighbours.first[r]; k < neighbours.first[r + 1]; ++k)
         moving[static_cast<std::size_t>(neighbours.ids[k])] = 1;
-  std::vector<std::size_t> slot(points.size(), 0); // a moving row's place in `rows`
   for (std::size_t r = 0; r < moving.size(); ++r)
-  {
-    if (!fixed.empty() && fixed[r])
-      moving[r] = 0;
-    if (moving[r])
-    {
-      slot[r] = rows.size();
+    if (moving[r] && (fixed.empty() || !fixed[r]))
       rows.push_back(r);
-    }
-  }
   if (rows.empty())
     return false;
-  // Every triangle of each moving row, by rows, in the mesh's order (compressed rows).
-  std::vector<std::size_t> firstAround(rows.size() + 1, 0);
-  for (const Triangle& t : mesh.triangles)
-    for (std::int32_t v : t)
-      if (moving[row(v)])
-        ++firstAround[slot[row(v)] + 1];
-  std::partial_sum(firstAround.begin(), firstAround.end(), firstAround.begin());
-  std::vector<std::array<std::size_t, 3>> around(firstAround.back());
-  {
-    std::vector<std::size_t> next(firstAround.begin(), firstAround.end() - 1);
-    for (const Triangle& t : mesh.triangles)
-    {
-      const std::array<std::size_t, 3> r{ row(t[0]), row(t[1]), row(t[2]) };
-      for (std::size_t corner : r)
-        if (moving[corner])
-          around[next[slot[corner]]++] = r;
-    }
-  }
   std::vector<Point3> targets(rows.size());
   for (int step = 0; step < steps; ++step)
   {
@@ -359,16 +339,8 @@ bool relaxAroundNarrowTriangles(std::vector<Point3>& points, const TriangleMesh&
                       [&](std::size_t first, std::size_t last)
                       {
                         for (std::size_t i = first; i < last; ++i)
-                        {
-                          Point3 normal{ 0.0, 0.0, 0.0 };
-                          for (std::size_t k = firstAround[i]; k < firstAround[i + 1]; ++k)
-                          {
-                            const auto& [a, b, c] = around[k];
-                            const Point3 n = areaNormal(points[a], points[b], points[c]);
-                            normal = { normal.x + n.x, normal.y + n.y, normal.z + n.z };
-                          }
-                          targets[i] = relaxedPoint(points, neighbours, rows[i], unitOrZero(normal), bound);
-                        }
+                          targets[i] =
+                            relaxedPoint(points, neighbours, rows[i], rowNormal(points, mesh, rank, around, rows[i]), bound);
                       },
                       1024);
     for (std::size_t i = 0; i < rows.size(); ++i)
@@ -418,8 +390,8 @@ bool relaxNarrowTriangles(TriangleMesh& mesh, const std::vector<Point3>& start, 
   const DisplacementBound bound{ start, options.maxDisplacement, bounded };
   std::vector<std::int32_t> rank(mesh.points.size()); // the mesh's own order: vertex v is row v
   std::iota(rank.begin(), rank.end(), 0);
-  return relaxAroundNarrowTriangles(mesh.points, mesh, rank, neighboursOf(mesh, rank, 1), bound,
-                                    options.narrowTriangleRelaxations, 1, fixed);
+  return relaxAroundNarrowTriangles(mesh.points, mesh, rank, neighboursOf(mesh, rank, 1), trianglesOfRows(mesh, rank),
+                                    bound, options.narrowTriangleRelaxations, 1, fixed);
 }
 
 void offsetToVolume(TriangleMesh& mesh, double volume)
@@ -469,13 +441,10 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
   }
   // The filter moves vertices along the surface too, and where it folds sharply (a tract a voxel or
   // two thick) it crowds them: triangles it leaves with small angles, relaxed back along the surface.
-  if (options.tangentialRelaxations > 0)
-  {
-    const RowTriangles around = trianglesOfRows(mesh, rank);
-    for (int i = 0; i < options.tangentialRelaxations; ++i)
-      tangentialStep(points, mesh, rank, around, neighbours, scratch, bound, threads);
-  }
-  relaxAroundNarrowTriangles(points, mesh, rank, neighbours, bound, options.narrowTriangleRelaxations, threads);
+  const RowTriangles around = trianglesOfRows(mesh, rank);
+  for (int i = 0; i < options.tangentialRelaxations; ++i)
+    tangentialStep(points, mesh, rank, around, neighbours, scratch, bound, threads);
+  relaxAroundNarrowTriangles(points, mesh, rank, neighbours, around, bound, options.narrowTriangleRelaxations, threads);
   for (std::size_t i = 0; i < order.size(); ++i)
     mesh.points[static_cast<std::size_t>(order[i])] = points[i];
   // A component a few edges across has no shape below the pass band: the filter collapses it, and
