@@ -102,6 +102,22 @@ void parallelForRanges(std::size_t count, unsigned int threads, Body&& body, std
   parallelFor(ranges, threads, [&](std::size_t r) { body(std::min(count, r * step), std::min(count, (r + 1) * step)); });
 }
 
+/** How many ranges of `rangeSize` cover [0, count) (the last one may be shorter). */
+inline std::size_t fixedRangeCount(std::size_t count, std::size_t rangeSize)
+{
+  return (count + rangeSize - 1) / rangeSize;
+}
+
+/** Calls body(r, first, last) for the r-th range of `rangeSize` of [0, count), on up to
+ *  threadCount(threads) threads. The ranges follow from the count alone, not from the threads: a
+ *  sum kept per range and added in range order is the same whatever the number of threads. */
+template <typename Body>
+void parallelForFixedRanges(std::size_t count, std::size_t rangeSize, unsigned int threads, Body&& body)
+{
+  parallelFor(fixedRangeCount(count, rangeSize), threads,
+              [&](std::size_t r) { body(r, r * rangeSize, std::min(count, (r + 1) * rangeSize)); });
+}
+
 } // namespace slicemesh
 
 #endif

@@ -72,29 +72,28 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
     std::size_t degenerate = 0, below30 = 0;
     double area = 0.0, largestCosine = -1.0; // of the smallest angle of any triangle
   };
-  const std::size_t triangleRanges = (nTriangles + rangeSize - 1) / rangeSize;
-  std::vector<TriangleSums> triangleSums(triangleRanges);
-  parallelFor(triangleRanges, 0,
-              [&](std::size_t r)
-              {
-                TriangleSums& sums = triangleSums[r];
-                for (std::size_t f = r * rangeSize; f < std::min(nTriangles, (r + 1) * rangeSize); ++f)
-                {
-                  const Triangle& t = mesh.triangles[f];
-                  const Point3* p[3] = { &mesh.points[t[0]], &mesh.points[t[1]], &mesh.points[t[2]] };
-                  const Point3 n = areaNormal(*p[0], *p[1], *p[2]);
-                  const double twiceArea = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-                  if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || twiceArea == 0.0)
-                    ++sums.degenerate;
-                  normals[f] = twiceArea > 0.0
-                                 ? std::array<double, 3>{ n.x / twiceArea, n.y / twiceArea, n.z / twiceArea }
-                                 : std::array<double, 3>{ 0.0, 0.0, 0.0 };
-                  sums.area += 0.5 * twiceArea;
-                  const double cosine = smallestAngleCosine(*p[0], *p[1], *p[2]);
-                  sums.largestCosine = std::max(sums.largestCosine, cosine);
-                  sums.below30 += cosine > cos30;
-                }
-              });
+  std::vector<TriangleSums> triangleSums(fixedRangeCount(nTriangles, rangeSize));
+  parallelForFixedRanges(nTriangles, rangeSize, 0,
+                         [&](std::size_t r, std::size_t firstTriangle, std::size_t lastTriangle)
+                         {
+                           TriangleSums& sums = triangleSums[r];
+                           for (std::size_t f = firstTriangle; f < lastTriangle; ++f)
+                           {
+                             const Triangle& t = mesh.triangles[f];
+                             const Point3* p[3] = { &mesh.points[t[0]], &mesh.points[t[1]], &mesh.points[t[2]] };
+                             const Point3 n = areaNormal(*p[0], *p[1], *p[2]);
+                             const double twiceArea = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+                             if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || twiceArea == 0.0)
+                               ++sums.degenerate;
+                             normals[f] = twiceArea > 0.0
+                                            ? std::array<double, 3>{ n.x / twiceArea, n.y / twiceArea, n.z / twiceArea }
+                                            : std::array<double, 3>{ 0.0, 0.0, 0.0 };
+                             sums.area += 0.5 * twiceArea;
+                             const double cosine = smallestAngleCosine(*p[0], *p[1], *p[2]);
+                             sums.largestCosine = std::max(sums.largestCosine, cosine);
+                             sums.below30 += cosine > cos30;
+                           }
+                         });
   double largestCosine = -1.0;
   std::size_t below30 = 0;
   for (const TriangleSums& sums : triangleSums)
@@ -141,41 +140,41 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
   {
     std::size_t edges = 0, folded = 0, inconsistent = 0, boundary = 0, nonManifold = 0;
   };
-  const std::size_t vertexRanges = (nPoints + rangeSize - 1) / rangeSize;
+  const std::size_t vertexRanges = fixedRangeCount(nPoints, rangeSize);
   std::vector<EdgeCounts> edgeCounts(vertexRanges);
-  parallelFor(vertexRanges, 0,
-              [&](std::size_t r)
-              {
-                EdgeCounts& counts = edgeCounts[r];
-                for (std::size_t p = r * rangeSize; p < std::min(nPoints, (r + 1) * rangeSize); ++p)
-                {
-                  const auto first = uses.begin() + static_cast<std::ptrdiff_t>(edgeStart[p]);
-                  const auto last = uses.begin() + static_cast<std::ptrdiff_t>(edgeStart[p + 1]);
-                  std::sort(first, last);
-                  for (auto i = first; i != last;)
-                  {
-                    auto j = i + 1;
-                    std::size_t forward = i->forward ? 1 : 0;
-                    const std::array<double, 3>& m = normals[i->triangle];
-                    for (; j != last && j->other == i->other; ++j)
-                    { // unit normals nearly opposite: the triangles lie on top of each other
-                      forward += j->forward ? 1 : 0;
-                      const std::array<double, 3>& n = normals[j->triangle];
-                      if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -foldCosine)
-                        ++counts.folded;
-                    }
-                    const auto count = static_cast<std::size_t>(j - i);
-                    const std::size_t backward = count - forward;
-                    counts.inconsistent += (forward > 1 ? forward - 1 : 0) + (backward > 1 ? backward - 1 : 0);
-                    ++counts.edges;
-                    if (count == 1)
-                      ++counts.boundary;
-                    else if (count > 2)
-                      ++counts.nonManifold;
-                    i = j;
-                  }
-                }
-              });
+  parallelForFixedRanges(nPoints, rangeSize, 0,
+                         [&](std::size_t r, std::size_t firstPoint, std::size_t lastPoint)
+                         {
+                           EdgeCounts& counts = edgeCounts[r];
+                           for (std::size_t p = firstPoint; p < lastPoint; ++p)
+                           {
+                             const auto first = uses.begin() + static_cast<std::ptrdiff_t>(edgeStart[p]);
+                             const auto last = uses.begin() + static_cast<std::ptrdiff_t>(edgeStart[p + 1]);
+                             std::sort(first, last);
+                             for (auto i = first; i != last;)
+                             {
+                               auto j = i + 1;
+                               std::size_t forward = i->forward ? 1 : 0;
+                               const std::array<double, 3>& m = normals[i->triangle];
+                               for (; j != last && j->other == i->other; ++j)
+                               { // unit normals nearly opposite: the triangles lie on top of each other
+                                 forward += j->forward ? 1 : 0;
+                                 const std::array<double, 3>& n = normals[j->triangle];
+                                 if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -foldCosine)
+                                   ++counts.folded;
+                               }
+                               const auto count = static_cast<std::size_t>(j - i);
+                               const std::size_t backward = count - forward;
+                               counts.inconsistent += (forward > 1 ? forward - 1 : 0) + (backward > 1 ? backward - 1 : 0);
+                               ++counts.edges;
+                               if (count == 1)
+                                 ++counts.boundary;
+                               else if (count > 2)
+                                 ++counts.nonManifold;
+                               i = j;
+                             }
+                           }
+                         });
   std::size_t edges = 0;
   for (const EdgeCounts& counts : edgeCounts)
   {
@@ -202,47 +201,47 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
     for (int i = 0; i < 3; ++i)
       links[fill[static_cast<std::size_t>(t[i])]++] = { t[(i + 1) % 3], t[(i + 2) % 3] };
   std::vector<std::size_t> nonManifoldVertices(vertexRanges, 0);
-  parallelFor(vertexRanges, 0,
-              [&](std::size_t r)
-              {
-                std::vector<std::int32_t> local;
-                std::vector<std::size_t> parent;
-                auto root = [&](std::size_t x)
-                {
-                  while (parent[x] != x)
-                    x = parent[x] = parent[parent[x]];
-                  return x;
-                };
-                for (std::size_t p = r * rangeSize; p < std::min(nPoints, (r + 1) * rangeSize); ++p)
-                {
-                  if (start[p] == start[p + 1])
-                    continue;
-                  local.clear();
-                  auto index = [&](std::int32_t vertex)
-                  {
-                    const auto at = std::find(local.begin(), local.end(), vertex);
-                    if (at != local.end())
-                      return static_cast<std::size_t>(at - local.begin());
-                    local.push_back(vertex);
-                    return local.size() - 1;
-                  };
-                  parent.clear();
-                  for (std::size_t e = start[p]; e < start[p + 1]; ++e)
-                  {
-                    const std::size_t a = index(links[e].first), b = index(links[e].second);
-                    while (parent.size() < local.size())
-                      parent.push_back(parent.size());
-                    const std::size_t ra = root(a), rb = root(b);
-                    if (ra != rb)
-                      parent[std::max(ra, rb)] = std::min(ra, rb);
-                  }
-                  std::size_t fans = 0;
-                  for (std::size_t i = 0; i < local.size(); ++i)
-                    fans += root(i) == i;
-                  if (fans > 1)
-                    ++nonManifoldVertices[r];
-                }
-              });
+  parallelForFixedRanges(nPoints, rangeSize, 0,
+                         [&](std::size_t r, std::size_t firstPoint, std::size_t lastPoint)
+                         {
+                           std::vector<std::int32_t> local;
+                           std::vector<std::size_t> parent;
+                           auto root = [&](std::size_t x)
+                           {
+                             while (parent[x] != x)
+                               x = parent[x] = parent[parent[x]];
+                             return x;
+                           };
+                           for (std::size_t p = firstPoint; p < lastPoint; ++p)
+                           {
+                             if (start[p] == start[p + 1])
+                               continue;
+                             local.clear();
+                             auto index = [&](std::int32_t vertex)
+                             {
+                               const auto at = std::find(local.begin(), local.end(), vertex);
+                               if (at != local.end())
+                                 return static_cast<std::size_t>(at - local.begin());
+                               local.push_back(vertex);
+                               return local.size() - 1;
+                             };
+                             parent.clear();
+                             for (std::size_t e = start[p]; e < start[p + 1]; ++e)
+                             {
+                               const std::size_t a = index(links[e].first), b = index(links[e].second);
+                               while (parent.size() < local.size())
+                                 parent.push_back(parent.size());
+                               const std::size_t ra = root(a), rb = root(b);
+                               if (ra != rb)
+                                 parent[std::max(ra, rb)] = std::min(ra, rb);
+                             }
+                             std::size_t fans = 0;
+                             for (std::size_t i = 0; i < local.size(); ++i)
+                               fans += root(i) == i;
+                             if (fans > 1)
+                               ++nonManifoldVertices[r];
+                           }
+                         });
   v.nonManifoldVertices = std::accumulate(nonManifoldVertices.begin(), nonManifoldVertices.end(), std::size_t{ 0 });
 
   std::vector<char> used(nPoints, 0);

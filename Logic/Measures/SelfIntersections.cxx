@@ -183,14 +183,14 @@ std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(c
   };
   // Ranges of boxes fixed by the count alone, so that the layout does not depend on the threads.
   constexpr std::size_t boxesPerRange = 16384;
-  const std::size_t ranges = (boxes.size() + boxesPerRange - 1) / boxesPerRange;
+  const std::size_t ranges = fixedRangeCount(boxes.size(), boxesPerRange);
   std::vector<std::size_t> counts(ranges * bins, 0);
-  parallelFor(ranges, threads,
-              [&](std::size_t r)
-              {
-                for (std::size_t b = r * boxesPerRange; b < std::min(boxes.size(), (r + 1) * boxesPerRange); ++b)
-                  forEachCell(boxes[b], [&](std::uint64_t key) { ++counts[r * bins + binOf(key)]; });
-              });
+  parallelForFixedRanges(boxes.size(), boxesPerRange, threads,
+                         [&](std::size_t r, std::size_t firstBox, std::size_t lastBox)
+                         {
+                           for (std::size_t b = firstBox; b < lastBox; ++b)
+                             forEachCell(boxes[b], [&](std::uint64_t key) { ++counts[r * bins + binOf(key)]; });
+                         });
   // Bin by bin, range by range: where each range's entries of each bin go.
   std::vector<std::size_t> binStart(bins + 1, 0), next(ranges * bins);
   for (std::size_t bin = 0, at = 0; bin < bins; ++bin)
@@ -204,13 +204,13 @@ std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(c
     binStart[bin + 1] = at;
   }
   std::vector<std::pair<std::uint64_t, std::uint32_t>> entries(binStart[bins]);
-  parallelFor(ranges, threads,
-              [&](std::size_t r)
-              {
-                for (std::size_t b = r * boxesPerRange; b < std::min(boxes.size(), (r + 1) * boxesPerRange); ++b)
-                  forEachCell(boxes[b], [&](std::uint64_t key)
-                              { entries[next[r * bins + binOf(key)]++] = { key, static_cast<std::uint32_t>(b) }; });
-              });
+  parallelForFixedRanges(boxes.size(), boxesPerRange, threads,
+                         [&](std::size_t r, std::size_t firstBox, std::size_t lastBox)
+                         {
+                           for (std::size_t b = firstBox; b < lastBox; ++b)
+                             forEachCell(boxes[b], [&](std::uint64_t key)
+                                         { entries[next[r * bins + binOf(key)]++] = { key, static_cast<std::uint32_t>(b) }; });
+                         });
   parallelFor(bins, threads,
               [&](std::size_t bin)
               {
