@@ -1,7 +1,7 @@
 // DICOM SEG through DCMTK's dcmseg: every frame is one slice of one segment, placed in patient
 // space by its functional groups. The frames of all segments are put on one grid of slices along
 // the normal of their shared orientation; each segment gets a label map of the slices it is on.
-#include "SegmentationFile.h"
+#include "DicomImageReaders.h"
 
 #include "ColorTable.h"
 #include "MemoryBudget.h"
@@ -206,7 +206,19 @@ ScalarVolume::Pointer layerOf(const SliceGrid& grid, long columns, long rows, lo
 
 } // namespace
 
-SegmentationFile readDicomSegmentation(const std::string& path)
+bool isDicomSegmentation(const std::string& path)
+{
+  silenceDcmtkLog();
+  DcmFileFormat file;
+  // Parsing stops after the Modality (0008,0060): a SEG whose frames are damaged or cut short is
+  // still recognised, and its reader says what is wrong with it.
+  const DcmTagKey afterModality(0x0008, 0x0061);
+  file.loadFileUntilTag(path.c_str(), EXS_Unknown, EGL_noChange, DCM_MaxReadLength, ERM_autoDetect, afterModality);
+  OFString modality;
+  return file.getDataset()->findAndGetOFString(DCM_Modality, modality).good() && modality == "SEG";
+}
+
+SegmentationFile readDicomSegmentationFile(const std::string& path)
 {
   silenceDcmtkLog();
   DcmFileFormat dicom;

@@ -1,12 +1,9 @@
 // Which segmentation format a file is, from its first bytes and header fields.
 #include "SegmentationFile.h"
 
-#include "Core/SliceMeshTypes.h"
+#include "DicomImagePlugin.h"
 
-#include "dcmtk/config/osconfig.h"
-#include "dcmtk/dcmdata/dcdeftag.h"
-#include "dcmtk/dcmdata/dcfilefo.h"
-#include "dcmtk/oflog/oflog.h"
+#include "Core/SliceMeshTypes.h"
 
 #include <cctype>
 #include <fstream>
@@ -55,20 +52,6 @@ bool isSlicerSegmentation(const std::string& path)
   return false;
 }
 
-bool isDicomSeg(const std::string& path)
-{
-  // DCMTK's own logger would print to stderr; a file that is no SEG is not an error here.
-  static const bool silenced = (OFLog::configure(OFLogger::OFF_LOG_LEVEL), true);
-  (void)silenced;
-  DcmFileFormat file;
-  // Parsing stops after the Modality (0008,0060): a SEG whose frames are damaged or cut short is
-  // still recognised, and its reader says what is wrong with it.
-  const DcmTagKey afterModality(0x0008, 0x0061);
-  file.loadFileUntilTag(path.c_str(), EXS_Unknown, EGL_noChange, DCM_MaxReadLength, ERM_autoDetect, afterModality);
-  OFString modality;
-  return file.getDataset()->findAndGetOFString(DCM_Modality, modality).good() && modality == "SEG";
-}
-
 } // namespace
 
 SegmentationFormat segmentationFormatOf(const std::string& path)
@@ -76,8 +59,13 @@ SegmentationFormat segmentationFormatOf(const std::string& path)
   if (bytesAt(path, 0, 4) == "NRRD")
     return isSlicerSegmentation(path) ? SegmentationFormat::SlicerNrrd : SegmentationFormat::None;
   if (bytesAt(path, 128, 4) == "DICM")
-    return isDicomSeg(path) ? SegmentationFormat::DicomSeg : SegmentationFormat::None;
+    return dicomImageFunctions().isSegmentation(path) ? SegmentationFormat::DicomSeg : SegmentationFormat::None;
   return SegmentationFormat::None;
+}
+
+SegmentationFile readDicomSegmentation(const std::string& path)
+{
+  return dicomImageFunctions().readSegmentation(path);
 }
 
 SegmentationFile readSegmentationFile(const std::string& path)

@@ -2,16 +2,14 @@
 // slicemesh::Error with a one-line message that names the input.
 #include "VolumeReader.h"
 
+#include "DicomImagePlugin.h"
 #include "ItkErrorText.h"
 #include "MemoryBudget.h"
 
 #include "Core/SliceMeshTypes.h"
 
-#include "itkGDCMImageIO.h"
-#include "itkGDCMSeriesFileNames.h"
 #include "itkImageFileReader.h"
 #include "itkImageIOFactory.h"
-#include "itkImageSeriesReader.h"
 
 #include <zlib.h>
 
@@ -292,8 +290,14 @@ void checkNiftiSpacing(const std::string& path, const std::optional<Nifti1Header
 /** The header of an image file through the ImageIO ITK picks for it. */
 itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
 {
-  itk::ImageIOBase::Pointer io =
-    itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::FileModeEnum::ReadMode);
+  constexpr auto reading = itk::ImageIOFactory::FileModeEnum::ReadMode;
+  itk::ImageIOBase::Pointer io = itk::ImageIOFactory::CreateImageIO(path.c_str(), reading);
+  if (!io)
+  {
+    // Perhaps a single DICOM image: its reader (GDCM) comes with the DICOM plugin.
+    dicomImageFunctions();
+    io = itk::ImageIOFactory::CreateImageIO(path.c_str(), reading);
+  }
   if (!io)
     throw Error(path + ": not an image file SliceMesh can read (NIfTI, NRRD, MetaImage, DICOM)");
   try
@@ -366,63 +370,21 @@ typename TImage::Pointer readImageFileAs(const std::string& path, itk::ImageIOBa
   return volume;
 }
 
-/** The files of the first DICOM image series in the directory, in slice order. */
-std::vector<std::string> dicomSeriesFiles(const std::string& directory)
+/** The largest image series in the folder (DicomImageFunctions::readSeries), checked. */
+ScalarVolume::Pointer readDicomSeries(const std::string& directory, bool voxels)
 {
-  auto names = itk::GDCMSeriesFileNames::New();
-  std::vector<std::string> fileNames;
+  ScalarVolume::Pointer volume;
   try
   {
-    names->SetUseSeriesDetails(true);
-    names->SetDirectory(directory);
-    const std::vector<std::string>& seriesUIDs = names->GetSeriesUIDs();
-    if (seriesUIDs.empty())
-      throw Error(directory + ": a directory without a DICOM image series");
-    // The series of the most files: an export holds the image series beside one-file objects of
-    // their own series (a structure set, a localizer, a dose), which are no volume.
-    for (const std::string& uid : seriesUIDs)
-    {
-      std::vector<std::string> files = names->GetFileNames(uid);
-      if (files.size() > fileNames.size())
-        fileNames = std::move(files);
-    }
-  }
-  catch (const itk::ExceptionObject& error)
-  {
-    throw Error(directory + ": cannot list the DICOM series: " + itkErrorText(error));
-  }
-  if (fileNames.size() < 2)
-    throw Error(directory + ": the DICOM series has a single slice (a 2-D image); SliceMesh needs a 3-D volume");
-  return fileNames;
-}
-
-using DicomSeriesReader = itk::ImageSeriesReader<ScalarVolume>;
-
-itk::SmartPointer<DicomSeriesReader> dicomSeriesReader(const std::string& directory)
-{
-  auto reader = DicomSeriesReader::New();
-  reader->SetImageIO(itk::GDCMImageIO::New());
-  reader->SetFileNames(dicomSeriesFiles(directory));
-  return reader;
-}
-
-ScalarVolume::Pointer readDicomSeries(const std::string& directory)
-{
-  auto reader = dicomSeriesReader(directory);
-  try
-  {
-    reader->Update();
+    volume = dicomImageFunctions().readSeries(directory, voxels);
   }
   catch (const itk::ExceptionObject& error)
   {
     throw Error(directory + ": cannot read the DICOM series: " + itkErrorText(error));
   }
-  ScalarVolume::Pointer volume = reader->GetOutput();
-  volume->DisconnectPipeline();
   checkVolumeGeometry(directory, volume);
   return volume;
 }
-
 } // namespace
 
 void checkVolumeGeometry(const std::string& path, const itk::ImageBase<3>* volume)
@@ -461,18 +423,7 @@ VolumeGeometry readVolumeGeometry(const std::string& path)
       throw Error(path + ": a 2-D image; its slice direction is unknown");
     return checkHeaderGeometry(path, io);
   }
-  // The series reader orders the slices and takes the spacing between them from their positions.
-  auto reader = dicomSeriesReader(path);
-  try
-  {
-    reader->UpdateOutputInformation();
-  }
-  catch (const itk::ExceptionObject& error)
-  {
-    throw Error(path + ": cannot read the DICOM series: " + itkErrorText(error));
-  }
-  const ScalarVolume* volume = reader->GetOutput();
-  checkVolumeGeometry(path, volume);
+  const ScalarVolume::Pointer volume = readDicomSeries(path, /*voxels=*/false);
   VolumeGeometry geometry;
   for (int i = 0; i < 3; ++i)
   {
@@ -487,7 +438,7 @@ VolumeGeometry readVolumeGeometry(const std::string& path)
 ScalarVolume::Pointer readVolume(const std::string& path)
 {
   if (isSeriesFolder(path))
-    return readDicomSeries(path);
+    return readDicomSeries(path, /*voxels=*/true);
   itk::ImageIOBase::Pointer io = checkedImageHeader(path, false);
   return readImageFileAs<ScalarVolume>(path, io);
 }
@@ -495,7 +446,7 @@ ScalarVolume::Pointer readVolume(const std::string& path)
 StoredVolume readStoredVolume(const std::string& path)
 {
   if (isSeriesFolder(path))
-    return readDicomSeries(path);
+    return readDicomSeries(path, /*voxels=*/true);
   itk::ImageIOBase::Pointer io = checkedImageHeader(path, true);
   switch (io->GetComponentType()) // the types keptAsStored names; float for the others
   {

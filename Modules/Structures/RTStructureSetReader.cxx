@@ -1,5 +1,5 @@
-// DICOM RT Structure Sets through DCMTK's typed RT classes (dcmrt).
-#include "StructureSet.h"
+// DICOM RT Structure Sets through DCMTK's typed RT classes (dcmrt): the plugin SliceMeshStructuresDicom.
+#include "RTStructureSetPlugin.h"
 
 #include <dcmtk/dcmdata/dcbytstr.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
@@ -66,9 +66,7 @@ void forEachItem(Sequence& sequence, Visit&& visit)
   }
 }
 
-} // namespace
-
-StructureSet readRTStructureSet(const std::string& path)
+StructureSet readWithDcmtk(const std::string& path)
 {
   quietDcmtk();
   DcmFileFormat file;
@@ -159,4 +157,13 @@ StructureSet readRTStructureSet(const std::string& path)
   return set;
 }
 
+} // namespace
+
 } // namespace slicemesh
+
+/** The plugin's entry: its table of functions (RTStructureSetPlugin.h). */
+extern "C" __attribute__((visibility("default"))) const slicemesh::RTStructureSetFunctions* slicemeshRTStructureSetFunctions()
+{
+  static const slicemesh::RTStructureSetFunctions functions{ &slicemesh::readWithDcmtk };
+  return &functions;
+}

@@ -1,6 +1,7 @@
 // What kind of contour file a path holds, reading by kind, and choosing ROIs.
 #include "StructureSet.h"
 #include "Lowercase.h"
+#include "RTStructureSetPlugin.h"
 
 #include <algorithm>
 #include <cctype>
@@ -44,6 +45,11 @@ std::optional<ContourFileKind> detectContourFileKind(const std::string& path)
   if (first != start.end() && *first == '{')
     return ContourFileKind::Json;
   return std::nullopt;
+}
+
+StructureSet readRTStructureSet(const std::string& path)
+{
+  return rtStructureSetFunctions().read(path);
 }
 
 StructureSet readStructureSet(const std::string& path, ContourFileKind kind)

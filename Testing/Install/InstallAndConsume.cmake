@@ -14,7 +14,9 @@ endfunction()
 
 # The whole install, as a user runs it (components: Runtime = the CLI module, Development = the library).
 run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
-foreach(file ${CLI_DIR}/SliceMesh ${CLI_DIR}/SliceMesh.xml include/slicemesh/Meshing/MeshContours.h
+foreach(file ${CLI_DIR}/SliceMesh ${CLI_DIR}/SliceMesh.xml ${CLI_DIR}/SliceMeshPlugins/libSliceMeshImageDicom.so
+             ${CLI_DIR}/SliceMeshPlugins/libSliceMeshStructuresDicom.so
+             ${CLI_DIR}/SliceMeshPlugins/libSliceMeshSnapshotRendering.so include/slicemesh/Meshing/MeshContours.h
              include/slicemesh/Tiling/SurfaceReconstruction.h include/slicemesh/Core/SliceMeshTypes.h
              lib/libSliceMeshLogic.a lib/cmake/SliceMesh/SliceMeshConfig.cmake
              lib/cmake/SliceMesh/SliceMeshConfigVersion.cmake lib/cmake/SliceMesh/SliceMeshTargets.cmake)
