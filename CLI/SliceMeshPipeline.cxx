@@ -164,8 +164,10 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   const auto began = Clock::now();
   const bool fromContours = settings.contours.enabled();
   // A segmentation file (.seg.nrrd, DICOM SEG) names its structures: one mesh per segment.
-  const bool segmentationInput = !fromContours && settings.segmentation.kind != InputKind::Grayscale &&
-                                 segmentationFormatOf(settings.inputVolume) != SegmentationFormat::None;
+  // (A DICOM file is asked of the DICOM plugin: one that cannot be loaded makes the input unreadable.)
+  const bool segmentationInput =
+    !fromContours && settings.segmentation.kind != InputKind::Grayscale &&
+    guarded(UnreadableInput, [&] { return segmentationFormatOf(settings.inputVolume); }) != SegmentationFormat::None;
   const bool perLabel = settings.multiLabel.enabled || fromContours || segmentationInput; // one mesh per structure
   const std::string noun = fromContours ? "ROI" : perLabel ? "label" : "";
   const std::string input = fromContours ? settings.contours.path : settings.inputVolume;

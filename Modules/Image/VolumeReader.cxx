@@ -292,14 +292,22 @@ itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
 {
   constexpr auto reading = itk::ImageIOFactory::FileModeEnum::ReadMode;
   itk::ImageIOBase::Pointer io = itk::ImageIOFactory::CreateImageIO(path.c_str(), reading);
+  const std::string unreadable = path + ": not an image file SliceMesh can read (NIfTI, NRRD, MetaImage, DICOM)";
   if (!io)
   {
     // Perhaps a single DICOM image: its reader (GDCM) comes with the DICOM plugin.
-    dicomImageFunctions();
+    try
+    {
+      dicomImageFunctions();
+    }
+    catch (const Error& error)
+    {
+      throw Error(unreadable + "; " + error.what());
+    }
     io = itk::ImageIOFactory::CreateImageIO(path.c_str(), reading);
   }
   if (!io)
-    throw Error(path + ": not an image file SliceMesh can read (NIfTI, NRRD, MetaImage, DICOM)");
+    throw Error(unreadable);
   try
   {
     CapturedErrorStream quiet; // MetaIO's multi-line complaints; ITK's exception says it in one line

@@ -23,7 +23,8 @@ struct SnapshotOptions
 
 /** Whether an off-screen picture can be rendered here. VTK 9.1 as Debian builds it renders through
  *  an X display (GLX): without one (no DISPLAY, or no server answering it) this returns false and
- *  says why in `reason`. Run under `xvfb-run` on a machine without a screen. */
+ *  says why in `reason`. Run under `xvfb-run` on a machine without a screen. Also false when the
+ *  plugin that renders (SnapshotPlugin.h) cannot be loaded, with the loader's reason. */
 bool snapshotAvailable(std::string* reason = nullptr);
 
 /** Renders the mesh (physical millimetres) off screen, seen obliquely from the front-right-top of

@@ -22,15 +22,20 @@ std::filesystem::path executableFolder()
   return error ? std::filesystem::path() : executable.parent_path();
 }
 
-/** The places to load `library` from, in order (see pluginEntry). */
+/** The places to load `library` from, in order (see pluginEntry). The build tree's folder only for
+ *  a program without a plugin folder of its own (a test program): an installed SliceMesh whose
+ *  folder lacks a plugin must say so, not load a build tree's, perhaps of another version. */
 std::vector<std::string> candidates(const std::string& library)
 {
   std::vector<std::string> places;
   const std::filesystem::path folder = executableFolder();
-  if (!folder.empty())
+  std::error_code error;
+  const bool ownFolder = !folder.empty() && std::filesystem::is_directory(folder / pluginFolderName, error);
+  if (ownFolder)
     places.push_back((folder / pluginFolderName / library).string());
 #ifdef SLICEMESH_PLUGIN_BUILD_DIR
-  places.push_back((std::filesystem::path(SLICEMESH_PLUGIN_BUILD_DIR) / library).string());
+  else
+    places.push_back((std::filesystem::path(SLICEMESH_PLUGIN_BUILD_DIR) / library).string());
 #endif
   return places;
 }
@@ -60,7 +65,7 @@ void* handleOf(const std::string& library, std::string& why)
 
 void* pluginEntry(const std::string& library, const char* entry, const std::string& purpose)
 {
-  // dlopen and dlerror are not safe to call from several threads at once.
+  // One plugin loaded at a time: a plugin's first load (its libraries' start-up) is done once.
   static std::mutex loading;
   const std::lock_guard<std::mutex> lock(loading);
   std::string why;
