@@ -19,9 +19,12 @@ struct SurfaceRemeshingOptions
   bool projectEachRound = false;
   /** A piece of at least twice this many triangles is remeshed in slabs of about this many, side by
    *  side, then in bands around their seams; 0: always whole. Small enough for a slab's remesh to
-   *  work mostly in the processor's cache: the thick-slice ellipsoid's slabs took 0.6 s at 20,000
-   *  against 0.9-1.2 s at 40,000 (two threads; 1.3-1.5 against 1.5-2.0 s on one). */
-  std::size_t trianglesPerRegion = 20000;
+   *  work mostly in the processor's cache (the thick-slice ellipsoid's slabs took 0.6 s at 20,000
+   *  against 0.9-1.2 s at 40,000 on two threads), and for the slabs in work side by side to hold
+   *  little memory: CGAL's remesh holds several hundred bytes a triangle, so a slab of 20,000 costs
+   *  about 10 MB while it is remeshed (a 128^3 sphere peaked at 73 MB with slabs of 20,000, at 59
+   *  with slabs of 10,000, in the same time). */
+  std::size_t trianglesPerRegion = 10000;
   /** The voxel spacing of the grid the surface was traced on (x, y, slice; mm), when the target edge
    *  was set for it (automaticEdgeLength): then each piece the finishing remeshes gets that edge
    *  scaled by how the piece faces the grid (facingEdgeLength over voxelFaceEdgeLength). All 0: the
