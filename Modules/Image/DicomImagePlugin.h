@@ -7,6 +7,7 @@
 #include "SegmentationFile.h"
 #include "VolumeReader.h"
 
+#include <cstddef>
 #include <string>
 
 namespace slicemesh
@@ -16,6 +17,7 @@ namespace slicemesh
  *  voxels, itk::ExceptionObject) on failure. */
 struct DicomImageFunctions
 {
+  std::size_t size; ///< sizeof(DicomImageFunctions) as the plugin was built (pluginFunctions)
   /** The largest image series in the folder (an export holds one-file objects beside it: a
    *  structure set, a localizer), its slices ordered by position; `voxels` false: the image
    *  information only (spacing, direction, size), no voxels read. */

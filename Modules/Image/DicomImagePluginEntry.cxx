@@ -10,7 +10,8 @@ extern "C" __attribute__((visibility("default"))) const slicemesh::DicomImageFun
   // finds GDCM for a single DICOM image file too.
   static const bool registered = (itk::GDCMImageIOFactory::RegisterOneFactory(), true);
   (void)registered;
-  static const slicemesh::DicomImageFunctions functions{ &slicemesh::readDicomSeriesIn, &slicemesh::isDicomSegmentation,
+  static const slicemesh::DicomImageFunctions functions{ sizeof(slicemesh::DicomImageFunctions),
+                                                         &slicemesh::readDicomSeriesIn, &slicemesh::isDicomSegmentation,
                                                          &slicemesh::readDicomSegmentationFile };
   return &functions;
 }

@@ -5,12 +5,15 @@
 
 #include "MeshSnapshot.h"
 
+#include <cstddef>
+
 namespace slicemesh
 {
 
 /** What the plugin does, as its table of functions: snapshotAvailable and the two writeSnapshot. */
 struct SnapshotFunctions
 {
+  std::size_t size; ///< sizeof(SnapshotFunctions) as the plugin was built (pluginFunctions)
   bool (*available)(std::string* reason);
   void (*writeQuality)(const TriangleMesh& physicalMesh, const std::string& path, const SnapshotOptions& options);
   void (*writeStructures)(const TriangleMesh& meshes, const std::vector<std::array<unsigned char, 3>>& triangleColors,

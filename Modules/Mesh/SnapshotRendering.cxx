@@ -224,7 +224,7 @@ void writeStructureSnapshot(const TriangleMesh& meshes, const std::vector<std::a
 /** The plugin's entry: its table of functions (SnapshotPlugin.h). */
 extern "C" __attribute__((visibility("default"))) const slicemesh::SnapshotFunctions* slicemeshSnapshotFunctions()
 {
-  static const slicemesh::SnapshotFunctions functions{ &slicemesh::displayAvailable, &slicemesh::writeQualitySnapshot,
-                                                       &slicemesh::writeStructureSnapshot };
+  static const slicemesh::SnapshotFunctions functions{ sizeof(slicemesh::SnapshotFunctions), &slicemesh::displayAvailable,
+                                                       &slicemesh::writeQualitySnapshot, &slicemesh::writeStructureSnapshot };
   return &functions;
 }

@@ -6,6 +6,9 @@
 #ifndef PluginLoader_h
 #define PluginLoader_h
 
+#include "Core/SliceMeshTypes.h"
+
+#include <cstddef>
 #include <string>
 
 namespace slicemesh
@@ -16,19 +19,24 @@ constexpr const char* pluginFolderName = "SliceMeshPlugins";
 
 /** The address of the C function `entry` of the plugin library `library` (a file name, e.g.
  *  "libSliceMeshImageDicom.so"), loading the library on first use. Looked for, in order: already in
- *  the process (a program linked against it, as the tests are), in pluginFolderName beside the
- *  running executable (the build tree and an installed SliceMesh alike), and in the build tree's
- *  plugin folder. Throws slicemesh::Error saying what `purpose` needs and why the library could not
- *  be loaded. */
+ *  the process (a program that linked or loaded it itself), in pluginFolderName beside the running
+ *  executable (the build tree and an installed SliceMesh alike), else, for a program without such a
+ *  folder (a test program), in the build tree's plugin folder. Throws slicemesh::Error saying what
+ *  `purpose` needs and why the library could not be loaded. */
 void* pluginEntry(const std::string& library, const char* entry, const std::string& purpose);
 
 /** The plugin's table of functions: `entry` is a C function taking nothing and returning a pointer
- *  to a `Functions` struct that lives as long as the process. */
+ *  to a `Functions` struct that lives as long as the process. Its first member, `size`, is the
+ *  struct's size as the plugin was built: a plugin whose table has other functions than this build's
+ *  (a plugin of another SliceMesh version) is refused with slicemesh::Error, not called. */
 template <typename Functions>
 const Functions& pluginFunctions(const std::string& library, const char* entry, const std::string& purpose)
 {
   using Getter = const Functions* (*)();
-  return *reinterpret_cast<Getter>(pluginEntry(library, entry, purpose))();
+  const Functions& functions = *reinterpret_cast<Getter>(pluginEntry(library, entry, purpose))();
+  if (functions.size != sizeof(Functions))
+    throw Error(purpose + " needs SliceMesh's plugin " + library + ", and the one found is of another SliceMesh version");
+  return functions;
 }
 
 } // namespace slicemesh

@@ -5,6 +5,7 @@
 
 #include "StructureSet.h"
 
+#include <cstddef>
 #include <string>
 
 namespace slicemesh
@@ -13,6 +14,7 @@ namespace slicemesh
 /** What the plugin does, as its table of functions. */
 struct RTStructureSetFunctions
 {
+  std::size_t size; ///< sizeof(RTStructureSetFunctions) as the plugin was built (pluginFunctions)
   /** The structure set in the file, as readRTStructureSet (StructureSet.h) describes. */
   StructureSet (*read)(const std::string& path);
 };

@@ -164,6 +164,7 @@ StructureSet readWithDcmtk(const std::string& path)
 /** The plugin's entry: its table of functions (RTStructureSetPlugin.h). */
 extern "C" __attribute__((visibility("default"))) const slicemesh::RTStructureSetFunctions* slicemeshRTStructureSetFunctions()
 {
-  static const slicemesh::RTStructureSetFunctions functions{ &slicemesh::readWithDcmtk };
+  static const slicemesh::RTStructureSetFunctions functions{ sizeof(slicemesh::RTStructureSetFunctions),
+                                                             &slicemesh::readWithDcmtk };
   return &functions;
 }

@@ -8,10 +8,13 @@
 #include "PluginLoader.h"
 #include "StructureSetWriter.h"
 #include "TestContours.h"
+#include "TestPlugin.h"
 
 #include "Core/SliceMeshTypes.h"
 
 #include <gtest/gtest.h>
+
+#include <dlfcn.h>
 
 namespace fs = std::filesystem;
 
@@ -115,6 +118,23 @@ TEST(Plugins, AnEntryThePluginLacksIsAnError)
   {
     EXPECT_NE(std::string(error.what()).find("which has no entry slicemeshNoSuchFunctions"), std::string::npos)
       << error.what();
+  }
+}
+
+TEST(Plugins, ATableOfThisBuildIsCalledAndOneOfAnotherVersionRefused)
+{
+  ASSERT_NE(dlopen(SLICEMESH_TEST_PLUGIN, RTLD_NOW), nullptr) << dlerror();
+  const auto& functions =
+    pluginFunctions<TestPluginFunctions>("libSliceMeshTestPlugin.so", "slicemeshTestPluginFunctions", "A test");
+  EXPECT_EQ(functions.answer(), 42);
+  try
+  {
+    pluginFunctions<TestPluginFunctions>("libSliceMeshTestPlugin.so", "slicemeshOtherVersionFunctions", "A test");
+    FAIL() << "a table of another layout was taken";
+  }
+  catch (const Error& error)
+  {
+    EXPECT_NE(std::string(error.what()).find("of another SliceMesh version"), std::string::npos) << error.what();
   }
 }
 
