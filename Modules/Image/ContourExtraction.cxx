@@ -8,9 +8,7 @@
 #include "itkContourExtractor2DImageFilter.h"
 
 #include <algorithm>
-#include <exception>
 #include <sstream>
-#include <thread>
 
 namespace slicemesh
 {
@@ -158,44 +156,22 @@ ContourStack extractContours(const MaskVolume* mask, double inPlaneSigma)
   // the number of threads.
   const unsigned char* buffer = mask->GetBufferPointer();
   const std::size_t sliceSize = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-  const unsigned int workers =
-    static_cast<unsigned int>(std::max<long>(1, std::min<long>(depth, threadCount(0))));
-  std::vector<std::exception_ptr> failures(workers);
-  auto work = [&](unsigned int worker) {
-    try
-    {
-      SliceContourExtractor extractor(spacing[0], spacing[1], inPlaneSigma);
-      for (long k = worker; k < depth; k += workers)
-        stack.slices[k].contours = extractor.extract(buffer + k * sliceSize, width, height);
-    }
-    catch (...)
-    {
-      failures[worker] = std::current_exception(); // rethrown on the calling thread below
-    }
-  };
-  if (workers == 1)
-    work(0);
-  else
+  const std::size_t workers = static_cast<std::size_t>(std::max<long>(1, std::min<long>(depth, threadCount(0))));
+  try
   {
-    std::vector<std::thread> threads;
-    for (unsigned int w = 1; w < workers; ++w)
-      threads.emplace_back(work, w);
-    work(0);
-    for (auto& thread : threads)
-      thread.join();
+    // One task per worker, not per slice: each builds its filter once.
+    parallelFor(workers, static_cast<unsigned int>(workers),
+                [&](std::size_t worker)
+                {
+                  SliceContourExtractor extractor(spacing[0], spacing[1], inPlaneSigma);
+                  for (long k = static_cast<long>(worker); k < depth; k += static_cast<long>(workers))
+                    stack.slices[k].contours = extractor.extract(buffer + k * sliceSize, width, height);
+                });
   }
-  for (const auto& failure : failures)
-    if (failure)
-    {
-      try
-      {
-        std::rethrow_exception(failure);
-      }
-      catch (const itk::ExceptionObject& error)
-      {
-        throw Error(std::string("extractContours: ITK failed: ") + error.GetDescription());
-      }
-    }
+  catch (const itk::ExceptionObject& error)
+  {
+    throw Error(std::string("extractContours: ITK failed: ") + error.GetDescription());
+  }
   return stack;
 }
 

@@ -393,6 +393,7 @@ ScalarVolume::Pointer readDicomSeries(const std::string& directory, bool voxels)
   checkVolumeGeometry(directory, volume);
   return volume;
 }
+
 } // namespace
 
 void checkVolumeGeometry(const std::string& path, const itk::ImageBase<3>* volume)
