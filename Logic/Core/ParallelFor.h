@@ -5,13 +5,14 @@
 #ifndef ParallelFor_h
 #define ParallelFor_h
 
+#include "Core/WorkerPool.h"
+
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <exception>
 #include <mutex>
 #include <thread>
-#include <vector>
 
 namespace slicemesh
 {
@@ -35,8 +36,9 @@ inline unsigned int threadCount(unsigned int asked)
 }
 
 /** Calls body(i) for every i in [0, count), on up to threadCount(threads) threads (the calling one
- *  included), each i exactly once, in no particular order. If calls throw, every i is still
- *  attempted and the exception of the smallest such i is rethrown. */
+ *  and threads lent by the process's pool, Core/WorkerPool.h), each i exactly once, in no
+ *  particular order. If calls throw, every i is still attempted and the exception of the smallest
+ *  such i is rethrown. */
 template <typename Body>
 void parallelFor(std::size_t count, unsigned int threads, Body&& body)
 {
@@ -79,13 +81,7 @@ void parallelFor(std::size_t count, unsigned int threads, Body&& body)
         }
       }
   };
-  std::vector<std::thread> helpers;
-  helpers.reserve(workers - 1);
-  for (std::size_t t = 1; t < workers; ++t)
-    helpers.emplace_back(work);
-  work();
-  for (std::thread& helper : helpers)
-    helper.join();
+  runOnPool(workers - 1, work);
   if (failure)
     std::rethrow_exception(failure);
 }

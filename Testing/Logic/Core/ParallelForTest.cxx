@@ -1,0 +1,99 @@
+// parallelFor on the worker pool: every index once, nested calls, failures, and the pool's threads
+// lent again rather than new ones started for each call.
+#include "Core/ParallelFor.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/syscall.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <set>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+using namespace slicemesh;
+
+TEST(ParallelFor, CallsEveryIndexOnceOnAnyNumberOfThreads)
+{
+  for (unsigned int threads : { 1u, 2u, 3u, 8u })
+  {
+    std::vector<std::atomic<int>> calls(1000);
+    parallelFor(calls.size(), threads, [&](std::size_t i) { ++calls[i]; });
+    for (std::size_t i = 0; i < calls.size(); ++i)
+      ASSERT_EQ(calls[i].load(), 1) << "index " << i << " on " << threads << " threads";
+  }
+}
+
+TEST(ParallelFor, NestedCallsFinishWhenEveryThreadIsBusy)
+{
+  // Outer work on 4 threads, each item running inner loops on 4 threads: the pool's threads are all
+  // busy with outer items, so the inner calls' requests can wait unanswered; each caller must then
+  // do its inner work itself and still return.
+  std::atomic<long> sum{ 0 };
+  parallelFor(16, 4,
+              [&](std::size_t outer)
+              {
+                for (int round = 0; round < 20; ++round)
+                  parallelForRanges(
+                    5000, 4,
+                    [&](std::size_t first, std::size_t last)
+                    {
+                      long local = 0;
+                      for (std::size_t i = first; i < last; ++i)
+                        local += static_cast<long>(outer + i % 3);
+                      sum += local;
+                    },
+                    256);
+              });
+  long expected = 0;
+  for (long outer = 0; outer < 16; ++outer)
+    for (long i = 0; i < 5000; ++i)
+      expected += 20 * (outer + i % 3);
+  EXPECT_EQ(sum.load(), expected);
+}
+
+TEST(ParallelFor, RethrowsTheSmallestFailingIndexAfterTryingEveryIndex)
+{
+  std::atomic<int> attempted{ 0 };
+  try
+  {
+    parallelFor(200, 4,
+                [&](std::size_t i)
+                {
+                  ++attempted;
+                  if (i == 37 || i == 150)
+                    throw std::runtime_error(std::to_string(i));
+                });
+    FAIL() << "no exception";
+  }
+  catch (const std::runtime_error& e)
+  {
+    EXPECT_STREQ(e.what(), "37");
+  }
+  EXPECT_EQ(attempted.load(), 200);
+}
+
+TEST(ParallelFor, LendsThePoolsThreadsInsteadOfStartingNewOnes)
+{
+  // Fifty calls on two threads: with a thread started per call they would run on up to 51 distinct
+  // threads; the pool lends the same helper every time. Threads are told apart by the kernel's
+  // thread id, which is not handed out again soon (std::thread::id often is, once one has ended).
+  std::mutex lock;
+  std::set<long> used;
+  for (int call = 0; call < 50; ++call)
+    parallelFor(8, 2,
+                [&](std::size_t)
+                {
+                  std::this_thread::sleep_for(std::chrono::microseconds(200));
+                  const std::lock_guard<std::mutex> guard(lock);
+                  used.insert(static_cast<long>(syscall(SYS_gettid)));
+                });
+  EXPECT_GE(used.size(), 1u);
+  // The caller, plus at most the helpers the pool holds: no more than the most any call of this
+  // process asked for (8 in the tests above).
+  EXPECT_LE(used.size(), 9u);
+}
