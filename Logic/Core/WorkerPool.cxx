@@ -1,9 +1,13 @@
 #include "Core/WorkerPool.h"
 
+#include <pthread.h>
+
 #include <algorithm>
+#include <atomic>
 #include <condition_variable>
 #include <deque>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -26,13 +30,26 @@ public:
   {
     Job job;
     job.work = &work;
+    // Whichever way this call ends, no request for the job is left queued and no helper is still
+    // running it once the job (on this stack) is gone.
+    struct Withdraw
+    {
+      WorkerPool& pool;
+      Job& job;
+      ~Withdraw()
+      {
+        std::unique_lock<std::mutex> lock(pool.m_Lock);
+        pool.m_Requests.erase(std::remove(pool.m_Requests.begin(), pool.m_Requests.end(), &job), pool.m_Requests.end());
+        pool.m_Finished.wait(lock, [this] { return job.running == 0; });
+      }
+    } withdraw{ *this, job };
     if (helpers > 0)
     {
       {
         const std::lock_guard<std::mutex> lock(m_Lock);
-        while (m_Threads.size() < helpers)
-          m_Threads.emplace_back([this] { serve(); });
-        m_Requests.insert(m_Requests.end(), helpers, &job);
+        grow(helpers);
+        // No more requests than threads to take them: the caller does the rest itself.
+        m_Requests.insert(m_Requests.end(), std::min(helpers, m_Threads.size()), &job);
       }
       if (helpers == 1)
         m_Requested.notify_one();
@@ -40,14 +57,23 @@ public:
         m_Requested.notify_all();
     }
     work();
-    if (helpers == 0)
-      return;
-    std::unique_lock<std::mutex> lock(m_Lock);
-    m_Requests.erase(std::remove(m_Requests.begin(), m_Requests.end(), &job), m_Requests.end());
-    m_Finished.wait(lock, [&job] { return job.running == 0; });
   }
 
 private:
+  /** At least `helpers` threads, as far as the system gives them (a thread it refuses leaves the
+   *  work to the threads there are). Called with m_Lock held. */
+  void grow(std::size_t helpers)
+  {
+    try
+    {
+      while (m_Threads.size() < helpers)
+        m_Threads.emplace_back([this] { serve(); });
+    }
+    catch (const std::system_error&)
+    {
+    }
+  }
+
   void serve()
   {
     std::unique_lock<std::mutex> lock(m_Lock);
@@ -72,14 +98,38 @@ private:
   std::vector<std::thread> m_Threads;
 };
 
+/** The process's pool. Never destroyed: its threads wait for requests until the process ends, and no
+ *  exit path (including one taken on a worker thread) has to join them first. */
+std::atomic<WorkerPool*>& processPool()
+{
+  static std::atomic<WorkerPool*> pool{ nullptr };
+  return pool;
+}
+
+/** A child process has only the thread that forked, and the pool's lock may have been held by
+ *  another at that moment: the child starts a pool of its own (the parent's, copied into the child,
+ *  is left as it was and never used there). */
+void startChildPool()
+{
+  processPool().store(new WorkerPool);
+}
+
+WorkerPool& pool()
+{
+  static const bool once = [] {
+    processPool().store(new WorkerPool);
+    pthread_atfork(nullptr, nullptr, &startChildPool);
+    return true;
+  }();
+  static_cast<void>(once);
+  return *processPool().load();
+}
+
 } // namespace
 
 void runOnPool(std::size_t helpers, const std::function<void()>& work)
 {
-  // Never destroyed: its threads wait for requests until the process ends, and no exit path
-  // (including one taken on a worker thread) has to join them first.
-  static WorkerPool* const pool = new WorkerPool;
-  pool->run(helpers, work);
+  pool().run(helpers, work);
 }
 
 } // namespace slicemesh

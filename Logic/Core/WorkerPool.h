@@ -20,7 +20,8 @@ namespace slicemesh
  *  Calls may nest (work that calls runOnPool). A helper that is busy never holds up the caller: the
  *  caller does the work itself, takes back the requests no helper has picked up, and waits only for
  *  helpers already running `work`, which never wait for anything queued. The pool grows to the most
- *  helpers any call asked for, and its threads last until the process ends. */
+ *  helpers any call asked for, and its threads last until the process ends. A child process (fork)
+ *  starts a pool of its own the first time it asks. */
 void runOnPool(std::size_t helpers, const std::function<void()>& work);
 
 } // namespace slicemesh

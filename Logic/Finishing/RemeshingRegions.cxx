@@ -89,17 +89,24 @@ std::vector<int> seamBands(const TriangleMesh& mesh, const std::vector<char>& se
     if (inBand[t])
       for (std::int32_t v : mesh.triangles[t])
         around[next[static_cast<std::size_t>(v)]++] = t;
+  // A triangle holds edge ab (a != b) if it holds both ends, and a collapsed edge aa if it holds a
+  // twice; its candidates are the band triangles around the end with fewer of them.
+  auto occurrences = [](const Triangle& tri, std::int32_t v) { return (tri[0] == v) + (tri[1] == v) + (tri[2] == v); };
+  auto aroundOf = [&](std::int32_t v)
+  { return firstAround[static_cast<std::size_t>(v) + 1] - firstAround[static_cast<std::size_t>(v)]; };
   DisjointSets sets(mesh.triangles.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     if (inBand[t])
       for (int corner = 0; corner < 3; ++corner)
       {
-        const std::int32_t a = mesh.triangles[t][corner], b = mesh.triangles[t][(corner + 1) % 3];
+        std::int32_t a = mesh.triangles[t][corner], b = mesh.triangles[t][(corner + 1) % 3];
+        if (aroundOf(b) < aroundOf(a))
+          std::swap(a, b);
         const auto v = static_cast<std::size_t>(a);
         for (std::size_t i = firstAround[v]; i < firstAround[v + 1]; ++i)
         {
           const Triangle& other = mesh.triangles[around[i]];
-          if (around[i] != t && (other[0] == b || other[1] == b || other[2] == b))
+          if (around[i] != t && (a != b ? occurrences(other, b) > 0 : occurrences(other, a) > 1))
             sets.unite(t, around[i]);
         }
       }

@@ -1,14 +1,16 @@
-// parallelFor on the worker pool: every index once, nested calls, failures, and the pool's threads
-// lent again rather than new ones started for each call.
+// parallelFor on the worker pool: every index once, nested calls, failures, the pool's threads lent
+// again rather than new ones started for each call, and a forked child's own pool.
 #include "Core/ParallelFor.h"
 
 #include <gtest/gtest.h>
 
 #include <sys/syscall.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <chrono>
+#include <csignal>
 #include <mutex>
 #include <set>
 #include <stdexcept>
@@ -96,4 +98,49 @@ TEST(ParallelFor, LendsThePoolsThreadsInsteadOfStartingNewOnes)
   // The caller, plus at most the helpers the pool holds: no more than the most any call of this
   // process asked for (8 in the tests above).
   EXPECT_LE(used.size(), 9u);
+}
+
+TEST(ParallelFor, AChildForkedWhileThePoolIsBusyHasAPoolOfItsOwn)
+{
+  // The pool's lock is taken and released all the time while another thread runs short calls; a
+  // child forked at such a moment would wait for it forever if it used the parent's pool.
+  std::atomic<bool> stop{ false };
+  std::thread busy(
+    [&]
+    {
+      while (!stop)
+        parallelFor(4, 2, [](std::size_t) {});
+    });
+  int hung = 0, failed = 0;
+  for (int child = 0; child < 40; ++child)
+  {
+    const pid_t pid = fork();
+    if (pid == 0)
+    {
+      std::atomic<int> calls{ 0 };
+      parallelFor(64, 2, [&](std::size_t) { ++calls; });
+      _exit(calls == 64 ? 0 : 1);
+    }
+    ASSERT_GT(pid, 0);
+    int status = 0;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (waitpid(pid, &status, WNOHANG) == 0)
+    {
+      if (std::chrono::steady_clock::now() > deadline)
+      {
+        kill(pid, SIGKILL);
+        waitpid(pid, &status, 0);
+        ++hung;
+        break;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    failed += WIFEXITED(status) && WEXITSTATUS(status) != 0;
+    if (hung > 0)
+      break; // one is enough to fail, and each costs the deadline
+  }
+  stop = true;
+  busy.join();
+  EXPECT_EQ(hung, 0);
+  EXPECT_EQ(failed, 0);
 }

@@ -1,0 +1,107 @@
+// The bands around slab seams against their definition, checked pair by pair: the triangles within
+// `rings` rings of a seam vertex, one region per set of them joined by common edges, numbered in the
+// order of their first triangle.
+#include "Finishing/RemeshingRegions.h"
+
+#include "Core/DisjointSets.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <set>
+#include <utility>
+
+using namespace slicemesh;
+
+namespace
+{
+
+std::set<std::pair<std::int32_t, std::int32_t>> edgesOf(const Triangle& t)
+{
+  std::set<std::pair<std::int32_t, std::int32_t>> edges;
+  for (int corner = 0; corner < 3; ++corner)
+    edges.insert({ std::min(t[corner], t[(corner + 1) % 3]), std::max(t[corner], t[(corner + 1) % 3]) });
+  return edges;
+}
+
+/** The bands by their definition, every pair of triangles compared. */
+std::vector<int> bandsByDefinition(const TriangleMesh& mesh, std::vector<char> near, int rings, int& count)
+{
+  for (int ring = 0; ring < rings; ++ring)
+  {
+    std::vector<char> grown = near;
+    for (const Triangle& t : mesh.triangles)
+      if (near[t[0]] || near[t[1]] || near[t[2]])
+        for (std::int32_t v : t)
+          grown[v] = 1;
+    near.swap(grown);
+  }
+  const std::size_t n = mesh.triangles.size();
+  std::vector<char> inBand(n);
+  for (std::size_t t = 0; t < n; ++t)
+    inBand[t] = near[mesh.triangles[t][0]] || near[mesh.triangles[t][1]] || near[mesh.triangles[t][2]];
+  DisjointSets sets(n);
+  for (std::size_t s = 0; s < n; ++s)
+    for (std::size_t t = s + 1; t < n; ++t)
+    {
+      if (!inBand[s] || !inBand[t])
+        continue;
+      const auto a = edgesOf(mesh.triangles[s]), b = edgesOf(mesh.triangles[t]);
+      if (std::any_of(a.begin(), a.end(), [&b](const auto& e) { return b.count(e) > 0; }))
+        sets.unite(s, t);
+    }
+  std::vector<int> regionOf(n, -1), numberOfRoot(n, -1);
+  count = 0;
+  for (std::size_t t = 0; t < n; ++t)
+    if (inBand[t])
+    {
+      int& number = numberOfRoot[sets.find(t)];
+      if (number < 0)
+        number = count++;
+      regionOf[t] = number;
+    }
+  return regionOf;
+}
+
+} // namespace
+
+TEST(SeamBands, TriangleWithARepeatedCornerJoinsOnlyAlongARealEdge)
+{
+  // {0, 0, 3} touches {0, 1, 2} at vertex 0 only: two regions.
+  TriangleMesh mesh;
+  mesh.points.resize(4);
+  mesh.triangles = { { 0, 1, 2 }, { 0, 0, 3 } };
+  int count = 0;
+  EXPECT_EQ(seamBands(mesh, std::vector<char>(4, 1), 0, count), (std::vector<int>{ 0, 1 }));
+  EXPECT_EQ(count, 2);
+}
+
+TEST(SeamBands, MatchTheirDefinitionOnRandomMeshes)
+{
+  // Small random meshes with edges shared by three triangles, repeated triangles and triangles with
+  // repeated corners among them.
+  std::mt19937 random(7);
+  for (int trial = 0; trial < 3000; ++trial)
+  {
+    const int vertices = 3 + static_cast<int>(random() % 12), triangles = 1 + static_cast<int>(random() % 16);
+    TriangleMesh mesh;
+    mesh.points.resize(static_cast<std::size_t>(vertices));
+    for (int t = 0; t < triangles; ++t)
+    {
+      Triangle tri{};
+      for (std::int32_t& v : tri)
+        v = static_cast<std::int32_t>(random() % static_cast<unsigned>(vertices));
+      mesh.triangles.push_back(tri);
+    }
+    std::vector<char> seam(static_cast<std::size_t>(vertices));
+    for (char& c : seam)
+      c = random() % 4 == 0;
+    const int rings = static_cast<int>(random() % 3);
+    int count = 0, expectedCount = 0;
+    const std::vector<int> regions = seamBands(mesh, seam, rings, count);
+    const std::vector<int> expected = bandsByDefinition(mesh, seam, rings, expectedCount);
+    ASSERT_EQ(regions, expected) << "trial " << trial;
+    ASSERT_EQ(count, expectedCount) << "trial " << trial;
+  }
+}
