@@ -100,29 +100,21 @@ private:
 
 /** The process's pool. Never destroyed: its threads wait for requests until the process ends, and no
  *  exit path (including one taken on a worker thread) has to join them first. */
-std::atomic<WorkerPool*>& processPool()
-{
-  static std::atomic<WorkerPool*> pool{ nullptr };
-  return pool;
-}
+std::atomic<WorkerPool*> processPool{ nullptr };
 
-/** A child process has only the thread that forked, and the pool's lock may have been held by
- *  another at that moment: the child starts a pool of its own (the parent's, copied into the child,
- *  is left as it was and never used there). */
-void startChildPool()
+/** A new pool for the process: the first, and one for every child process (fork), which has only
+ *  the thread that forked while the pool's lock may have been held by another at that moment (the
+ *  parent's pool, copied into the child, is left as it was and never used there). */
+void startPool()
 {
-  processPool().store(new WorkerPool);
+  processPool.store(new WorkerPool);
 }
 
 WorkerPool& pool()
 {
-  static const bool once = [] {
-    processPool().store(new WorkerPool);
-    pthread_atfork(nullptr, nullptr, &startChildPool);
-    return true;
-  }();
-  static_cast<void>(once);
-  return *processPool().load();
+  static const bool started = (startPool(), pthread_atfork(nullptr, nullptr, &startPool), true);
+  static_cast<void>(started);
+  return *processPool.load();
 }
 
 } // namespace
