@@ -598,14 +598,22 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   // Piece by piece: one speck that cannot be remeshed must not cost the rest of the surface its
   // finish (a k-means label has thousands of pieces).
   // The pieces are independent: finished side by side, each into its own slot.
-  // Between thick slices a thin or branching structure's tiling falls short of its voxels by up to
-  // a tenth or so; a target farther off than a quarter is not such a shortfall, and is not followed.
-  const double scale = targetVolume / tilingValidation.volume;
-  const double volumeScale = targetVolume > 0.0 && std::abs(scale - 1.0) <= 0.25 ? scale : 1.0;
   // A tiling of one piece (the usual case) is its own piece: no copy of it is held.
   std::size_t components = 0;
   vertexComponents(tiling, components);
   const bool onePiece = components == 1 && !tiling.triangles.empty();
+  // The target is shared among the pieces in proportion to their tiled volumes. Between thick slices
+  // a thin or branching structure's tiling falls short of its voxels by up to a tenth or so; among
+  // several pieces, a target farther off than a quarter is not such a shortfall spread evenly (specks
+  // in one slice fall far shorter than large pieces: their domed caps are most of them) and is not
+  // followed. A piece alone owns its target whatever the shortfall: a structure in one slice a few
+  // millimetres across is tiled at about 60% of its slab's volume. Not a speck, though: it is a few
+  // triangles across, and an offset that gave back a shortfall that large (a voxel is tiled at a
+  // sixth of its volume) would bend them out of shape.
+  const double scale = targetVolume / tilingValidation.volume;
+  const bool nearTarget = std::abs(scale - 1.0) <= 0.25;
+  const double volumeScale = targetVolume > 0.0 && (onePiece || nearTarget) ? scale : 1.0;
+  const double speckVolumeScale = targetVolume > 0.0 && nearTarget ? scale : 1.0;
   std::vector<TriangleMesh> split = onePiece ? std::vector<TriangleMesh>() : splitIntoPieces(tiling);
   std::vector<const TriangleMesh*> tiledPieces;
   if (onePiece)
@@ -630,7 +638,7 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
                 // own scale.
                 speck[p] = isSpeck(tiledValidations[p], options.remeshing.targetEdgeLength);
                 if (speck[p])
-                  pieces[p] = finishedSpeck(*tiledPieces[p], tiledValidations[p], options, volumeScale, innerThreads(p));
+                  pieces[p] = finishedSpeck(*tiledPieces[p], tiledValidations[p], options, speckVolumeScale, innerThreads(p));
                 else
                   pieces[p] = finishPiece(*tiledPieces[p], tiledValidations[p], options, volumeScale, innerThreads(p));
               });

@@ -64,8 +64,9 @@ SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing
 
 /** Finishes a tiling whose validation is given, one connected piece at a time: each piece is
  *  remeshed and smoothed and gets its tiled volume back, times targetVolume / the tiling's volume
- *  when a `targetVolume` (mm^3) within 25% of the tiling's is given (the voxels' volume: the tiling's
- *  chords sit slightly inside a curved surface); where smoothing makes its triangles cross,
+ *  when a `targetVolume` (mm^3) is given (the voxels' volume: the tiling's chords sit slightly
+ *  inside a curved surface), within 25% of the tiling's unless the tiling is one piece (a small
+ *  structure in one slice is tiled well short of its slab); where smoothing makes its triangles cross,
  *  the vertices around them (growing rings, three tries) go back to their remeshed positions. A piece
  *  is kept finished only if it is a valid surface of its tiled topology, facing the same way;
  *  otherwise it is smoothed only (put back to the tiling where sheets cross, likewise), else left
