@@ -1,6 +1,7 @@
 #include "Finishing/RemeshingRegions.h"
 
 #include "Core/DisjointSets.h"
+#include "Measures/MeshComponents.h"
 
 #include <algorithm>
 #include <array>
@@ -59,15 +60,7 @@ std::vector<char> seamVertices(const TriangleMesh& mesh, const std::vector<int>&
 std::vector<int> seamBands(const TriangleMesh& mesh, const std::vector<char>& seam, int rings, int& count)
 {
   std::vector<char> near = seam;
-  for (int ring = 0; ring < rings; ++ring)
-  {
-    std::vector<char> grown = near;
-    for (const Triangle& t : mesh.triangles)
-      if (near[t[0]] || near[t[1]] || near[t[2]])
-        for (std::int32_t v : t)
-          grown[static_cast<std::size_t>(v)] = 1;
-    near.swap(grown);
-  }
+  growByRings(mesh, near, rings);
   std::vector<char> inBand(mesh.triangles.size(), 0);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
   {

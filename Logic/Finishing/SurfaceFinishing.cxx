@@ -57,20 +57,12 @@ std::size_t unsmooth(TriangleMesh& mesh, const std::vector<Point3>& unsmoothed, 
 std::size_t unsmoothAround(TriangleMesh& mesh, const std::vector<Point3>& unsmoothed,
                            const std::vector<std::pair<std::size_t, std::size_t>>& crossings, int rings)
 {
-  std::vector<bool> marked(mesh.points.size(), false);
+  std::vector<char> marked(mesh.points.size(), 0);
   for (const auto& [first, second] : crossings)
     for (std::size_t t : { first, second })
       for (std::int32_t v : mesh.triangles[t])
-        marked[static_cast<std::size_t>(v)] = true;
-  for (int ring = 0; ring < rings; ++ring)
-  {
-    std::vector<bool> grown = marked;
-    for (const Triangle& t : mesh.triangles)
-      if (marked[t[0]] || marked[t[1]] || marked[t[2]])
-        for (std::int32_t v : t)
-          grown[static_cast<std::size_t>(v)] = true;
-    marked.swap(grown);
-  }
+        marked[static_cast<std::size_t>(v)] = 1;
+  growByRings(mesh, marked, rings);
   return unsmooth(mesh, unsmoothed, marked);
 }
 

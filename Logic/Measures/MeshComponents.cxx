@@ -35,6 +35,20 @@ std::vector<std::size_t> vertexComponents(const TriangleMesh& mesh, std::size_t&
   return component;
 }
 
+void growByRings(const TriangleMesh& mesh, std::vector<char>& marked, int rings)
+{
+  for (int ring = 0; ring < rings; ++ring)
+  {
+    std::vector<char> grown = marked;
+    for (const Triangle& t : mesh.triangles)
+      if (marked[static_cast<std::size_t>(t[0])] || marked[static_cast<std::size_t>(t[1])] ||
+          marked[static_cast<std::size_t>(t[2])])
+        for (std::int32_t v : t)
+          grown[static_cast<std::size_t>(v)] = 1;
+    marked.swap(grown);
+  }
+}
+
 std::vector<TriangleMesh> splitIntoPieces(const TriangleMesh& mesh)
 {
   std::size_t count = 0;

@@ -13,6 +13,10 @@ namespace slicemesh
  *  triangle; a vertex in no triangle comes after them, a component of its own. */
 std::vector<std::size_t> vertexComponents(const TriangleMesh& mesh, std::size_t& count);
 
+/** Grows `marked` (one flag per vertex) by `rings` rings of triangles: each ring marks every corner
+ *  of a triangle that has a marked corner. */
+void growByRings(const TriangleMesh& mesh, std::vector<char>& marked, int rings);
+
 /** The connected pieces of a mesh (by shared vertices), in the order of their first triangle, each
  *  with its triangles in their order and its vertices numbered in theirs: a mesh of one piece comes
  *  back as it was. Vertices in no triangle are left out. */
