@@ -164,9 +164,11 @@ void relaxTangentially(SurfaceMesh& surface, unsigned int threads, const std::ve
  *  around a thin tube along the slices), neither its split nor its collapse applies: the shortest
  *  edge of each triangle under 30 degrees is collapsed to its midpoint here, when the link condition
  *  holds, neither end is on the border or a constrained edge, no triangle around it turns over and
- *  no edge grows past twice the target. Returns how many edges were collapsed. */
-std::vector<Vertex> collapseNarrowEdges(SurfaceMesh& surface, const SurfaceMesh::Property_map<SurfaceMesh::Edge_index, bool>& constrained,
-                                double targetEdgeLength)
+ *  no edge grows past twice the target. Returns the vertex each collapse kept (a later collapse can
+ *  have removed it). */
+std::vector<Vertex> collapseNarrowEdges(SurfaceMesh& surface,
+                                        const SurfaceMesh::Property_map<SurfaceMesh::Edge_index, bool>& constrained,
+                                        double targetEdgeLength)
 {
   const double cos30 = std::cos(M_PI / 6.0);
   std::vector<SurfaceMesh::Halfedge_index> shortest;
@@ -200,7 +202,8 @@ std::vector<Vertex> collapseNarrowEdges(SurfaceMesh& surface, const SurfaceMesh:
       continue;
     const SurfaceMesh::Edge_index e = surface.edge(h);
     const Vertex a = surface.source(h), b = surface.target(h);
-    if (constrained[e] || surface.is_border(a) || surface.is_border(b) || !CGAL::Euler::does_satisfy_link_condition(e, surface))
+    if (constrained[e] || surface.is_border(a) || surface.is_border(b) ||
+        !CGAL::Euler::does_satisfy_link_condition(e, surface))
       continue;
     bool touchesConstraint = false;
     for (Vertex v : { a, b })
@@ -219,7 +222,8 @@ std::vector<Vertex> collapseNarrowEdges(SurfaceMesh& surface, const SurfaceMesh:
           continue;
         const Kernel::Point_3& p = surface.point(surface.source(around));
         const Kernel::Point_3& q = surface.point(surface.target(surface.next(around)));
-        const Kernel::Vector_3 before = CGAL::cross_product(Kernel::Vector_3(p, surface.point(v)), Kernel::Vector_3(p, q));
+        const Kernel::Vector_3 before =
+          CGAL::cross_product(Kernel::Vector_3(p, surface.point(v)), Kernel::Vector_3(p, q));
         const Kernel::Vector_3 after = CGAL::cross_product(Kernel::Vector_3(p, middle), Kernel::Vector_3(p, q));
         if (!(before * after > 0.0) || CGAL::squared_distance(p, middle) > 4.0 * targetEdgeLength * targetEdgeLength)
           acceptable = false;
@@ -322,7 +326,8 @@ void splitCollapseFlip(const FaceRange& patch, SurfaceMesh& surface,
  *  relaxed and projected onto the input. Only there: a round over the whole region cost 4-5% of a
  *  run for the few places that need it. */
 template <typename PointMap>
-void remeshAroundNarrowTriangles(SurfaceMesh& surface, const SurfaceMesh::Property_map<SurfaceMesh::Edge_index, bool>& constrained,
+void remeshAroundNarrowTriangles(SurfaceMesh& surface,
+                                 const SurfaceMesh::Property_map<SurfaceMesh::Edge_index, bool>& constrained,
                                  bool bordered, double targetEdgeLength, PointMap onInput, const Tree& tree,
                                  unsigned int threads)
 {
