@@ -4,6 +4,7 @@
 #include "Core/ParallelFor.h"
 #include "Finishing/RemeshingRegions.h"
 #include "Finishing/TriangleMeshTree.h"
+#include "Measures/TriangleAngles.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/SurfaceMeshConversion.h"
 
@@ -163,36 +164,31 @@ void relaxTangentially(SurfaceMesh& surface, unsigned int threads, const std::ve
 /** Where a remesh leaves a regular pattern of narrow triangles (rings of vertices half a slice apart
  *  around a thin tube along the slices), neither its split nor its collapse applies: the shortest
  *  edge of each triangle under 30 degrees is collapsed to its midpoint here, when the link condition
- *  holds, neither end is on the border or a constrained edge, no triangle around it turns over and
- *  no edge grows past twice the target. Returns the vertex each collapse kept (a later collapse can
- *  have removed it). */
+ *  holds, no edge around either end is constrained (the region's border and the edges beside it
+ *  are), no triangle around it turns over and no edge grows past twice the target. Returns the
+ *  vertex each collapse kept (a later collapse can have removed it). */
 std::vector<Vertex> collapseNarrowEdges(SurfaceMesh& surface,
                                         const SurfaceMesh::Property_map<SurfaceMesh::Edge_index, bool>& constrained,
                                         double targetEdgeLength)
 {
   const double cos30 = std::cos(M_PI / 6.0);
+  auto at = [&](Vertex v) {
+    const Kernel::Point_3& p = surface.point(v);
+    return Point3{ p.x(), p.y(), p.z() };
+  };
   std::vector<SurfaceMesh::Halfedge_index> shortest;
   for (SurfaceMesh::Face_index f : surface.faces())
   {
-    SurfaceMesh::Halfedge_index best;
-    double bestLength = std::numeric_limits<double>::infinity();
-    bool narrow = false;
-    for (SurfaceMesh::Halfedge_index h : CGAL::halfedges_around_face(surface.halfedge(f), surface))
-    {
-      const Kernel::Point_3& a = surface.point(surface.source(h));
-      const Kernel::Point_3& b = surface.point(surface.target(h));
-      const Kernel::Point_3& c = surface.point(surface.target(surface.next(h)));
-      const Kernel::Vector_3 u(b, a), v(b, c);
-      const double lu = std::sqrt(u.squared_length()), lv = std::sqrt(v.squared_length());
-      if (lu > 0.0 && lv > 0.0 && (u * v) / (lu * lv) > cos30)
-        narrow = true;
-      if (lu < bestLength)
-      {
-        bestLength = lu;
+    const SurfaceMesh::Halfedge_index h0 = surface.halfedge(f), h1 = surface.next(h0), h2 = surface.next(h1);
+    if (!(smallestAngleCosine(at(surface.target(h0)), at(surface.target(h1)), at(surface.target(h2))) > cos30))
+      continue;
+    SurfaceMesh::Halfedge_index best = h0;
+    for (SurfaceMesh::Halfedge_index h : { h1, h2 })
+      if (CGAL::squared_distance(surface.point(surface.source(h)), surface.point(surface.target(h))) <
+          CGAL::squared_distance(surface.point(surface.source(best)), surface.point(surface.target(best))))
         best = h;
-      }
-    }
-    if (narrow && bestLength < 0.8 * targetEdgeLength)
+    if (CGAL::squared_distance(surface.point(surface.source(best)), surface.point(surface.target(best))) <
+        0.64 * targetEdgeLength * targetEdgeLength)
       shortest.push_back(best);
   }
   std::vector<Vertex> collapsed;
@@ -202,8 +198,7 @@ std::vector<Vertex> collapseNarrowEdges(SurfaceMesh& surface,
       continue;
     const SurfaceMesh::Edge_index e = surface.edge(h);
     const Vertex a = surface.source(h), b = surface.target(h);
-    if (constrained[e] || surface.is_border(a) || surface.is_border(b) ||
-        !CGAL::Euler::does_satisfy_link_condition(e, surface))
+    if (!CGAL::Euler::does_satisfy_link_condition(e, surface))
       continue;
     bool touchesConstraint = false;
     for (Vertex v : { a, b })
