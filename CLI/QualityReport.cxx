@@ -145,6 +145,8 @@ RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshVal
       combined.smoothingIterations = q.smoothingIterations;
       combined.smoothingPassBand = q.smoothingPassBand;
       combined.smoothingMaxDisplacement = q.smoothingMaxDisplacement;
+      combined.smoothingFeaturePairs = q.smoothingFeaturePairs;
+      combined.smoothingMaxDisplacementAwayFromFeatures = q.smoothingMaxDisplacementAwayFromFeatures;
       first = false;
     }
     else if (combined.finish != q.finish)
@@ -229,6 +231,10 @@ void writeMeshBlocks(std::ostream& json, const std::string& indent, const MeshVa
   number("smoothingPassBand", q.smoothingPassBand);
   json << indent << "  \"smoothingMaxDisplacementMm\": [" << jsonNumber(q.smoothingMaxDisplacement[0]) << ", "
        << jsonNumber(q.smoothingMaxDisplacement[1]) << ", " << jsonNumber(q.smoothingMaxDisplacement[2]) << "],\n";
+  number("smoothingFeaturePairs", q.smoothingFeaturePairs);
+  const std::array<double, 3>& away = q.smoothingMaxDisplacementAwayFromFeatures;
+  json << indent << "  \"smoothingMaxDisplacementAwayFromFeaturesMm\": [" << jsonNumber(away[0]) << ", "
+       << jsonNumber(away[1]) << ", " << jsonNumber(away[2]) << "],\n";
   number("smallPiecesRemeshed", static_cast<double>(q.smallPiecesRemeshed));
   number("smallPiecesLeftTiled", static_cast<double>(q.smallPiecesAsTiled));
   json << indent << "  \"pieces\": { \"remeshed\": " << q.piecesByFinish[0] << ", \"smoothedOnly\": "

@@ -40,6 +40,8 @@ struct RunQuality
   int smoothingIterations = 0;   ///< Taubin pairs, when Remeshed or Smoothed was asked; else 0
   double smoothingPassBand = 0.0;
   std::array<double, 3> smoothingMaxDisplacement{}; ///< mm along the image axes; 0: unbounded
+  int smoothingFeaturePairs = 0; ///< pairs after which sharp features are held (SurfaceSmoothingOptions)
+  std::array<double, 3> smoothingMaxDisplacementAwayFromFeatures{}; ///< mm, the bound after those pairs
   std::string fallback;          ///< why less was applied than asked (SurfaceFinishing.h); empty when all of it was
   std::size_t smallPiecesRemeshed = 0; ///< specks remeshed at their own scale (FinishedSurface::smallPiecesRemeshed)
   std::size_t smallPiecesAsTiled = 0; ///< specks left as tiled (FinishedSurface::smallPiecesAsTiled)

@@ -124,6 +124,10 @@ RunQuality runQualityOf(const MeshedContours& m)
     quality.smoothingIterations = finishing.smoothing.iterations;
     quality.smoothingPassBand = finishing.smoothing.passBand;
     quality.smoothingMaxDisplacement = finishing.smoothing.maxDisplacement;
+    quality.smoothingFeaturePairs = std::min(finishing.smoothing.featurePairs, finishing.smoothing.iterations);
+    for (int axis = 0; axis < 3; ++axis)
+      quality.smoothingMaxDisplacementAwayFromFeatures[axis] =
+        std::max(finishing.smoothing.maxDisplacement[axis], finishing.smoothing.maxDisplacementAwayFromFeatures[axis]);
   }
   return quality;
 }

@@ -90,9 +90,13 @@ SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing
   options.remeshing.targetEdgeLength = automaticEdgeLength(spacing);
   options.remeshing.gridSpacing = spacing;
   // A voxel's staircase is a fraction of its side deep along each axis: 1 mm slices of 0.5 mm pixels
-  // leave steps twice as deep across the slices as within them.
+  // leave steps twice as deep across the slices as within them. Away from sharp features the true
+  // surface may lie anywhere within half a voxel of a terrace.
   for (int axis = 0; axis < 3; ++axis)
+  {
     options.smoothing.maxDisplacement[axis] = 0.3 * spacing[axis];
+    options.smoothing.maxDisplacementAwayFromFeatures[axis] = 0.5 * spacing[axis];
+  }
   return options;
 }
 

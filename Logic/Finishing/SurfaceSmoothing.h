@@ -13,8 +13,24 @@ namespace slicemesh
 
 struct SurfaceSmoothingOptions
 {
-  /** Number of lambda/mu step pairs; 0 leaves the mesh as it is. */
-  int iterations = 100;
+  /** Number of lambda/mu step pairs; 0 leaves the mesh as it is. Sharp features get the first
+   *  featurePairs of them only. */
+  int iterations = 130;
+  /** Pairs the whole surface gets, within maxDisplacement. Then the sharp features are found (a
+   *  vertex one of whose triangles turns from its normal by more than featureAngle, and the vertices
+   *  within two rings of it) and held where they are, while the rest of the surface gets the other
+   *  pairs within maxDisplacementAwayFromFeatures. On a gently curved surface the
+   *  staircase's terraces are many edges long (a sphere's flanks, where a slice or a pixel row runs
+   *  along the surface), farther than 100 pairs reach, and the true surface lies anywhere within
+   *  half a voxel of a terrace; the same pairs on a sharp edge (a box's, a plate's rim) would only
+   *  round it further. */
+  int featurePairs = 50;
+  /** Degrees; about a radius of curvature of three edges: a sphere of 20 voxels' radius turns by
+   *  about 2 degrees per edge, a box's edge by 45. */
+  double featureAngle = 10.0;
+  /** The bound away from sharp features after featurePairs (mm along x, y and z; where smaller than
+   *  maxDisplacement, as all 0 are, maxDisplacement). */
+  std::array<double, 3> maxDisplacementAwayFromFeatures{ 0.0, 0.0, 0.0 };
   /** Taubin's pass band k_PB = 1/lambda + 1/mu: mesh frequencies below it (the shape) pass, the
    *  staircase of a mask (periods of a few edges) is damped. lambda is 0.63; mu follows from k_PB. */
   double passBand = 0.01;
@@ -37,7 +53,8 @@ struct SurfaceSmoothingOptions
 
 /** Smooths every vertex of the mesh: `iterations` pairs of p += lambda * L(p) and p += mu * L(p),
  *  where L(p) is the mean of p's neighbours minus p, each pair followed by the maxDisplacement
- *  clamp, `tangentialRelaxations` steps along the surface (within the same clamp) and
+ *  clamp (after featurePairs, sharp features held and the clamp widened elsewhere),
+ *  `tangentialRelaxations` steps along the surface (within the same clamp) and
  *  `narrowTriangleRelaxations` more for the vertices of narrow triangles only; then gives
  *  every connected component its signed
  *  volume back by one offset along the vertex normals (small structures, a few edges across, shrink

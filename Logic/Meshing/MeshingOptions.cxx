@@ -19,7 +19,10 @@ MeshingOptions resolvedMeshingOptions(const MeshingOptions& options, const std::
     finishing.remeshing.gridSpacing = automatic.remeshing.gridSpacing; // each piece's edge as it faces the grid
   }
   if (!(finishing.smoothing.maxDisplacement[0] > 0.0))
+  {
     finishing.smoothing.maxDisplacement = automatic.smoothing.maxDisplacement;
+    finishing.smoothing.maxDisplacementAwayFromFeatures = automatic.smoothing.maxDisplacementAwayFromFeatures;
+  }
   // Between thick slices, a surface that is remeshed anyway is tiled from contours already spaced
   // for its edge length: traced contours (a point every half pixel or so) make a tiling three to four
   // times denser than the remesh's target, which the remesh then spends most of its time collapsing.

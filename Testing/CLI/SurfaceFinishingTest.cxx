@@ -300,6 +300,8 @@ TEST(AutomaticOptions, TheReportGivesEachAutomaticValueAsResolvedForTheGrid)
     EXPECT_NEAR(jsonValue(json, "smoothingMaxDisplacementMm", 0), 0.3, 1e-8) << json;
     EXPECT_NEAR(jsonValue(json, "smoothingMaxDisplacementMm", 1), 0.3, 1e-8) << json;
     EXPECT_NEAR(jsonValue(json, "smoothingMaxDisplacementMm", 2), 0.6, 1e-8) << json;
+    EXPECT_NEAR(jsonValue(json, "smoothingMaxDisplacementAwayFromFeaturesMm", 0), 0.5, 1e-8) << json;
+    EXPECT_NEAR(jsonValue(json, "smoothingMaxDisplacementAwayFromFeaturesMm", 2), 1.0, 1e-8) << json;
     EXPECT_GT(jsonValue(json, "wallRowHeightMm"), 0.0) << json;
     EXPECT_EQ(jsonValue(json, "steinerSpacingMm"), jsonValue(json, "wallRowHeightMm")) << json;
     if (preparation == "Traced")

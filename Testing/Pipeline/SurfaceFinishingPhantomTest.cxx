@@ -213,7 +213,9 @@ TEST(SurfaceFinishingPhantom, TheSmoothingBoundFollowsEachVoxelSide)
     const PhantomMeshResult tiling = meshPhantom(sphere, grid.spacing, grid.direction);
     SurfaceFinishingOptions perAxis = finishingOptionsFor(grid.spacing);
     SurfaceFinishingOptions smallestSide = perAxis;
-    smallestSide.smoothing.maxDisplacement.fill(0.3 * std::min({ grid.spacing[0], grid.spacing[1], grid.spacing[2] }));
+    const double smallest = std::min({ grid.spacing[0], grid.spacing[1], grid.spacing[2] });
+    smallestSide.smoothing.maxDisplacement.fill(0.3 * smallest);
+    smallestSide.smoothing.maxDisplacementAwayFromFeatures.fill(0.5 * smallest);
     const FinishedSurface finished = finishSurface(tiling.mesh, tiling.validation, perAxis);
     const FinishedSurface bySmallestSide = finishSurface(tiling.mesh, tiling.validation, smallestSide);
     const double distance = meanDistance(sphere, finished.mesh);
@@ -225,5 +227,40 @@ TEST(SurfaceFinishingPhantom, TheSmoothingBoundFollowsEachVoxelSide)
     EXPECT_LT(distance, 0.97 * smallestSideDistance) << grid.name;
     // Within a tenth of the smallest voxel side of the sphere, on average.
     EXPECT_LT(distance, 0.1 * std::min({ grid.spacing[0], grid.spacing[1], grid.spacing[2] })) << grid.name;
+  }
+}
+
+// After the first 50 pairs the smoothing holds sharp features and goes on elsewhere, 80 pairs more
+// within half a voxel: a gently curved surface's terraces are longer than 100 pairs reach, while more
+// pairs on a box's edges would only round them. Against the whole surface filtered 100 pairs within 0.3 of a
+// voxel (the smoothing before), on grids between the benchmark's two, where spheres were farther
+// from the true surface than 3D Slicer's.
+TEST(SurfaceFinishingPhantom, SharpFeaturesAreHeldWhileGentleCurvesAreSmoothedFurther)
+{
+  const Sphere sphere(Vector3(0.3, -0.2, 0.1), 20.0);
+  const Box box(Vector3(0, 0, 0), Vector3(12, 8, 7), rotation({ 0, 1, 1 }, 0.5));
+  for (const PhantomTestGrid& grid : { PhantomTestGrid{ "0.8x0.8x0.9", { 0.8, 0.8, 0.9 } },
+                                       PhantomTestGrid{ "0.5x1x1", { 0.5, 1.0, 1.0 } } })
+  {
+    const SurfaceFinishingOptions held = finishingOptionsFor(grid.spacing);
+    SurfaceFinishingOptions whole = held;
+    whole.smoothing.iterations = 100;
+    whole.smoothing.featurePairs = 100;
+    for (const Phantom* phantom : { static_cast<const Phantom*>(&sphere), static_cast<const Phantom*>(&box) })
+    {
+      const PhantomMeshResult tiling = meshPhantom(*phantom, grid.spacing, grid.direction);
+      const FinishedSurface a = finishSurface(tiling.mesh, tiling.validation, held);
+      const FinishedSurface b = finishSurface(tiling.mesh, tiling.validation, whole);
+      const double heldDistance = meanDistance(*phantom, a.mesh), wholeDistance = meanDistance(*phantom, b.mesh);
+      const bool isSphere = phantom == &sphere;
+      std::printf("%-12s %-6s mean distance %.4f mm (whole surface, 100 pairs: %.4f mm), under 30 deg %.2f%%\n",
+                  grid.name, isSphere ? "sphere" : "box", heldDistance, wholeDistance,
+                  100.0 * a.validation.fractionAnglesBelow30);
+      EXPECT_EQ(a.finish, SurfaceFinish::Remeshed) << a.fallback;
+      EXPECT_TRUE(a.validation.valid()) << a.validation.summary();
+      EXPECT_LT(a.validation.fractionAnglesBelow30, 0.01);
+      // Measured: the sphere 0.944 and 0.915 of the whole surface's distance, the box 0.935 and 0.939.
+      EXPECT_LT(heldDistance, (isSphere ? 0.97 : 1.0) * wholeDistance) << grid.name;
+    }
   }
 }

@@ -482,7 +482,7 @@ TEST(SurfaceFinishing, EachPieceGetsTheEdgeForHowItFacesTheGrid)
 
 TEST(SurfaceFinishing, RemeshesAValidSurfaceAndKeepsItsTopology)
 {
-  const TriangleMesh sphere = octaSphere(30, 10.0, 0.01, 1.5);
+  const TriangleMesh sphere = octaSphere(30, 10.0, 0.03, 1.5);
   SurfaceFinishingOptions options;
   options.remeshing.targetEdgeLength = 1.0;
   const FinishedSurface finished = finishSurface(sphere, validateMesh(sphere), options);
@@ -491,7 +491,9 @@ TEST(SurfaceFinishing, RemeshesAValidSurfaceAndKeepsItsTopology)
   EXPECT_TRUE(finished.validation.valid());
   EXPECT_EQ(finished.validation.eulerCharacteristic, 2);
   EXPECT_EQ(finished.validation.triangles, finished.mesh.triangles.size());
-  EXPECT_LT(meanRadiusError(finished.mesh, 10.0), meanRadiusError(sphere, 10.0));
+  // A ripple of 0.03 mm, a few times the chord error of the remesh's 1 mm edges here: taken out
+  // (measured 0.070 -> 0.022 mm).
+  EXPECT_LT(meanRadiusError(finished.mesh, 10.0), 0.5 * meanRadiusError(sphere, 10.0));
 
   options.finish = SurfaceFinish::Smoothed;
   const FinishedSurface smoothed = finishSurface(sphere, validateMesh(sphere), options);
