@@ -490,7 +490,7 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
     // Found after the first pairs, which take the staircase's own creases out. A held vertex still
     // takes each pair's steps, so that its neighbours see the filter's shrinking and inflating steps
     // alike, and is put back after it: held through both, a feature pulled its neighbours outwards
-    // in every inflating step (a torus's mean distance 7% up, where this gives 3% down).
+    // in every inflating step (a torus's mean distance 7% up, where this gives 2.5% down).
     sharp = sharpFeatureRows(points, mesh, rank, around, neighbours, options.featureAngle, 2, threads);
     std::vector<std::size_t> heldRows;
     for (std::size_t r = 0; r < sharp.size(); ++r)
