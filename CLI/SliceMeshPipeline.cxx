@@ -4,6 +4,7 @@
 #include "PipelineStructures.h"
 
 #include "Core/ParallelFor.h"
+#include "Finishing/SurfaceSmoothing.h"
 #include "MaskMeshing.h"
 #include "MeshSnapshot.h"
 #include "Measures/MeshComponents.h"
@@ -124,10 +125,8 @@ RunQuality runQualityOf(const MeshedContours& m)
     quality.smoothingIterations = finishing.smoothing.iterations;
     quality.smoothingPassBand = finishing.smoothing.passBand;
     quality.smoothingMaxDisplacement = finishing.smoothing.maxDisplacement;
-    quality.smoothingFeaturePairs = std::min(finishing.smoothing.featurePairs, finishing.smoothing.iterations);
-    for (int axis = 0; axis < 3; ++axis)
-      quality.smoothingMaxDisplacementAwayFromFeatures[axis] =
-        std::max(finishing.smoothing.maxDisplacement[axis], finishing.smoothing.maxDisplacementAwayFromFeatures[axis]);
+    quality.smoothingFeaturePairs = pairsBeforeFeaturesHeld(finishing.smoothing);
+    quality.smoothingMaxDisplacementAwayFromFeatures = boundAwayFromFeatures(finishing.smoothing);
   }
   return quality;
 }

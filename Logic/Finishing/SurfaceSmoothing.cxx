@@ -281,8 +281,7 @@ Point3 rowNormal(const std::vector<Point3>& points, const TriangleMesh& mesh, co
  *  feature too. */
 std::vector<char> sharpFeatureRows(const std::vector<Point3>& points, const TriangleMesh& mesh,
                                    const std::vector<std::int32_t>& rank, const RowTriangles& around,
-                                   const VertexNeighbours& neighbours, double angleDegrees, int rings,
-                                   unsigned int threads)
+                                   double angleDegrees, int rings, unsigned int threads)
 {
   auto at = [&](std::int32_t u) -> const Point3& { return points[static_cast<std::size_t>(rank[static_cast<std::size_t>(u)])]; };
   const double cosine = std::cos(angleDegrees * M_PI / 180.0);
@@ -301,15 +300,13 @@ std::vector<char> sharpFeatureRows(const std::vector<Point3>& points, const Tria
                         }
                       }
                     });
-  for (int ring = 0; ring < rings; ++ring)
-  {
-    std::vector<char> grown = sharp;
-    for (std::size_t v = 0; v < sharp.size(); ++v)
-      if (sharp[v])
-        for (std::size_t k = neighbours.first[v]; k < neighbours.first[v + 1]; ++k)
-          grown[static_cast<std::size_t>(neighbours.ids[k])] = 1;
-    sharp.swap(grown);
-  }
+  // The rings are grown over the mesh's own vertex numbers, then put back in the smoothing's order.
+  std::vector<char> byVertex(sharp.size());
+  for (std::size_t v = 0; v < byVertex.size(); ++v)
+    byVertex[v] = sharp[static_cast<std::size_t>(rank[v])];
+  growByRings(mesh, byVertex, rings);
+  for (std::size_t v = 0; v < byVertex.size(); ++v)
+    sharp[static_cast<std::size_t>(rank[v])] = byVertex[v];
   return sharp;
 }
 
@@ -421,6 +418,19 @@ void restoreVolumes(TriangleMesh& mesh, const std::vector<std::size_t>& componen
 
 } // namespace
 
+int pairsBeforeFeaturesHeld(const SurfaceSmoothingOptions& options)
+{
+  return std::clamp(options.featurePairs, 0, std::max(0, options.iterations));
+}
+
+std::array<double, 3> boundAwayFromFeatures(const SurfaceSmoothingOptions& options)
+{
+  std::array<double, 3> bound{};
+  for (int axis = 0; axis < 3; ++axis)
+    bound[axis] = std::max(options.maxDisplacement[axis], options.maxDisplacementAwayFromFeatures[axis]);
+  return bound;
+}
+
 bool relaxNarrowTriangles(TriangleMesh& mesh, const std::vector<Point3>& start, const std::vector<char>& fixed,
                           const SurfaceSmoothingOptions& options)
 {
@@ -477,7 +487,7 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
   std::vector<Point3> points = start, scratch(order.size());
   const DisplacementBound free{ start, {}, false };
   DisplacementBound bound{ start, options.maxDisplacement, bounded };
-  const int wholePairs = std::min(options.iterations, std::max(0, options.featurePairs));
+  const int wholePairs = pairsBeforeFeaturesHeld(options);
   for (int i = 0; i < wholePairs; ++i)
   {
     umbrellaStep(points, neighbours, lambda, scratch, free, threads);
@@ -491,7 +501,7 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
     // takes each pair's steps, so that its neighbours see the filter's shrinking and inflating steps
     // alike, and is put back after it: held through both, a feature pulled its neighbours outwards
     // in every inflating step (a torus's mean distance 7% up, where this gives 2.5% down).
-    sharp = sharpFeatureRows(points, mesh, rank, around, neighbours, options.featureAngle, 2, threads);
+    sharp = sharpFeatureRows(points, mesh, rank, around, options.featureAngle, 2, threads);
     std::vector<std::size_t> heldRows;
     for (std::size_t r = 0; r < sharp.size(); ++r)
       if (sharp[r])
@@ -500,8 +510,7 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
     for (std::size_t i = 0; i < heldRows.size(); ++i)
       heldAt[i] = points[heldRows[i]];
     bound.held = &sharp; // the relaxation below keeps the plain bound on the features
-    for (int axis = 0; axis < 3; ++axis)
-      bound.wide[axis] = std::max(options.maxDisplacement[axis], options.maxDisplacementAwayFromFeatures[axis]);
+    bound.wide = boundAwayFromFeatures(options);
     for (int i = wholePairs; i < options.iterations; ++i)
     {
       umbrellaStep(points, neighbours, lambda, scratch, free, threads);

@@ -51,6 +51,14 @@ struct SurfaceSmoothingOptions
   int narrowTriangleRelaxations = 30;
 };
 
+/** The pairs the whole surface gets before sharp features are held: featurePairs, within 0 and
+ *  iterations. */
+int pairsBeforeFeaturesHeld(const SurfaceSmoothingOptions& options);
+
+/** The bound away from sharp features as applied: along each axis the larger of maxDisplacement and
+ *  maxDisplacementAwayFromFeatures. */
+std::array<double, 3> boundAwayFromFeatures(const SurfaceSmoothingOptions& options);
+
 /** Smooths every vertex of the mesh: `iterations` pairs of p += lambda * L(p) and p += mu * L(p),
  *  where L(p) is the mean of p's neighbours minus p, each pair followed by the maxDisplacement
  *  clamp (after featurePairs, sharp features held and the clamp widened elsewhere),
