@@ -10,8 +10,9 @@ packages=(
   # DICOM SEG segmentation files and RT structure sets (DCMTK), the JSON contour format, polygon
   # booleans for contours that cross (Clipper).
   libdcmtk-dev nlohmann-json3-dev libpolyclipping-dev
-  # gzip-compressed .seg.nrrd headers are read with zlib directly (Modules/Image).
-  zlib1g-dev
+  # gzip-compressed .seg.nrrd headers are read with zlib directly (Modules/Image); .vtp meshes'
+  # zlib blocks are made by libdeflate (Modules/Mesh).
+  zlib1g-dev libdeflate-dev
   libxml2-utils
   # --snapshot renders through X: Xvfb (xvfb-run needs xauth) where there is no display.
   xvfb xauth

@@ -7,6 +7,7 @@
 
 #include <vtkCellArray.h>
 #include <vtkFieldData.h>
+#include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
 #include <vtkPLYReader.h>
@@ -16,7 +17,9 @@
 #include <vtkStringArray.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include <cmath>
 #include <filesystem>
+#include <map>
 #include <fstream>
 #include <sstream>
 #include <unistd.h>
@@ -167,6 +170,78 @@ TEST(MeshWriter, LegacyVTKCarriesSpaceInFieldDataToo)
   const fs::path path = freshFolder("legacy") / "box.vtk";
   writeMesh(testing::box(1, 1, 1), CoordinateSystem::LPS, path.string());
   EXPECT_EQ(fieldDataSpace(readBack(path).polyData), "SPACE=LPS");
+}
+
+/** The unit cube's surface with each triangle split into four, `rounds` times over, its vertices
+ *  moved by an irregular amount (coordinates that use their low bits, as a smoothed mesh's do). */
+TriangleMesh perturbedCube(int rounds)
+{
+  TriangleMesh mesh = testing::box(1, 1, 1);
+  for (int round = 0; round < rounds; ++round)
+  {
+    TriangleMesh finer;
+    finer.points = mesh.points;
+    std::map<std::pair<std::int32_t, std::int32_t>, std::int32_t> middle;
+    auto midpoint = [&](std::int32_t a, std::int32_t b)
+    {
+      const auto key = std::minmax(a, b);
+      const auto found = middle.find(key);
+      if (found != middle.end())
+        return found->second;
+      const Point3& p = finer.points[static_cast<std::size_t>(a)];
+      const Point3& q = finer.points[static_cast<std::size_t>(b)];
+      finer.points.push_back({ (p.x + q.x) / 2, (p.y + q.y) / 2, (p.z + q.z) / 2 });
+      return middle[key] = static_cast<std::int32_t>(finer.points.size() - 1);
+    };
+    for (const Triangle& t : mesh.triangles)
+    {
+      const std::int32_t ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]), ca = midpoint(t[2], t[0]);
+      finer.triangles.push_back({ t[0], ab, ca });
+      finer.triangles.push_back({ ab, t[1], bc });
+      finer.triangles.push_back({ ca, bc, t[2] });
+      finer.triangles.push_back({ ab, bc, ca });
+    }
+    mesh = finer;
+  }
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+  {
+    const double wobble = 1e-3 * std::sin(1.7 * static_cast<double>(v));
+    mesh.points[v] = { mesh.points[v].x + wobble, mesh.points[v].y - wobble, mesh.points[v].z + 0.5 * wobble };
+  }
+  return mesh;
+}
+
+TEST(MeshWriter, VTPIsCompressedAsZLibBlocksThatReadBackExactly)
+{
+  const fs::path path = freshFolder("compressed") / "cube.vtp";
+  const TriangleMesh mesh = perturbedCube(6); // 24,578 points, 49,152 triangles: several zlib blocks per array
+  writeMesh(mesh, CoordinateSystem::LPS, path.string());
+  // Declared as VTK's zlib compressor: every VTK reader (3D Slicer's, ParaView's) inflates its blocks.
+  EXPECT_NE(fileText(path).find("compressor=\"vtkZLibDataCompressor\""), std::string::npos);
+  const std::size_t rawBytes = mesh.points.size() * 3 * sizeof(double) + mesh.triangles.size() * 4 * sizeof(std::int32_t);
+  EXPECT_LT(fs::file_size(path), rawBytes * 9 / 10) << "the arrays were not compressed";
+
+  const ReadBack back = readBack(path);
+  ASSERT_TRUE(back.polyData);
+  ASSERT_EQ(back.polyData->GetNumberOfPoints(), static_cast<vtkIdType>(mesh.points.size()));
+  ASSERT_EQ(back.polyData->GetNumberOfPolys(), static_cast<vtkIdType>(mesh.triangles.size()));
+  // LPS is the mesh's own frame: every coordinate comes back bit for bit, every triangle as it was.
+  std::size_t differentPoints = 0, differentTriangles = 0;
+  for (vtkIdType v = 0; v < back.polyData->GetNumberOfPoints(); ++v)
+  {
+    double p[3];
+    back.polyData->GetPoint(v, p);
+    const Point3& q = mesh.points[static_cast<std::size_t>(v)];
+    differentPoints += p[0] != q.x || p[1] != q.y || p[2] != q.z;
+  }
+  vtkCellArray* polys = back.polyData->GetPolys();
+  vtkNew<vtkIdList> ids;
+  polys->InitTraversal();
+  for (std::size_t t = 0; polys->GetNextCell(ids); ++t)
+    for (int corner = 0; corner < 3; ++corner)
+      differentTriangles += ids->GetId(corner) != mesh.triangles[t][static_cast<std::size_t>(corner)];
+  EXPECT_EQ(differentPoints, 0u);
+  EXPECT_EQ(differentTriangles, 0u);
 }
 
 TEST(MeshWriter, ExtensionIsCaseInsensitive)
