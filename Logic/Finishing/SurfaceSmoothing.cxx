@@ -114,15 +114,22 @@ std::vector<std::int32_t> spatialOrder(const std::vector<Point3>& points)
   return order;
 }
 
-/** Where a vertex may go: within the ellipsoid of semi-axes `bound` around its start (all 0: anywhere);
- *  with `held`, the vertices not flagged in it (away from sharp features) within that of `wide`. */
-struct DisplacementBound
+/** Where a vertex may go: within the ellipsoid of semi-axes `bound` around its start (inactive:
+ *  anywhere); once `holdFeatures` is called, the vertices not flagged `held` (away from sharp
+ *  features) within the ellipsoid of semi-axes `wide`. */
+class DisplacementBound
 {
-  const std::vector<Point3>& start;
-  std::array<double, 3> bound;
-  bool active;
-  const std::vector<char>* held = nullptr;
-  std::array<double, 3> wide{};
+public:
+  DisplacementBound(const std::vector<Point3>& start, const std::array<double, 3>& bound, bool active)
+    : start(start), active(active), inverse(inverseOf(bound)), wideInverse(inverse)
+  {
+  }
+
+  void holdFeatures(const std::vector<char>& held, const std::array<double, 3>& wide)
+  {
+    this->held = &held;
+    wideInverse = inverseOf(wide);
+  }
 
   /** p, or if it has left the ellipsoid, the point where its displacement meets it. */
   Point3 clamped(const Point3& p, std::size_t v) const
@@ -131,15 +138,28 @@ struct DisplacementBound
       return p;
     const Point3& s = start[v];
     const double dx = p.x - s.x, dy = p.y - s.y, dz = p.z - s.z;
-    const std::array<double, 3>& axes = held && !(*held)[v] ? wide : bound;
+    const std::array<double, 3>& axes = held && !(*held)[v] ? wideInverse : inverse;
     // The displacement in units of the bound: 1 on the ellipsoid.
-    const double reach = std::sqrt((dx / axes[0]) * (dx / axes[0]) + (dy / axes[1]) * (dy / axes[1]) +
-                                   (dz / axes[2]) * (dz / axes[2]));
-    if (reach <= 1.0)
+    const double ux = dx * axes[0], uy = dy * axes[1], uz = dz * axes[2];
+    const double reachSquared = ux * ux + uy * uy + uz * uz;
+    if (reachSquared <= 1.0)
       return p;
-    const double f = 1.0 / reach;
+    const double f = 1.0 / std::sqrt(reachSquared);
     return { s.x + f * dx, s.y + f * dy, s.z + f * dz };
   }
+
+private:
+  /** The reciprocal semi-axes: the clamp runs once per vertex and step, and multiplies. */
+  static std::array<double, 3> inverseOf(const std::array<double, 3>& axes)
+  {
+    return { 1.0 / axes[0], 1.0 / axes[1], 1.0 / axes[2] };
+  }
+
+  const std::vector<Point3>& start;
+  bool active;
+  std::array<double, 3> inverse;
+  std::array<double, 3> wideInverse;
+  const std::vector<char>* held = nullptr;
 };
 
 /** The mean of row v's neighbours, or the point itself if it has none. */
@@ -440,7 +460,7 @@ bool relaxNarrowTriangles(TriangleMesh& mesh, const std::vector<Point3>& start, 
                                    [](double axis) { return axis > 0.0; });
   // The plain bound: this relaxation follows putting vertices back where the smoothing made sheets
   // cross, and widened there it left natbrainlab with 1.18% of its triangles under 30 degrees, not 0.96%.
-  const DisplacementBound bound{ start, options.maxDisplacement, bounded };
+  const DisplacementBound bound(start, options.maxDisplacement, bounded);
   std::vector<std::int32_t> rank(mesh.points.size()); // the mesh's own order: vertex v is row v
   std::iota(rank.begin(), rank.end(), 0);
   return relaxAroundNarrowTriangles(mesh.points, mesh, rank, neighboursOf(mesh, rank, 1), trianglesOfRows(mesh, rank),
@@ -485,8 +505,8 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
   for (std::size_t i = 0; i < order.size(); ++i)
     start[i] = mesh.points[static_cast<std::size_t>(order[i])];
   std::vector<Point3> points = start, scratch(order.size());
-  const DisplacementBound free{ start, {}, false };
-  DisplacementBound bound{ start, options.maxDisplacement, bounded };
+  const DisplacementBound free(start, {}, false);
+  DisplacementBound bound(start, options.maxDisplacement, bounded);
   const int wholePairs = pairsBeforeFeaturesHeld(options);
   for (int i = 0; i < wholePairs; ++i)
   {
@@ -509,8 +529,7 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
     std::vector<Point3> heldAt(heldRows.size());
     for (std::size_t i = 0; i < heldRows.size(); ++i)
       heldAt[i] = points[heldRows[i]];
-    bound.held = &sharp; // the relaxation below keeps the plain bound on the features
-    bound.wide = boundAwayFromFeatures(options);
+    bound.holdFeatures(sharp, boundAwayFromFeatures(options)); // the relaxation below keeps the plain bound on them
     for (int i = wholePairs; i < options.iterations; ++i)
     {
       umbrellaStep(points, neighbours, lambda, scratch, free, threads);
