@@ -222,7 +222,16 @@ std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(c
     if (e == 0 || entries[e].first != entries[e - 1].first)
       groupStart.push_back(e);
   groupStart.push_back(entries.size());
-  // Each pair of overlapping boxes is tested once: in the cell of the lower corner of their overlap.
+  // Each pair of overlapping boxes is tested once: in the cell of the lower corner of their overlap,
+  // which is the larger of the two boxes' lower cells along each axis (a cell index only grows with
+  // the coordinate), taken per box once here rather than per pair.
+  std::vector<std::array<std::uint64_t, 3>> lowCell(boxes.size());
+  parallelForRanges(boxes.size(), threads,
+                    [&](std::size_t first, std::size_t last)
+                    {
+                      for (std::size_t b = first; b < last; ++b)
+                        lowCell[b] = grid.cellOf(boxes[b].low);
+                    });
   std::mutex found;
   parallelForRanges(groupStart.size() - 1, threads,
                     [&](std::size_t firstGroup, std::size_t lastGroup)
@@ -232,15 +241,15 @@ std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(c
                         for (std::size_t i = groupStart[g]; i < groupStart[g + 1]; ++i)
                           for (std::size_t j = i + 1; j < groupStart[g + 1]; ++j)
                           {
-                            const BoundingBox& a = boxes[entries[i].second];
-                            const BoundingBox& b = boxes[entries[j].second];
-                            if (!a.overlaps(b))
+                            const std::uint32_t ba = entries[i].second, bb = entries[j].second;
+                            if (!boxes[ba].overlaps(boxes[bb]))
                               continue;
-                            const auto cell = grid.cellOf({ std::max(a.low[0], b.low[0]), std::max(a.low[1], b.low[1]),
-                                                            std::max(a.low[2], b.low[2]) });
-                            if (CellGrid::key(cell[0], cell[1], cell[2]) != entries[i].first)
+                            const auto& ca = lowCell[ba];
+                            const auto& cb = lowCell[bb];
+                            if (CellGrid::key(std::max(ca[0], cb[0]), std::max(ca[1], cb[1]), std::max(ca[2], cb[2])) !=
+                                entries[i].first)
                               continue;
-                            const std::size_t ta = boxed[entries[i].second], tb = boxed[entries[j].second];
+                            const std::size_t ta = boxed[ba], tb = boxed[bb];
                             if (crossing(mesh, ta, tb))
                               local.emplace_back(std::min(ta, tb), std::max(ta, tb));
                           }
