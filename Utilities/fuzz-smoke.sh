@@ -1,15 +1,14 @@
 #!/usr/bin/env bash
 # A short libFuzzer run of the four fuzz targets (README, "Fuzzing"), part of the test command: builds
-# build-fuzz with clang and the sanitizers (only the fuzz targets and the libraries they link), then
-# runs each target for SLICEMESH_FUZZ_SECONDS (default 22: about 90 s in all) with a fixed seed, from
-# an empty corpus, or for StructureFuzzer from one small file of each kind it reads.
+# them in build-fuzz (sanitizer-build.sh: clang and the sanitizers), then runs each target for
+# SLICEMESH_FUZZ_SECONDS (default 22: about 90 s in all) with a fixed seed, from an empty corpus, or
+# for StructureFuzzer from one small file of each kind it reads.
 # A crash, a sanitizer report or a hang (over 20 s on one input) fails the run; libFuzzer leaves the
 # input as build-fuzz/crash-* (or timeout-*) to turn into a regression test.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${SLICEMESH_FUZZ_SECONDS:-22}"
-CC=clang-14 CXX=clang++-14 cmake -S . -B build-fuzz -DSLICEMESH_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build build-fuzz -j2 --target LogicFuzzer FinishingFuzzer VolumeFuzzer StructureFuzzer MakeStructureFuzzSeeds
+./Utilities/sanitizer-build.sh LogicFuzzer FinishingFuzzer VolumeFuzzer StructureFuzzer MakeStructureFuzzSeeds
 for fuzzer in LogicFuzzer FinishingFuzzer VolumeFuzzer StructureFuzzer; do
   rm -rf "build-fuzz/corpus/$fuzzer"
   mkdir -p "build-fuzz/corpus/$fuzzer"

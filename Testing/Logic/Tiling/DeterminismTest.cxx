@@ -27,9 +27,17 @@ ContourStack crossingStars(int seed)
   for (int k = 0; k < 6; ++k)
   {
     Slice slice{ 3.0 * k, {} };
-    slice.contours.push_back(randomStar(rng, shift(rng), shift(rng), 10.0, points(rng), false));
+    // Drawn one by one, not as a call's arguments, whose order is the compiler's choice.
+    int n = points(rng);
+    double cy = shift(rng), cx = shift(rng);
+    slice.contours.push_back(randomStar(rng, cx, cy, 10.0, n, false));
     if (k > 0 && k < 5)
-      slice.contours.push_back(randomStar(rng, shift(rng), shift(rng), 3.0, points(rng), true));
+    {
+      n = points(rng);
+      cy = shift(rng);
+      cx = shift(rng);
+      slice.contours.push_back(randomStar(rng, cx, cy, 3.0, n, true));
+    }
     stack.slices.push_back(slice);
   }
   return stack;

@@ -25,9 +25,18 @@ TEST_P(RandomStack, IsClosedManifoldAndSelfIntersectionFree)
   for (int k = 0; k < 8; ++k)
   {
     Slice slice{ k * dz, {} };
-    slice.contours.push_back(randomStar(rng, shift(rng), shift(rng), 10.0, points(rng), k % 2 == 1));
+    // Drawn one by one, not as a call's arguments: the order of those is the compiler's choice (GCC
+    // and clang differ), and the stacks must not depend on it.
+    int n = points(rng);
+    double cy = shift(rng), cx = shift(rng);
+    slice.contours.push_back(randomStar(rng, cx, cy, 10.0, n, k % 2 == 1));
     if (withHole && k > 1 && k < 6)
-      slice.contours.push_back(randomStar(rng, shift(rng), shift(rng), 3.0, points(rng), k % 3 == 0));
+    {
+      n = points(rng);
+      cy = shift(rng);
+      cx = shift(rng);
+      slice.contours.push_back(randomStar(rng, cx, cy, 3.0, n, k % 3 == 0));
+    }
     stack.slices.push_back(slice);
   }
   ReconstructionOptions options;
@@ -62,9 +71,17 @@ TEST_P(DriftingBlobs, IsClosedManifoldAndSelfIntersectionFree)
     Slice slice{ k * stack.sliceSpacing, {} };
     // Two disjoint blobs: left and right of x = 0.
     const double r1 = size(rng), r2 = size(rng);
-    slice.contours.push_back(randomStar(rng, -r1 * 1.3 - std::abs(shift(rng)) * 0.3, shift(rng), r1, points(rng), false));
+    // Drawn one by one, as above.
+    int n = points(rng);
+    double cy = shift(rng), cx = -r1 * 1.3 - std::abs(shift(rng)) * 0.3;
+    slice.contours.push_back(randomStar(rng, cx, cy, r1, n, false));
     if (k % 4 != 3)
-      slice.contours.push_back(randomStar(rng, r2 * 1.3 + std::abs(shift(rng)) * 0.3, shift(rng), r2, points(rng), true));
+    {
+      n = points(rng);
+      cy = shift(rng);
+      cx = r2 * 1.3 + std::abs(shift(rng)) * 0.3;
+      slice.contours.push_back(randomStar(rng, cx, cy, r2, n, true));
+    }
     stack.slices.push_back(slice);
   }
   ReconstructionOptions options;
