@@ -118,6 +118,12 @@ void SlabOverlay::Impl::classify()
   computeCapHeights();
 }
 
+void SlabOverlay::Impl::forgetCornerLevels()
+{
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    f->info().cornerLevel = { NoLevel, NoLevel, NoLevel };
+}
+
 std::vector<Sector> SlabOverlay::Impl::sectorsAround(VertexHandle v)
 {
   // Faces around v counter-clockwise; the edge after face f (v at index i) is (f, ccw(i)).

@@ -168,6 +168,9 @@ struct SlabOverlay::Impl
   // RegionClassification.cxx: which regions each face lies in, the correspondences, the difference
   // polygons, and the sectors around vertices common to both slices.
   void classify();
+  /** Every face's corner levels back to none, as classify() leaves them: what a Steiner insertion
+   *  changes of the classification (its new faces inherit the rest, see insertSteiner). */
+  void forgetCornerLevels();
   std::vector<slab::Sector> sectorsAround(slab::VertexHandle v);
   std::vector<slab::Sector> mixedSectors(bool assignCornerLevels);
   slab::Level edgeLevel(const slab::OverlayEdge& e, bool lowerSide) const

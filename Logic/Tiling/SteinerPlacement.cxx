@@ -103,8 +103,9 @@ bool SlabOverlay::Impl::insertSteiner(const Point2& p, double z, MeshBuilder& me
       if (distanceToSegment(p, { a.x(), a.y() }, { b.x(), b.y() }) < 1e-3 * typicalEdge)
         return false;
     }
-  // The new faces lie in the same difference polygon (insertion never crosses a constraint): they
-  // inherit its classification, so further insertions can be placed before the next classify().
+  // The new faces lie in the same difference polygon (insertion and the Delaunay flips it makes
+  // never cross a constraint): they inherit its classification, and the rest of the overlay keeps
+  // its own: the overlay is classified once, not again after each round of Steiner points.
   FaceData region = f->info();
   region.cornerLevel = { NoLevel, NoLevel, NoLevel };
   region.lifted = { -1, -1, -1 };
@@ -131,8 +132,7 @@ std::size_t SlabOverlay::Impl::liftFlatChords(MeshBuilder& mesh)
   std::size_t inserted = 0;
   for (int round = 0; round < 64; ++round)
   {
-    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
-      f->info().cornerLevel = { NoLevel, NoLevel, NoLevel };
+    forgetCornerLevels();
     std::vector<Point2> splits;
     for (const Sector& s : mixedSectors(true))
     {
@@ -192,7 +192,6 @@ std::size_t SlabOverlay::Impl::liftFlatChords(MeshBuilder& mesh)
       if (isDifference(f))
         inserted += insertSteiner(p, steinerHeight(f, p), mesh);
     }
-    classify();
   }
   std::ostringstream message;
   message << "tiling between z = " << z0 << " and " << z1 << " mm did not settle";
@@ -322,7 +321,7 @@ std::size_t SlabOverlay::Impl::insertCandidates(const std::vector<std::pair<Poin
       inserted += insertSteiner(p, z, mesh, optionalClearance());
   }
   if (inserted > 0)
-    classify();
+    forgetCornerLevels();
   return inserted;
 }
 
@@ -386,7 +385,7 @@ std::size_t SlabOverlay::Impl::refineBadTriangles(MeshBuilder& mesh, double minA
     if (added == 0)
       break;
     inserted += added;
-    classify();
+    forgetCornerLevels();
     changed.clear();
     for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
       if (v->info() >= firstNew)
