@@ -4,6 +4,7 @@
 #include "Core/SpatialHash.h"
 
 #include <algorithm>
+#include <tuple>
 #include <cmath>
 
 namespace slicemesh
