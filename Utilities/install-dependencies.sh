@@ -17,7 +17,8 @@ packages=(
   # --snapshot renders through X: Xvfb (xvfb-run needs xauth) where there is no display.
   xvfb xauth
   mricron-data insighttoolkit5-examples
-  # The test command's short fuzz run (Utilities/fuzz-smoke.sh): clang and its libFuzzer runtime.
+  # The test command's sanitizer tree, shared by its short fuzz run and its sanitizer run of the unit
+  # suites (Utilities/sanitizer-build.sh): clang and its libFuzzer runtime.
   clang-14 libclang-rt-14-dev
   # The cohort workflow (Workflows/cohort) and its test on a one-node Slurm started on localhost.
   snakemake slurm-wlm munge

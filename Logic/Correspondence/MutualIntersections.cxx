@@ -4,8 +4,8 @@
 #include "Core/SpatialHash.h"
 
 #include <algorithm>
-#include <tuple>
 #include <cmath>
+#include <tuple>
 
 namespace slicemesh
 {

@@ -27,6 +27,18 @@ inline Polygon2 randomStar(std::mt19937& rng, double cx, double cy, double radiu
   return polygon;
 }
 
+/** A random star (as randomStar) of `points` points around (shift, shift), the three drawn from
+ *  rng one by one (count, y, x) rather than as a call's arguments, whose order of evaluation is the
+ *  compiler's choice (GCC and clang differ): the stacks must not depend on the compiler. */
+inline Polygon2 randomShiftedStar(std::mt19937& rng, std::uniform_real_distribution<double>& shift,
+                                  std::uniform_int_distribution<int>& points, double radius, bool clockwise)
+{
+  const int n = points(rng);
+  const double cy = shift(rng);
+  const double cx = shift(rng);
+  return randomStar(rng, cx, cy, radius, n, clockwise);
+}
+
 /** A circle of n points, counter-clockwise unless reversed. */
 inline Polygon2 circle(double cx, double cy, double r, int n, bool clockwise = false, double phase = 0.0)
 {

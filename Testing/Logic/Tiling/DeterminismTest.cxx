@@ -11,7 +11,7 @@
 #include <vector>
 
 using namespace slicemesh;
-using slicemesh::testing::randomStar;
+using slicemesh::testing::randomShiftedStar;
 
 namespace
 {
@@ -27,17 +27,9 @@ ContourStack crossingStars(int seed)
   for (int k = 0; k < 6; ++k)
   {
     Slice slice{ 3.0 * k, {} };
-    // Drawn one by one, not as a call's arguments, whose order is the compiler's choice.
-    int n = points(rng);
-    double cy = shift(rng), cx = shift(rng);
-    slice.contours.push_back(randomStar(rng, cx, cy, 10.0, n, false));
+    slice.contours.push_back(randomShiftedStar(rng, shift, points, 10.0, false));
     if (k > 0 && k < 5)
-    {
-      n = points(rng);
-      cy = shift(rng);
-      cx = shift(rng);
-      slice.contours.push_back(randomStar(rng, cx, cy, 3.0, n, true));
-    }
+      slice.contours.push_back(randomShiftedStar(rng, shift, points, 3.0, true));
     stack.slices.push_back(slice);
   }
   return stack;

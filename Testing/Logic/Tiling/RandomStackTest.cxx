@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 using namespace slicemesh;
+using slicemesh::testing::randomShiftedStar;
 using slicemesh::testing::randomStar;
 
 class RandomStack : public ::testing::TestWithParam<int>
@@ -25,18 +26,9 @@ TEST_P(RandomStack, IsClosedManifoldAndSelfIntersectionFree)
   for (int k = 0; k < 8; ++k)
   {
     Slice slice{ k * dz, {} };
-    // Drawn one by one, not as a call's arguments: the order of those is the compiler's choice (GCC
-    // and clang differ), and the stacks must not depend on it.
-    int n = points(rng);
-    double cy = shift(rng), cx = shift(rng);
-    slice.contours.push_back(randomStar(rng, cx, cy, 10.0, n, k % 2 == 1));
+    slice.contours.push_back(randomShiftedStar(rng, shift, points, 10.0, k % 2 == 1));
     if (withHole && k > 1 && k < 6)
-    {
-      n = points(rng);
-      cy = shift(rng);
-      cx = shift(rng);
-      slice.contours.push_back(randomStar(rng, cx, cy, 3.0, n, k % 3 == 0));
-    }
+      slice.contours.push_back(randomShiftedStar(rng, shift, points, 3.0, k % 3 == 0));
     stack.slices.push_back(slice);
   }
   ReconstructionOptions options;
@@ -71,7 +63,7 @@ TEST_P(DriftingBlobs, IsClosedManifoldAndSelfIntersectionFree)
     Slice slice{ k * stack.sliceSpacing, {} };
     // Two disjoint blobs: left and right of x = 0.
     const double r1 = size(rng), r2 = size(rng);
-    // Drawn one by one, as above.
+    // Drawn one by one, not as a call's arguments (see randomShiftedStar).
     int n = points(rng);
     double cy = shift(rng), cx = -r1 * 1.3 - std::abs(shift(rng)) * 0.3;
     slice.contours.push_back(randomStar(rng, cx, cy, r1, n, false));
