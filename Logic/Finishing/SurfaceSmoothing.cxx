@@ -1,7 +1,6 @@
 #include "Finishing/SurfaceSmoothing.h"
 
 #include "Core/AreaNormal.h"
-#include "Core/BoundingBox.h"
 #include "Core/ParallelFor.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/TriangleAngles.h"
@@ -76,41 +75,40 @@ VertexNeighbours neighboursOf(const TriangleMesh& mesh, const std::vector<std::i
   return neighbours;
 }
 
-/** Spreads the low 10 bits of x three bits apart (bit i goes to bit 3i). */
-std::uint32_t spreadBits(std::uint32_t x)
+/** The vertices in the order the smoothing visits them: breadth first over the edges, each connected
+ *  piece from its lowest vertex, a vertex's neighbours in increasing order. Two neighbours are then
+ *  at most one level of the search apart, so within two levels' rows of each other (under 700 on
+ *  the thick scaling ellipsoid's 130,000 vertices), and a step reads its neighbours from the cache. (In Morton order of a grid over the
+ *  bounding box, 1% of the edges joined vertices tens of thousands of rows apart, and a step waited
+ *  on memory for them; in the remesh's own order, splits appended at the end, far more.) */
+std::vector<std::int32_t> breadthFirstOrder(const TriangleMesh& mesh, unsigned int threads)
 {
-  x &= 0x3ff;
-  x = (x | (x << 16)) & 0x030000ff;
-  x = (x | (x << 8)) & 0x0300f00f;
-  x = (x | (x << 4)) & 0x030c30c3;
-  x = (x | (x << 2)) & 0x09249249;
-  return x;
-}
-
-/** The vertices in the order the smoothing visits them: by their cell of a 1024^3 grid over the
- *  bounding box, cells in Morton (z-) order, ties by index. Neighbours then sit close in memory.
- *  (A remesh appends the vertices its splits make at the end: in that order every step read its
- *  neighbours from all over a large mesh, and waited on memory most of the time.) */
-std::vector<std::int32_t> spatialOrder(const std::vector<Point3>& points)
-{
-  BoundingBox box;
-  for (const Point3& p : points)
-    box.add(p);
-  const auto& lo = box.low;
-  const double extent = std::max({ box.high[0] - lo[0], box.high[1] - lo[1], box.high[2] - lo[2], 1e-300 });
-  auto cell = [&](double c, double low) { return static_cast<std::uint32_t>(std::min(1023.0, (c - low) / extent * 1024.0)); };
-  std::vector<std::pair<std::uint32_t, std::int32_t>> keyed(points.size());
-  for (std::size_t v = 0; v < points.size(); ++v)
+  std::vector<std::int32_t> identity(mesh.points.size());
+  std::iota(identity.begin(), identity.end(), 0);
+  const VertexNeighbours neighbours = neighboursOf(mesh, identity, threads);
+  std::vector<char> reached(mesh.points.size(), 0);
+  std::vector<std::int32_t> order;
+  order.reserve(mesh.points.size());
+  for (std::size_t seed = 0; seed < mesh.points.size(); ++seed)
   {
-    const Point3& p = points[v];
-    const std::uint32_t key =
-      spreadBits(cell(p.x, lo[0])) | (spreadBits(cell(p.y, lo[1])) << 1) | (spreadBits(cell(p.z, lo[2])) << 2);
-    keyed[v] = { key, static_cast<std::int32_t>(v) };
+    if (reached[seed])
+      continue;
+    reached[seed] = 1;
+    order.push_back(static_cast<std::int32_t>(seed));
+    for (std::size_t head = order.size() - 1; head < order.size(); ++head)
+    {
+      const auto v = static_cast<std::size_t>(order[head]);
+      for (std::size_t k = neighbours.first[v]; k < neighbours.first[v + 1]; ++k)
+      {
+        const auto u = static_cast<std::size_t>(neighbours.ids[k]);
+        if (!reached[u])
+        {
+          reached[u] = 1;
+          order.push_back(static_cast<std::int32_t>(u));
+        }
+      }
+    }
   }
-  std::sort(keyed.begin(), keyed.end());
-  std::vector<std::int32_t> order(points.size());
-  for (std::size_t i = 0; i < keyed.size(); ++i)
-    order[i] = keyed[i].second;
   return order;
 }
 
@@ -495,8 +493,8 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
   if (bounded && !std::all_of(options.maxDisplacement.begin(), options.maxDisplacement.end(),
                               [](double axis) { return axis > 0.0 && std::isfinite(axis); }))
     throw Error("surface smoothing: the displacement bound must be positive along every axis, or 0 along all");
-  // The steps run on the vertices in spatial order (points[i] is vertex order[i]).
-  const std::vector<std::int32_t> order = spatialOrder(mesh.points);
+  // The steps run on the vertices in breadth-first order (points[i] is vertex order[i]).
+  const std::vector<std::int32_t> order = breadthFirstOrder(mesh, threads);
   std::vector<std::int32_t> rank(order.size());
   for (std::size_t i = 0; i < order.size(); ++i)
     rank[static_cast<std::size_t>(order[i])] = static_cast<std::int32_t>(i);
