@@ -2,6 +2,7 @@
 
 #include "Core/AreaNormal.h"
 #include "Core/ParallelFor.h"
+#include "Finishing/RemeshingPasses.h"
 #include "Finishing/RemeshingRegions.h"
 #include "Finishing/TriangleMeshTree.h"
 #include "Measures/TriangleAngles.h"
@@ -9,7 +10,6 @@
 #include "Measures/SurfaceMeshConversion.h"
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
-#include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
 #include <cmath>
@@ -232,12 +232,6 @@ std::vector<Vertex> collapseNarrowEdges(SurfaceMesh& surface,
   return collapsed;
 }
 
-/** Stands in for CGAL's projection onto the input, which is done separately (remeshPiece). */
-struct NoProjection
-{
-  Kernel::Point_3 operator()(Vertex) const { return CGAL::ORIGIN; }
-};
-
 Kernel::Point_3 unknownPoint()
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -298,23 +292,6 @@ void projectOntoInput(SurfaceMesh& surface, PointMap onInput, const Tree& tree, 
                     });
 }
 
-/** One round of CGAL's split, collapse and flip over `patch` (faces of `surface`), without its
- *  relaxation or projection (ours run after it); edges marked in `constrained` are kept, and with
- *  `bordered` neither split nor collapsed. */
-template <typename FaceRange>
-void splitCollapseFlip(const FaceRange& patch, SurfaceMesh& surface,
-                       const SurfaceMesh::Property_map<SurfaceMesh::Edge_index, bool>& constrained, bool bordered,
-                       double targetEdgeLength)
-{
-  PMP::isotropic_remeshing(patch, targetEdgeLength, surface,
-                           CGAL::parameters::number_of_iterations(1)
-                             .number_of_relaxation_steps(0)
-                             .do_project(false)
-                             .projection_functor(NoProjection())
-                             .edge_is_constrained_map(constrained)
-                             .protect_constraints(bordered));
-}
-
 /** After the rounds: the shortest edges of the triangles still under 30 degrees collapsed
  *  (collapseNarrowEdges), then the triangles within two rings of each collapse remeshed once more
  *  (the ring around them kept as their border) and their vertices, with those the round adds,
@@ -323,7 +300,7 @@ void splitCollapseFlip(const FaceRange& patch, SurfaceMesh& surface,
 template <typename PointMap>
 void remeshAroundNarrowTriangles(SurfaceMesh& surface,
                                  const SurfaceMesh::Property_map<SurfaceMesh::Edge_index, bool>& constrained,
-                                 bool bordered, double targetEdgeLength, PointMap onInput, const Tree& tree,
+                                 double targetEdgeLength, PointMap onInput, const Tree& tree,
                                  unsigned int threads)
 {
   const std::vector<Vertex> collapsed = collapseNarrowEdges(surface, constrained, targetEdgeLength);
@@ -353,16 +330,22 @@ void remeshAroundNarrowTriangles(SurfaceMesh& surface,
     ring.swap(next);
   }
   surface.collect_garbage(); // the property map is compacted with the vertices
-  std::vector<SurfaceMesh::Face_index> patch;
-  for (SurfaceMesh::Face_index f : surface.faces())
+  // The patch: the triangles whose corners are all in it. Every edge not between two of them is
+  // held for the round, so the ring around the patch stays as it is.
+  auto held = surface.add_property_map<SurfaceMesh::Edge_index, bool>("e:held_around_patch", false).first;
+  auto inside = [&](SurfaceMesh::Halfedge_index h)
   {
-    bool inside = true;
-    for (Vertex v : CGAL::vertices_around_face(surface.halfedge(f), surface))
-      inside = inside && inPatch[v];
-    if (inside)
-      patch.push_back(f);
-  }
-  splitCollapseFlip(patch, surface, constrained, bordered, targetEdgeLength);
+    if (surface.is_border(h))
+      return false;
+    for (Vertex v : CGAL::vertices_around_face(h, surface))
+      if (!inPatch[v])
+        return false;
+    return true;
+  };
+  for (SurfaceMesh::Edge_index e : surface.edges())
+    held[e] = constrained[e] || !inside(surface.halfedge(e)) || !inside(surface.opposite(surface.halfedge(e)));
+  splitCollapseFlip(surface, held, targetEdgeLength);
+  surface.remove_property_map(held);
   surface.collect_garbage();
   std::vector<char> moving(surface.number_of_vertices());
   for (Vertex v : surface.vertices())
@@ -372,8 +355,8 @@ void remeshAroundNarrowTriangles(SurfaceMesh& surface,
   projectOntoInput(surface, onInput, tree, threads, &moving);
 }
 
-/** Remeshes one region of the input piece (all of it, or a slab or band of it): per round, CGAL's
- *  split, collapse and flip, then our own relaxation sweep; after the last round, the projection
+/** Remeshes one region of the input piece (all of it, or a slab or band of it): per round, a split,
+ *  collapse and flip (splitCollapseFlip), then a relaxation sweep; after the last round, the projection
  *  onto the input piece (`tree`). A round's relaxation moves a vertex within its tangent plane by a
  *  fraction of an edge, so the rounds between stay close to a piece many edges across: projecting
  *  after each (as Botsch and Kobbelt do) gave the same distances and triangles within 0.3% for three
@@ -392,11 +375,9 @@ MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions&
   // border could otherwise join two border vertices by a new edge, which the neighbouring region may
   // have too: four triangles on one edge once the regions are put back together.
   auto constrained = surface.add_property_map<SurfaceMesh::Edge_index, bool>("e:constrained", false).first;
-  bool bordered = false;
   for (Vertex v : surface.vertices())
     if (surface.is_border(v))
     {
-      bordered = true;
       for (SurfaceMesh::Face_index f : CGAL::faces_around_target(surface.halfedge(v), surface))
         if (f != SurfaceMesh::null_face())
           for (SurfaceMesh::Halfedge_index h : CGAL::halfedges_around_face(surface.halfedge(f), surface))
@@ -408,13 +389,13 @@ MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions&
     onInput[v] = surface.point(v);
   for (int round = 0; round < options.iterations; ++round)
   {
-    splitCollapseFlip(faces(surface), surface, constrained, bordered, options.targetEdgeLength);
+    splitCollapseFlip(surface, constrained, options.targetEdgeLength);
     surface.collect_garbage(); // the next round's face index map must be dense
     relaxTangentially(surface, threads);
     if (options.projectEachRound || round + 1 == options.iterations)
       projectOntoInput(surface, onInput, tree, threads);
   }
-  remeshAroundNarrowTriangles(surface, constrained, bordered, options.targetEdgeLength, onInput, tree, threads);
+  remeshAroundNarrowTriangles(surface, constrained, options.targetEdgeLength, onInput, tree, threads);
   MeshRegion result;
   result.mesh = toTriangleMesh(surface);
   for (Vertex v : surface.vertices())

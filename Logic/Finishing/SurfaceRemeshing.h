@@ -21,8 +21,8 @@ struct SurfaceRemeshingOptions
    *  side, then in bands around their seams; 0: always whole. Small enough for a slab's remesh to
    *  work mostly in the processor's cache (the thick-slice ellipsoid's slabs took 0.6 s at 20,000
    *  against 0.9-1.2 s at 40,000 on two threads), and for the slabs in work side by side to hold
-   *  little memory: CGAL's remesh holds several hundred bytes a triangle, so a slab of 20,000 costs
-   *  about 10 MB while it is remeshed (a 128^3 sphere peaked at 73 MB with slabs of 20,000, at 59
+   *  little memory: a slab is held in CGAL's surface mesh while it is remeshed, several hundred bytes
+   *  a triangle (with CGAL's own remesher, a 128^3 sphere peaked at 73 MB with slabs of 20,000, at 59
    *  with slabs of 10,000, in the same time). */
   std::size_t trianglesPerRegion = 10000;
   /** The voxel spacing of the grid the surface was traced on (x, y, slice; mm), when the target edge
@@ -34,7 +34,7 @@ struct SurfaceRemeshingOptions
 
 /** Remeshes the surface with triangles whose edges are close to the target length: long edges
  *  split, short ones collapsed, edges flipped towards valence 6, vertices relaxed tangentially, then
- *  projected back onto the input surface (Botsch and Kobbelt's method, as CGAL implements it in
+ *  projected back onto the input surface (Botsch and Kobbelt's method, by the rules of CGAL's
  *  Polygon_mesh_processing::isotropic_remeshing). The topology is kept. Throws Error if the mesh is
  *  not a manifold surface CGAL can hold. The relaxation's targets and the projection run on `threads`
  *  threads (0: every core), vertex by vertex, so the result does not depend on the number. */
