@@ -160,20 +160,22 @@ bool collapseSpoilsATriangle(const Mesh& mesh, Halfedge h)
   return false;
 }
 
-bool collapseAllowed(const Mesh& mesh, const ConstrainedEdges& constrained, Halfedge h)
-{
-  return !constrainedOrBorder(mesh, constrained, mesh.edge(h)) &&
-         !(held(mesh, constrained, mesh.source(h)) && held(mesh, constrained, mesh.target(h)));
-}
-
 void collapseShortEdges(Mesh& mesh, const ConstrainedEdges& constrained, double low, double high)
 {
   const double squaredLow = low * low, squaredHigh = high * high;
+  // Found once: a collapse never removes a held vertex nor makes one held (of the two edges it
+  // merges, the constrained one is kept, and it already touched the vertex kept).
+  std::vector<char> heldVertex(mesh.num_vertices(), 0);
+  for (Vertex v : mesh.vertices())
+    heldVertex[v.idx()] = held(mesh, constrained, v);
+  auto isHeld = [&](Vertex v) { return heldVertex[v.idx()] != 0; };
+  auto collapseAllowed = [&](Halfedge h)
+  { return !constrainedOrBorder(mesh, constrained, mesh.edge(h)) && !(isHeld(mesh.source(h)) && isHeld(mesh.target(h))); };
   std::priority_queue<Waiting, std::vector<Waiting>, LongerFirstOut> waiting;
   auto wait = [&](Halfedge h)
   {
     const double length = squaredLength(mesh, h);
-    if (length < squaredLow && collapseAllowed(mesh, constrained, h))
+    if (length < squaredLow && collapseAllowed(h))
       waiting.push({ length, h });
   };
   for (Edge e : mesh.edges())
@@ -182,27 +184,35 @@ void collapseShortEdges(Mesh& mesh, const ConstrainedEdges& constrained, double 
   {
     const Waiting w = waiting.top();
     waiting.pop();
-    if (!current(mesh, w) || !collapseAllowed(mesh, constrained, w.halfedge))
+    if (!current(mesh, w) || !collapseAllowed(w.halfedge))
       continue;
     // h's source goes into its target: a held vertex stays.
     Halfedge h = w.halfedge;
-    const bool sourceHeld = held(mesh, constrained, mesh.source(h)), targetHeld = held(mesh, constrained, mesh.target(h));
+    const bool sourceHeld = isHeld(mesh.source(h)), targetHeld = isHeld(mesh.target(h));
     if (sourceHeld)
       h = mesh.opposite(h);
+    const bool eitherWay = !sourceHeld && !targetHeld;
+    // Whether an edge to the source's neighbours would grow past 4/3 of the target. The cheapest
+    // test, first where the direction is settled (most short edges fail it).
+    auto tooLong = [&](Halfedge into)
+    {
+      const Point& kept = mesh.point(mesh.target(into));
+      for (Vertex neighbour : CGAL::vertices_around_target(mesh.halfedge(mesh.source(into)), mesh))
+        if (CGAL::squared_distance(kept, mesh.point(neighbour)) > squaredHigh)
+          return true;
+      return false;
+    };
+    if (!eitherWay && tooLong(h))
+      continue;
     if (collapseSpoilsATriangle(mesh, h))
     {
-      if (sourceHeld || targetHeld || collapseSpoilsATriangle(mesh, mesh.opposite(h)))
+      if (!eitherWay || collapseSpoilsATriangle(mesh, mesh.opposite(h)))
         continue;
       h = mesh.opposite(h);
     }
-    if (!CGAL::Euler::does_satisfy_link_condition(mesh.edge(h), mesh))
+    if ((eitherWay && tooLong(h)) || !CGAL::Euler::does_satisfy_link_condition(mesh.edge(h), mesh))
       continue;
-    const Vertex gone = mesh.source(h), kept = mesh.target(h);
-    bool tooLong = false;
-    for (Vertex neighbour : CGAL::vertices_around_target(mesh.halfedge(gone), mesh))
-      tooLong = tooLong || CGAL::squared_distance(mesh.point(kept), mesh.point(neighbour)) > squaredHigh;
-    if (tooLong)
-      continue;
+    const Vertex kept = mesh.target(h);
     // Merging the two edges of each removed triangle, the constrained one is the one kept.
     CGAL::Euler::collapse_edge(mesh.edge(h), mesh, constrained);
     for (Halfedge around : CGAL::halfedges_around_target(kept, mesh))

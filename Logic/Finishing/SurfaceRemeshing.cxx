@@ -72,7 +72,10 @@ bool unfoldedAround(Vertex v, const SurfaceMesh& surface)
   {
     if (surface.is_border(h))
       continue;
-    const Kernel::Vector_3 n = PMP::compute_face_normal(surface.face(h), surface);
+    // Only the signs of dot products matter: the cross product, not the unit normal.
+    const Kernel::Point_3& a = surface.point(surface.source(h));
+    const Kernel::Vector_3 n = CGAL::cross_product(Kernel::Vector_3(a, surface.point(surface.target(h))),
+                                                   Kernel::Vector_3(a, surface.point(surface.target(surface.next(h)))));
     if (n == CGAL::NULL_VECTOR)
       continue; // no area, no direction
     if (!any)
