@@ -73,4 +73,21 @@ double smallestAngleCosine(const Point3& a, const Point3& b, const Point3& c)
   return (ax * bx + ay * by + az * bz) / std::sqrt(length2[(k + 2) % 3] * length2[(k + 1) % 3]);
 }
 
+SmallestAngleBound::SmallestAngleBound(double radians)
+  : m_Radians(radians)
+  , m_Cosine(std::cos(radians))
+{
+}
+
+bool SmallestAngleBound::metBy(const Point3& a, const Point3& b, const Point3& c) const
+{
+  constexpr double clearly = 1e-7;
+  const double cosine = smallestAngleCosine(a, b, c);
+  if (cosine < m_Cosine - clearly)
+    return true;
+  if (cosine > m_Cosine + clearly)
+    return false;
+  return smallestAngle(a, b, c) >= m_Radians;
+}
+
 } // namespace slicemesh

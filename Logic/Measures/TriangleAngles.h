@@ -30,6 +30,21 @@ bool angleUnder(double radians, double boundDegrees);
  *  inverse trigonometry (for counts over whole meshes); 1, an angle of 0, for a triangle without area. */
 double smallestAngleCosine(const Point3& a, const Point3& b, const Point3& c);
 
+/** A lower bound on a triangle's smallest angle. metBy(a, b, c) is smallestAngle(a, b, c) >= the
+ *  bound, decided by the angle's cosine where that lies more than 1e-7 from the bound's (far above
+ *  either's rounding: an angle moves at least as much as its cosine), by the angle itself only
+ *  near a tie: the same answers, mostly without an arc tangent. */
+class SmallestAngleBound
+{
+public:
+  explicit SmallestAngleBound(double radians);
+  bool metBy(const Point3& a, const Point3& b, const Point3& c) const;
+
+private:
+  double m_Radians;
+  double m_Cosine;
+};
+
 } // namespace slicemesh
 
 #endif

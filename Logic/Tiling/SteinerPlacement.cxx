@@ -336,6 +336,7 @@ std::size_t SlabOverlay::Impl::refineBadTriangles(MeshBuilder& mesh, double minA
   // vertices the round before inserted or flipped: elsewhere nothing changed, and a triangle that
   // stayed bad had its candidate turned down already (the points placed only grow).
   std::size_t inserted = 0;
+  const SmallestAngleBound good(minAngle);
   SpacingGrid placed(edgeLength);
   std::vector<VertexHandle> changed;
   for (int round = 0; round < 12 && inserted < budget; ++round)
@@ -352,7 +353,7 @@ std::size_t SlabOverlay::Impl::refineBadTriangles(MeshBuilder& mesh, double minA
         placed.add(b);
         placed.add(c);
       }
-      if (smallestAngle(a, b, c) >= minAngle)
+      if (good.metBy(a, b, c))
         return;
       const Point3 center = circumcenter(a, b, c);
       const double radius = std::hypot(center.x - a.x, center.y - a.y, center.z - a.z);

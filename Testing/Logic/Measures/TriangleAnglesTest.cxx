@@ -92,3 +92,39 @@ TEST(TriangleAngles, AnAngleThatIsTheBoundIsNotUnderIt)
   EXPECT_TRUE(angleUnder(29.999 * M_PI / 180.0, 30.0));
   EXPECT_FALSE(angleUnder(30.001 * M_PI / 180.0, 30.0));
 }
+
+TEST(TriangleAngles, ASmallestAngleBoundAnswersAsTheAngleDoes)
+{
+  // Random triangles, and isosceles ones whose apex angle, their smallest, is the bound itself or
+  // a few ulps to a millionth of a degree off it (where the cosine cannot decide), plus slivers
+  // and a triangle without area: metBy agrees with comparing smallestAngle every time.
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> coordinate(-5.0, 5.0);
+  for (double boundDegrees : { 10.0, 20.0, 30.0 })
+  {
+    const double bound = boundDegrees * M_PI / 180.0;
+    const SmallestAngleBound good(bound);
+    std::size_t met = 0, checked = 0;
+    auto check = [&](const Point3& a, const Point3& b, const Point3& c)
+    {
+      const bool expected = smallestAngle(a, b, c) >= bound;
+      EXPECT_EQ(good.metBy(a, b, c), expected) << degrees(smallestAngle(a, b, c));
+      met += expected;
+      ++checked;
+    };
+    for (int i = 0; i < 20000; ++i)
+      check({ coordinate(random), coordinate(random), coordinate(random) },
+            { coordinate(random), coordinate(random), coordinate(random) },
+            { coordinate(random), coordinate(random), coordinate(random) });
+    for (double off : { 0.0, 1e-15, -1e-15, 1e-12, -1e-12, 1e-9, -1e-9, 1e-8, -1e-8 })
+    {
+      const double apex = bound + off, legs = 3.0;
+      const Point3 o{ 0.5, -1.0, 2.0 };
+      check(o, { o.x + legs, o.y, o.z }, { o.x + legs * std::cos(apex), o.y + legs * std::sin(apex), o.z });
+    }
+    check({ 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 1e-9, 0 });
+    check({ 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 });
+    EXPECT_GT(met, 0u);
+    EXPECT_LT(met, checked);
+  }
+}
