@@ -17,7 +17,6 @@ using Mesh = CgalSurfaceMesh;
 using Vertex = Mesh::Vertex_index;
 using Halfedge = Mesh::Halfedge_index;
 using Edge = Mesh::Edge_index;
-using Face = Mesh::Face_index;
 using Point = CgalKernel::Point_3;
 using Vector = CgalKernel::Vector_3;
 
@@ -261,14 +260,6 @@ bool otherDiagonalBetter(const Mesh& mesh, Halfedge h)
   return splitAt02 <= splitAt13;
 }
 
-Vector areaNormal(const Mesh& mesh, Halfedge h)
-{
-  const Point& a = mesh.point(mesh.source(h));
-  const Point& b = mesh.point(mesh.target(h));
-  const Point& c = mesh.point(mesh.target(mesh.next(h)));
-  return CGAL::cross_product(Vector(a, b), Vector(a, c));
-}
-
 /** Whether the triangles around v, each against the one before it that has area, face the same
  *  side (positive dot product of their normals). */
 bool unfoldedAround(const Mesh& mesh, Vertex v)
@@ -349,6 +340,14 @@ void flipForValence(Mesh& mesh, const ConstrainedEdges& constrained)
 }
 
 } // namespace
+
+CgalKernel::Vector_3 areaNormal(const CgalSurfaceMesh& mesh, CgalSurfaceMesh::Halfedge_index h)
+{
+  const Point& a = mesh.point(mesh.source(h));
+  const Point& b = mesh.point(mesh.target(h));
+  const Point& c = mesh.point(mesh.target(mesh.next(h)));
+  return CGAL::cross_product(Vector(a, b), Vector(a, c));
+}
 
 void splitCollapseFlip(CgalSurfaceMesh& surface, const ConstrainedEdges& constrained, double targetEdgeLength)
 {

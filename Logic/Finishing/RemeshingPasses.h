@@ -11,6 +11,10 @@ namespace slicemesh
 
 using ConstrainedEdges = CgalSurfaceMesh::Property_map<CgalSurfaceMesh::Edge_index, bool>;
 
+/** Twice the area times the unit normal of the triangle of h (h not a border halfedge): the cross
+ *  product of its edges from h's source. Enough wherever only the sign of a dot product matters. */
+CgalKernel::Vector_3 areaNormal(const CgalSurfaceMesh& mesh, CgalSurfaceMesh::Halfedge_index h);
+
 /** One round over every face of `surface`: edges longer than 4/3 of `targetEdgeLength` split at
  *  their middle, longest first; edges shorter than 4/5 collapsed, shortest first, into one of their
  *  ends where no triangle turns over or loses its area, the link condition holds and no edge grows

@@ -72,10 +72,8 @@ bool unfoldedAround(Vertex v, const SurfaceMesh& surface)
   {
     if (surface.is_border(h))
       continue;
-    // Only the signs of dot products matter: the cross product, not the unit normal.
-    const Kernel::Point_3& a = surface.point(surface.source(h));
-    const Kernel::Vector_3 n = CGAL::cross_product(Kernel::Vector_3(a, surface.point(surface.target(h))),
-                                                   Kernel::Vector_3(a, surface.point(surface.target(surface.next(h)))));
+    // Only the signs of dot products matter: the area normal, not the unit normal.
+    const Kernel::Vector_3 n = areaNormal(surface, h);
     if (n == CGAL::NULL_VECTOR)
       continue; // no area, no direction
     if (!any)

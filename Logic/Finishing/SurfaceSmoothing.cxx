@@ -78,9 +78,10 @@ VertexNeighbours neighboursOf(const TriangleMesh& mesh, const std::vector<std::i
 /** The vertices in the order the smoothing visits them: breadth first over the edges, each connected
  *  piece from its lowest vertex, a vertex's neighbours in increasing order. Two neighbours are then
  *  at most one level of the search apart, so within two levels' rows of each other (under 700 on
- *  the thick scaling ellipsoid's 130,000 vertices), and a step reads its neighbours from the cache. (In Morton order of a grid over the
- *  bounding box, 1% of the edges joined vertices tens of thousands of rows apart, and a step waited
- *  on memory for them; in the remesh's own order, splits appended at the end, far more.) */
+ *  the thick scaling ellipsoid's 130,000 vertices), and a step reads its neighbours from the cache.
+ *  (In Morton order of a grid over the bounding box, 1% of the edges joined vertices tens of
+ *  thousands of rows apart, and a step waited on memory for them; in the remesh's own order,
+ *  splits appended at the end, far more.) */
 std::vector<std::int32_t> breadthFirstOrder(const TriangleMesh& mesh, unsigned int threads)
 {
   std::vector<std::int32_t> identity(mesh.points.size());

@@ -81,11 +81,10 @@ SmallestAngleBound::SmallestAngleBound(double radians)
 
 bool SmallestAngleBound::metBy(const Point3& a, const Point3& b, const Point3& c) const
 {
-  constexpr double clearly = 1e-7;
   const double cosine = smallestAngleCosine(a, b, c);
-  if (cosine < m_Cosine - clearly)
+  if (cosine < m_Cosine - smallestAngleCosineTie)
     return true;
-  if (cosine > m_Cosine + clearly)
+  if (cosine > m_Cosine + smallestAngleCosineTie)
     return false;
   return smallestAngle(a, b, c) >= m_Radians;
 }

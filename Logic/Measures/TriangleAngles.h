@@ -30,10 +30,15 @@ bool angleUnder(double radians, double boundDegrees);
  *  inverse trigonometry (for counts over whole meshes); 1, an angle of 0, for a triangle without area. */
 double smallestAngleCosine(const Point3& a, const Point3& b, const Point3& c);
 
+/** How far apart two smallest-angle cosines must lie for them to decide a comparison of the
+ *  angles: far above either's rounding, and an angle moves at least as much as its cosine, so two
+ *  angles whose cosines differ by more differ by more too (by more than any margin under it).
+ *  Nearer, a comparison falls back on the angles themselves (smallestAngle). */
+constexpr double smallestAngleCosineTie = 1e-7;
+
 /** A lower bound on a triangle's smallest angle. metBy(a, b, c) is smallestAngle(a, b, c) >= the
- *  bound, decided by the angle's cosine where that lies more than 1e-7 from the bound's (far above
- *  either's rounding: an angle moves at least as much as its cosine), by the angle itself only
- *  near a tie: the same answers, mostly without an arc tangent. */
+ *  bound, decided by the angle's cosine unless it lies within smallestAngleCosineTie of the
+ *  bound's: the same answers, mostly without an arc tangent. */
 class SmallestAngleBound
 {
 public:

@@ -66,20 +66,19 @@ std::size_t SlabOverlay::Impl::flipTowardsSurfaceQuality(const MeshBuilder& mesh
     if (distanceToSegment(pp, pa, pb) < 1e-3 * typicalEdge || distanceToSegment(pq, pa, pb) < 1e-3 * typicalEdge)
       return false;
     const Point3 A = lifted(a), B = lifted(b), P = lifted(p), Q = lifted(q);
-    // The smallest angles compared by their cosines first: where those differ by far more than
-    // their rounding (and than the margin below: an angle moves at least as much as its cosine),
-    // they decide as the angles would, without the arc tangents, which were most of this pass.
+    // The smallest angles compared by their cosines first (smallestAngleCosineTie: outside a near
+    // tie they decide as the angles would, the margin below included), without the arc tangents,
+    // which were most of this pass.
     const double cosineBefore = std::max(smallestAngleCosine(A, P, Q), smallestAngleCosine(B, Q, P));
     const double cosineAfter = std::max(smallestAngleCosine(A, B, Q), smallestAngleCosine(B, A, P));
-    constexpr double clearly = 1e-7;
-    if (cosineAfter > cosineBefore + clearly)
+    if (cosineAfter > cosineBefore + smallestAngleCosineTie)
       return false;
     // Nor into a crease sharper than a right angle across the new edge: steep triangles have good
     // angles, but two of them meeting in a knife-edge ridge nearly fold onto each other.
     const double crease = normalsCosine(A, B, Q, P);
     if (crease < 0.0 && crease < normalsCosine(P, Q, A, B))
       return false;
-    if (cosineAfter < cosineBefore - clearly)
+    if (cosineAfter < cosineBefore - smallestAngleCosineTie)
       return true;
     const double before = std::min(smallestAngle(A, P, Q), smallestAngle(B, Q, P));
     const double after = std::min(smallestAngle(A, B, Q), smallestAngle(B, A, P));
