@@ -1,12 +1,17 @@
-// DICOM RT Structure Sets through DCMTK's typed RT classes (dcmrt): the plugin SliceMeshStructuresDicom.
+// DICOM RT Structure Sets through DCMTK (its ROIs by dcmrt's typed sequence, contours from the dataset): the plugin SliceMeshStructuresDicom.
 #include "RTStructureSetPlugin.h"
 
-#include <dcmtk/dcmdata/dcbytstr.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
-#include <dcmtk/dcmrt/drtstrct.h>
+#include <dcmtk/dcmdata/dcdeftag.h>
+#include <dcmtk/dcmdata/dcitem.h>
+#include <dcmtk/dcmrt/seq/drtssrs.h>
 #include <dcmtk/oflog/oflog.h>
 
 #include <algorithm>
+#include <charconv>
+#include <string>
+#include <system_error>
+#include <vector>
 #include <map>
 
 namespace slicemesh
@@ -26,32 +31,46 @@ void quietDcmtk()
   (void)quiet;
 }
 
-/** Turns off DCMTK's character-by-character check of string values while it lives: dcmrt runs it on
- *  every number of every contour as it reads them, which took most of the reading of a 50,000-point
- *  structure set, to raise warnings that are not shown (quietDcmtk). A value that is no number is
- *  still caught where the points are taken. The setting is put back as it was. */
-class StringValueCheckOff
-{
-public:
-  StringValueCheckOff()
-    : Before(dcmEnableVRCheckerForStringValues.get())
-  {
-    dcmEnableVRCheckerForStringValues.set(OFFalse);
-  }
-  ~StringValueCheckOff() { dcmEnableVRCheckerForStringValues.set(this->Before); }
-  StringValueCheckOff(const StringValueCheckOff&) = delete;
-  StringValueCheckOff& operator=(const StringValueCheckOff&) = delete;
-
-private:
-  const OFBool Before;
-};
-
 std::string trimmed(const OFString& text)
 {
   std::string s(text.c_str());
   const auto first = s.find_first_not_of(" \t\r\n");
   const auto last = s.find_last_not_of(" \t\r\n");
   return first == std::string::npos ? std::string() : s.substr(first, last - first + 1);
+}
+
+/** The numbers of a decimal string (DS) element, backslash-separated, each read as the nearest
+ *  double (std::from_chars); none when the element is absent. `where` names the ROI in the error a
+ *  value that is no number raises. */
+std::vector<double> decimalStrings(DcmItem& item, const DcmTagKey& tag, const std::string& where)
+{
+  std::vector<double> values;
+  DcmElement* element = nullptr;
+  char* text = nullptr;
+  Uint32 length = 0;
+  if (item.findAndGetElement(tag, element).bad() || !element || element->getString(text, length).bad() || !text)
+    return values;
+  const char* at = text;
+  const char* const end = text + length;
+  values.reserve(static_cast<std::size_t>(std::count(at, end, '\\')) + 1);
+  while (at < end)
+  {
+    while (at < end && *at == ' ')
+      ++at;
+    if (at < end && *at == '+') // a sign DS allows and from_chars does not
+      ++at;
+    double value = 0.0;
+    const std::from_chars_result parsed = std::from_chars(at, end, value);
+    if (parsed.ec != std::errc())
+      throw Error(where + ": a contour's data holds a value that is not a number");
+    at = parsed.ptr;
+    while (at < end && (*at == ' ' || *at == '\0'))
+      ++at;
+    if (at < end && *at++ != '\\')
+      throw Error(where + ": a contour's data holds a value that is not a number");
+    values.push_back(value);
+  }
+  return values;
 }
 
 /** Each item of a dcmrt sequence, in order (by index: its cursor steps once past the last item). */
@@ -79,15 +98,17 @@ StructureSet readWithDcmtk(const std::string& path)
   if (modality != "RTSTRUCT")
     throw Error("'" + path + "' is not a DICOM RT Structure Set (Modality " +
                 (modality.empty() ? std::string("missing") : std::string(modality.c_str())) + ")");
-  DRTStructureSetIOD iod;
-  const StringValueCheckOff unchecked;
-  const OFCondition read = iod.read(dataset);
+  // The ROIs through dcmrt's typed sequence; the contours straight from the dataset. Reading the
+  // whole IOD copies every contour's numbers into its own objects first, and dcmrt then parses
+  // them one by one: together two thirds of the reading of a 50,000-point structure set.
+  DRTStructureSetROISequence roiSequence;
+  const OFCondition read = roiSequence.read(dataset, "1-n", "1", "StructureSetModule");
   if (read.bad())
     throw Error("cannot read the RT Structure Set '" + path + "': " + read.text());
 
   StructureSet set;
   std::map<Sint32, std::size_t> byNumber;
-  forEachItem(iod.getStructureSetROISequence(),
+  forEachItem(roiSequence,
               [&](DRTStructureSetROISequence::Item& item)
               {
                 PlanarStructure roi;
@@ -104,54 +125,58 @@ StructureSet readWithDcmtk(const std::string& path)
                 set.structures.push_back(std::move(roi));
               });
 
-  forEachItem(iod.getROIContourSequence(),
-              [&](DRTROIContourSequence::Item& item)
-              {
-                Sint32 number = 0;
-                if (item.getReferencedROINumber(number).bad())
-                  return;
-                auto found = byNumber.find(number);
-                if (found == byNumber.end())
-                {
-                  // Contours of an ROI the set does not declare: kept, under its number.
-                  PlanarStructure roi;
-                  roi.number = number;
-                  roi.name = "ROI_" + std::to_string(number);
-                  found = byNumber.emplace(number, set.structures.size()).first;
-                  set.structures.push_back(std::move(roi));
-                }
-                PlanarStructure& roi = set.structures[found->second];
-                Sint32 rgb[3];
-                if (item.getROIDisplayColor(rgb[0], 0).good() && item.getROIDisplayColor(rgb[1], 1).good() &&
-                    item.getROIDisplayColor(rgb[2], 2).good())
-                  for (int c = 0; c < 3; ++c)
-                    roi.rgb[c] = static_cast<unsigned char>(std::clamp<Sint32>(rgb[c], 0, 255));
-                std::map<std::string, std::size_t> skipped;
-                forEachItem(item.getContourSequence(),
-                            [&](DRTContourSequence::Item& contourItem)
-                            {
-                              OFString type;
-                              contourItem.getContourGeometricType(type);
-                              const std::string geometricType = trimmed(type);
-                              if (geometricType != "CLOSED_PLANAR")
-                              {
-                                ++skipped[geometricType.empty() ? "untyped" : geometricType];
-                                return;
-                              }
-                              OFVector<Float64> data;
-                              contourItem.getContourData(data);
-                              if (data.size() % 3 != 0)
-                                throw Error("'" + path + "': ROI " + std::to_string(roi.number) +
-                                            ": a contour's data has a number of values that is not a multiple of 3");
-                              Polygon3 contour;
-                              contour.reserve(data.size() / 3);
-                              for (std::size_t i = 0; i + 2 < data.size(); i += 3)
-                                contour.push_back({ data[i], data[i + 1], data[i + 2] });
-                              roi.contours.push_back(std::move(contour));
-                            });
-                for (const auto& [type, count] : skipped)
-                  roi.notes.push_back(std::to_string(count) + " " + type + " item(s) skipped: only CLOSED_PLANAR contours enclose a volume");
-              });
+  DcmSequenceOfItems* contourSequences = nullptr;
+  dataset.findAndGetSequence(DCM_ROIContourSequence, contourSequences);
+  for (unsigned long n = 0; contourSequences && n < contourSequences->card(); ++n)
+  {
+    DcmItem& item = *contourSequences->getItem(n);
+    Sint32 number = 0;
+    if (item.findAndGetSint32(DCM_ReferencedROINumber, number).bad())
+      continue;
+    auto found = byNumber.find(number);
+    if (found == byNumber.end())
+    {
+      // Contours of an ROI the set does not declare: kept, under its number.
+      PlanarStructure roi;
+      roi.number = number;
+      roi.name = "ROI_" + std::to_string(number);
+      found = byNumber.emplace(number, set.structures.size()).first;
+      set.structures.push_back(std::move(roi));
+    }
+    PlanarStructure& roi = set.structures[found->second];
+    Sint32 rgb[3];
+    if (item.findAndGetSint32(DCM_ROIDisplayColor, rgb[0], 0).good() &&
+        item.findAndGetSint32(DCM_ROIDisplayColor, rgb[1], 1).good() &&
+        item.findAndGetSint32(DCM_ROIDisplayColor, rgb[2], 2).good())
+      for (int c = 0; c < 3; ++c)
+        roi.rgb[c] = static_cast<unsigned char>(std::clamp<Sint32>(rgb[c], 0, 255));
+    std::map<std::string, std::size_t> skipped;
+    DcmSequenceOfItems* contours = nullptr;
+    item.findAndGetSequence(DCM_ContourSequence, contours);
+    for (unsigned long k = 0; contours && k < contours->card(); ++k)
+    {
+      DcmItem& contourItem = *contours->getItem(k);
+      OFString type;
+      contourItem.findAndGetOFString(DCM_ContourGeometricType, type);
+      const std::string geometricType = trimmed(type);
+      if (geometricType != "CLOSED_PLANAR")
+      {
+        ++skipped[geometricType.empty() ? "untyped" : geometricType];
+        continue;
+      }
+      const std::string where = "'" + path + "': ROI " + std::to_string(roi.number);
+      const std::vector<double> data = decimalStrings(contourItem, DCM_ContourData, where);
+      if (data.size() % 3 != 0)
+        throw Error(where + ": a contour's data has a number of values that is not a multiple of 3");
+      Polygon3 contour;
+      contour.reserve(data.size() / 3);
+      for (std::size_t i = 0; i + 2 < data.size(); i += 3)
+        contour.push_back({ data[i], data[i + 1], data[i + 2] });
+      roi.contours.push_back(std::move(contour));
+    }
+    for (const auto& [type, count] : skipped)
+      roi.notes.push_back(std::to_string(count) + " " + type + " item(s) skipped: only CLOSED_PLANAR contours enclose a volume");
+  }
   if (set.structures.empty())
     throw Error("'" + path + "': the RT Structure Set lists no ROI");
   return set;

@@ -88,6 +88,66 @@ TEST(StructureSetReader, ReadsEveryROIWithNumberNameColourAndContoursInLPS)
   EXPECT_TRUE(set.structures[1].contours.empty());
 }
 
+/** The structure set of twoStructures() at `path`, with its first contour's data replaced by `data`
+ *  (a decimal string as a planning system may write it). */
+void writeWithFirstContourData(const fs::path& path, const std::string& data)
+{
+  writeRTStructureSet(path.string(), twoStructures());
+  DcmFileFormat file;
+  ASSERT_TRUE(file.loadFile(path.c_str()).good());
+  DcmItem* contour = nullptr;
+  DcmItem* roi = nullptr;
+  ASSERT_TRUE(file.getDataset()->findAndGetSequenceItem(DCM_ROIContourSequence, roi, 0).good());
+  ASSERT_TRUE(roi->findAndGetSequenceItem(DCM_ContourSequence, contour, 0).good());
+  ASSERT_TRUE(contour->putAndInsertString(DCM_ContourData, data.c_str()).good());
+  ASSERT_TRUE(contour->putAndInsertString(DCM_NumberOfContourPoints, "3").good());
+  ASSERT_TRUE(file.saveFile(path.c_str(), EXS_LittleEndianExplicit).good());
+}
+
+TEST(StructureSetReader, ReadsDecimalStringsWithSignsExponentsAndPaddingExactly)
+{
+  const fs::path path = folder("decimal-strings") / "RS.dcm";
+  writeWithFirstContourData(path, "+1.5\\ -2.25E+01\\0.1 \\3\\-4e-1\\7.0\\.5\\1E2\\+0");
+  const StructureSet set = readStructureSet(path.string());
+  ASSERT_EQ(set.structures.size(), 2u);
+  ASSERT_EQ(set.structures[0].contours.size(), 4u);
+  const Polygon3& contour = set.structures[0].contours[0];
+  ASSERT_EQ(contour.size(), 3u);
+  // Each value is the double nearest its decimal string, as a compiler reads the same literal.
+  EXPECT_EQ(contour[0].x, 1.5);
+  EXPECT_EQ(contour[0].y, -22.5);
+  EXPECT_EQ(contour[0].z, 0.1);
+  EXPECT_EQ(contour[1].x, 3.0);
+  EXPECT_EQ(contour[1].y, -0.4);
+  EXPECT_EQ(contour[1].z, 7.0);
+  EXPECT_EQ(contour[2].x, 0.5);
+  EXPECT_EQ(contour[2].y, 100.0);
+  EXPECT_EQ(contour[2].z, 0.0);
+}
+
+TEST(StructureSetReader, AContourValueThatIsNoNumberIsAOneLineError)
+{
+  const fs::path dir = folder("not-a-number");
+  for (const std::string data : { "1.0\\abc\\2.0", "1.0\\\\2.0\\3.0", "1.0\\2.0x\\3.0" })
+  {
+    const fs::path path = dir / "RS.dcm";
+    writeWithFirstContourData(path, data);
+    try
+    {
+      readStructureSet(path.string());
+      ADD_FAILURE() << "contour data '" << data << "' must not read";
+    }
+    catch (const Error& e)
+    {
+      const std::string message = e.what();
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+      EXPECT_NE(message.find("RS.dcm"), std::string::npos) << message;
+      EXPECT_NE(message.find("ROI 3"), std::string::npos) << message;
+      EXPECT_NE(message.find("not a number"), std::string::npos) << message;
+    }
+  }
+}
+
 TEST(StructureSetReader, ChoosesROIsByNameOrNumberAndNamesWhatMatchesNothing)
 {
   StructureSet set;
