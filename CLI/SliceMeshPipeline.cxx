@@ -361,10 +361,8 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
     attributes.structures.push_back({ s.report.label, s.report.name, s.rgba });
     return attributes;
   };
-  // Each structure's mesh is put in physical space and written to its own file side by side (each
-  // to its own slot and file, so nothing depends on the threads); a failure is the first structure's
-  // in label order, as when they were written one by one. The physical copy replaces the finished
-  // mesh, so no mesh is held twice.
+  // Each structure's mesh is put in physical space side by side (each in its own slot); the physical
+  // copy replaces the finished mesh, so no mesh is held twice.
   std::vector<TriangleMesh> physical(structures.size());
   parallelFor(structures.size(), outerThreads,
               [&](std::size_t n)
@@ -375,24 +373,24 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
                 physical[n] = guarded(WriteFailed, [&]
                                       { return mapToPhysicalSpace(s.meshing.surface.mesh, s.frame(), settings.coordinateSystem); });
                 s.meshing.surface.mesh = TriangleMesh();
-                if (perLabel && !settings.multiLabel.outputDirectory.empty())
-                {
-                  s.report.path = (fs::path(settings.multiLabel.outputDirectory) /
-                                   labelFileName(s, width, output.extension().string())).string();
-                  guarded(WriteFailed, [&]
-                          { writeMesh(physical[n], settings.coordinateSystem, s.report.path, attributesOf(s, physical[n].triangles.size())); });
-                }
               });
-  // The output model: the structures' meshes in label order, each appended and released in turn.
+  // The output model: the structures' meshes in label order, each appended and released in turn;
+  // where each was appended is kept: its own file is written from its part of the model.
   TriangleMesh merged;
   MeshAttributes mergedAttributes;
   std::vector<LabelReport> reports;
   std::vector<MeshValidation> validations;
+  std::vector<AppendedAt> appendedAt(structures.size() + 1);
+  const bool structureFiles = perLabel && !settings.multiLabel.outputDirectory.empty();
   for (std::size_t n = 0; n < structures.size(); ++n)
   {
     Structure& s = structures[n];
+    appendedAt[n] = { merged.points.size(), merged.triangles.size() };
     if (s.live())
     {
+      if (structureFiles)
+        s.report.path = (fs::path(settings.multiLabel.outputDirectory) /
+                         labelFileName(s, width, output.extension().string())).string();
       const FinishedSurface& surface = s.meshing.surface;
       s.report.validation = surface.validation;
       s.report.quality = runQualityOf(s.meshing);
@@ -418,6 +416,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
     }
     reports.push_back(s.report);
   }
+  appendedAt[structures.size()] = { merged.points.size(), merged.triangles.size() };
   if (merged.triangles.empty() && failures.empty())
   {
     std::ostringstream message;
@@ -427,25 +426,50 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   }
   // Neighbouring labels touch by design: each label's mesh is checked on its own, not against the others.
   result.validation = joinedValidation(validations, 0);
-  // The merged model is written while the whole model's triangle shapes are measured beside it.
-  parallelFor(2, threads,
+  // The merged model, the structures' own files and the whole model's triangle shapes side by side:
+  // the merged model first (the largest task; written after the others, it ran alone at the end).
+  // A failure is reported as when they were written one by one: the first structure's in label
+  // order, then the merged model's (task 0 fails in slot structures.size(), task 1 in the next).
+  std::vector<std::exception_ptr> writeFailures(structures.size() + 2);
+  parallelFor(structures.size() + 2, threads,
               [&](std::size_t task)
               {
-                if (task == 0)
+                try
                 {
-                  if (!merged.triangles.empty())
-                    guarded(WriteFailed,
-                            [&]
-                            {
-                              if (perLabel)
-                                writeMesh(merged, settings.coordinateSystem, settings.outputModel, mergedAttributes);
-                              else
-                                writeMesh(merged, settings.coordinateSystem, settings.outputModel);
-                            });
+                  if (task == 0)
+                  {
+                    if (!merged.triangles.empty())
+                      guarded(WriteFailed,
+                              [&]
+                              {
+                                if (perLabel)
+                                  writeMesh(merged, settings.coordinateSystem, settings.outputModel, mergedAttributes);
+                                else
+                                  writeMesh(merged, settings.coordinateSystem, settings.outputModel);
+                              });
+                  }
+                  else if (task == 1)
+                  {
+                    if (perLabel)
+                      result.quality = combinedQuality(reports, result.validation, merged);
+                  }
+                  else if (structureFiles && structures[task - 2].live())
+                  {
+                    const std::size_t n = task - 2;
+                    const Structure& s = structures[n];
+                    const TriangleMesh own = appendedPart(merged, appendedAt[n], appendedAt[n + 1]);
+                    guarded(WriteFailed, [&]
+                            { writeMesh(own, settings.coordinateSystem, s.report.path, attributesOf(s, own.triangles.size())); });
+                  }
                 }
-                else if (perLabel)
-                  result.quality = combinedQuality(reports, result.validation, merged);
+                catch (...)
+                {
+                  writeFailures[task < 2 ? structures.size() + task : task - 2] = std::current_exception();
+                }
               });
+  for (const std::exception_ptr& failure : writeFailures)
+    if (failure)
+      std::rethrow_exception(failure);
   if (!perLabel)
   {
     result.quality = structures.front().report.quality;

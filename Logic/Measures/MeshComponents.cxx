@@ -81,6 +81,21 @@ void appendMesh(TriangleMesh& joined, const TriangleMesh& mesh)
     joined.triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
 }
 
+TriangleMesh appendedPart(const TriangleMesh& joined, AppendedAt from, AppendedAt to)
+{
+  TriangleMesh part;
+  part.points.assign(joined.points.begin() + static_cast<std::ptrdiff_t>(from.point),
+                     joined.points.begin() + static_cast<std::ptrdiff_t>(to.point));
+  const auto offset = static_cast<std::int32_t>(from.point);
+  part.triangles.reserve(to.triangle - from.triangle);
+  for (std::size_t t = from.triangle; t < to.triangle; ++t)
+  {
+    const Triangle& corners = joined.triangles[t];
+    part.triangles.push_back({ corners[0] - offset, corners[1] - offset, corners[2] - offset });
+  }
+  return part;
+}
+
 TriangleMesh joinMeshes(const std::vector<const TriangleMesh*>& meshes, std::vector<std::size_t>* firstTriangle)
 {
   TriangleMesh joined;

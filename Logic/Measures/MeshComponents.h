@@ -25,6 +25,17 @@ std::vector<TriangleMesh> splitIntoPieces(const TriangleMesh& mesh);
 /** `mesh` appended to `joined`, side by side (its vertices renumbered after joined's, none shared). */
 void appendMesh(TriangleMesh& joined, const TriangleMesh& mesh);
 
+/** Where a mesh appended to another begins in it: its first point and first triangle. */
+struct AppendedAt
+{
+  std::size_t point = 0;
+  std::size_t triangle = 0;
+};
+
+/** What appendMesh added to `joined` between `from` and `to` (where the next one began), numbered
+ *  from 0 again: the mesh as it was appended. */
+TriangleMesh appendedPart(const TriangleMesh& joined, AppendedAt from, AppendedAt to);
+
 /** The meshes side by side in one mesh, in their order (vertices renumbered, none shared); if
  *  `firstTriangle` is given, (*firstTriangle)[i] is where mesh i's triangles start. */
 TriangleMesh joinMeshes(const std::vector<const TriangleMesh*>& meshes,
