@@ -34,7 +34,7 @@ NearestSegment::NearestSegment(std::vector<Segment> segments, double cellSize)
 
 double NearestSegment::nearest(const Point2& p, Point2* closest) const
 {
-  double best = std::numeric_limits<double>::infinity();
+  double best = std::numeric_limits<double>::infinity(), bestSquared = best;
   if (m_Segments.empty())
     return best;
   const long long cx = m_Cells.cellOf(p.x), cy = m_Cells.cellOf(p.y);
@@ -51,10 +51,14 @@ double NearestSegment::nearest(const Point2& p, Point2* closest) const
       {
         const auto& [a, b] = m_Segments[s];
         double t = 0.0;
-        const double d = distanceToSegment(p, a, b, &t);
+        const double squared = squaredDistanceToSegment(p, a, b, &t);
+        if (squared > bestSquared)
+          continue; // its root is no smaller than best's: the root is taken only where it may be
+        const double d = std::sqrt(squared);
         if (d < best)
         {
           best = d;
+          bestSquared = squared;
           if (closest)
             *closest = { a.x + t * (b.x - a.x), a.y + t * (b.y - a.y) };
         }

@@ -85,20 +85,6 @@ bool isInside(const Polygon2& polygon, const Point2& p)
   return winding != 0;
 }
 
-double distanceToSegment(const Point2& p, const Point2& a, const Point2& b, double* tOut)
-{
-  const double dx = b.x - a.x;
-  const double dy = b.y - a.y;
-  const double len2 = dx * dx + dy * dy;
-  double t = 0.0;
-  if (len2 > 0.0)
-    t = std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / len2, 0.0, 1.0);
-  if (tOut)
-    *tOut = t;
-  const double ex = a.x + t * dx - p.x, ey = a.y + t * dy - p.y;
-  return std::sqrt(ex * ex + ey * ey);
-}
-
 Box2 boundingBox(const Polygon2& polygon)
 {
   Box2 box;

@@ -4,6 +4,7 @@
 
 #include "Core/SliceMeshTypes.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace slicemesh
@@ -22,8 +23,27 @@ int orientation(const Point2& a, const Point2& b, const Point2& c);
  *  Points on the boundary count as outside. */
 bool isInside(const Polygon2& polygon, const Point2& p);
 
+/** Squared distance from p to the segment ab, and the parameter t of the closest point. Inline: the
+ *  nearest-segment searches call it in their inner loops. */
+inline double squaredDistanceToSegment(const Point2& p, const Point2& a, const Point2& b, double* tOut = nullptr)
+{
+  const double dx = b.x - a.x;
+  const double dy = b.y - a.y;
+  const double len2 = dx * dx + dy * dy;
+  double t = 0.0;
+  if (len2 > 0.0)
+    t = std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / len2, 0.0, 1.0);
+  if (tOut)
+    *tOut = t;
+  const double ex = a.x + t * dx - p.x, ey = a.y + t * dy - p.y;
+  return ex * ex + ey * ey;
+}
+
 /** Distance from p to the segment ab, and the parameter t of the closest point. */
-double distanceToSegment(const Point2& p, const Point2& a, const Point2& b, double* t = nullptr);
+inline double distanceToSegment(const Point2& p, const Point2& a, const Point2& b, double* t = nullptr)
+{
+  return std::sqrt(squaredDistanceToSegment(p, a, b, t));
+}
 
 /** Distances here take the square root of the sum of squares, not std::hypot: coordinates are
  *  millimetres, far from where squaring overflows, and hypot's guarding took 3-4% of a run. */
