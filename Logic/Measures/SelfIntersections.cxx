@@ -117,15 +117,22 @@ bool crossing(const TriangleMesh& mesh, std::size_t a, std::size_t b)
     const Point pu = corner(mesh, u), pv = corner(mesh, v), pp = corner(mesh, p), pq = corner(mesh, q);
     return CGAL::coplanar(pu, pv, pp, pq) && CGAL::coplanar_orientation(pu, pv, pp, pq) == CGAL::POSITIVE;
   }
-  const Kernel::Triangle_3 ts(corner(mesh, s[0]), corner(mesh, s[1]), corner(mesh, s[2]));
-  const Kernel::Triangle_3 tt(corner(mesh, t[0]), corner(mesh, t[1]), corner(mesh, t[2]));
   if (shared == 1)
   {
+    const Point v = corner(mesh, s[si]);
+    const Point sb = corner(mesh, s[(si + 1) % 3]), sc = corner(mesh, s[(si + 2) % 3]);
+    const Point tb = corner(mesh, t[(ti + 1) % 3]), tc = corner(mesh, t[(ti + 2) % 3]);
+    // t's other corners strictly on one side of s's plane: all of t but the common corner is, so
+    // the two meet there only. Most pairs of a surface's neighbouring triangles end here.
+    const CGAL::Orientation tbSide = CGAL::orientation(v, sb, sc, tb);
+    if (tbSide != CGAL::COPLANAR && tbSide == CGAL::orientation(v, sb, sc, tc))
+      return false;
     // Each edge opposite the common corner, against the other triangle.
-    const Kernel::Segment_3 oppositeS(corner(mesh, s[(si + 1) % 3]), corner(mesh, s[(si + 2) % 3]));
-    const Kernel::Segment_3 oppositeT(corner(mesh, t[(ti + 1) % 3]), corner(mesh, t[(ti + 2) % 3]));
-    return CGAL::do_intersect(ts, oppositeT) || CGAL::do_intersect(tt, oppositeS);
+    const Kernel::Triangle_3 ts(v, sb, sc), tt(v, tb, tc);
+    return CGAL::do_intersect(ts, Kernel::Segment_3(tb, tc)) || CGAL::do_intersect(tt, Kernel::Segment_3(sb, sc));
   }
+  const Kernel::Triangle_3 ts(corner(mesh, s[0]), corner(mesh, s[1]), corner(mesh, s[2]));
+  const Kernel::Triangle_3 tt(corner(mesh, t[0]), corner(mesh, t[1]), corner(mesh, t[2]));
   return CGAL::do_intersect(ts, tt);
 }
 

@@ -60,6 +60,21 @@ TEST(SelfIntersections, TrianglesWithACommonCornerCrossWhereAnEdgePiercesTheOthe
   EXPECT_EQ(selfIntersectingTrianglePairs(mesh), (Pairs{ { 0, 1 } }));
   mesh.points[3] = { 1, 0, 0.5 }; // lifted above: they meet at the corner only
   EXPECT_TRUE(selfIntersectingTrianglePairs(mesh).empty());
+  mesh.points[3] = { 1, 0, -0.5 }; // both other corners below the first's plane: the corner only
+  mesh.points[4] = { 1, 0.5, -1e-9 };
+  EXPECT_TRUE(selfIntersectingTrianglePairs(mesh).empty());
+  // One other corner in the first's plane, inside it: they share a segment from the common corner.
+  mesh.points[3] = { 1, 0, 0 };
+  mesh.points[4] = { 1, 0, 1 };
+  EXPECT_EQ(selfIntersectingTrianglePairs(mesh), (Pairs{ { 0, 1 } }));
+  // Both in its plane, the second triangle inside the first.
+  mesh.points[3] = { 1, -0.2, 0 };
+  mesh.points[4] = { 1, 0.2, 0 };
+  EXPECT_EQ(selfIntersectingTrianglePairs(mesh), (Pairs{ { 0, 1 } }));
+  // Both in its plane, the second beside the first (across the common corner): the corner only.
+  mesh.points[3] = { -1, -0.2, 0 };
+  mesh.points[4] = { -1, 0.2, 0 };
+  EXPECT_TRUE(selfIntersectingTrianglePairs(mesh).empty());
 }
 
 TEST(SelfIntersections, SeparateTrianglesThatTouchCross)
