@@ -32,7 +32,7 @@ NearestSegment::NearestSegment(std::vector<Segment> segments, double cellSize)
   }
 }
 
-double NearestSegment::nearest(const Point2& p, Point2* closest) const
+double NearestSegment::search(const Point2& p, Point2* closest, double limit) const
 {
   double best = std::numeric_limits<double>::infinity(), bestSquared = best;
   if (m_Segments.empty())
@@ -44,7 +44,9 @@ double NearestSegment::nearest(const Point2& p, Point2* closest) const
     std::max(std::abs(cx - m_CenterX), std::abs(cy - m_CenterY)) + m_Extent;
   for (long long r = 0; r <= maxRing; ++r)
   {
-    if (best <= (r - 1) * m_Cells.cellSize())
+    // No segment of ring r or beyond is nearer than r - 1 cells: none can beat best, nor come under
+    // the limit (if best is not under it, no one is).
+    if (best <= (r - 1) * m_Cells.cellSize() || limit < (r - 1) * m_Cells.cellSize())
       break;
     auto visit = [&](long long x, long long y) {
       for (int s : m_Cells.cell(x, y))

@@ -4,6 +4,7 @@
 
 #include "Core/SpatialHash.h"
 
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -22,11 +23,19 @@ public:
   double distance(const Point2& p) const { return nearest(p, nullptr); }
 
   /** Distance to the nearest segment, and the nearest point on it. */
-  double nearest(const Point2& p, Point2* closest) const;
+  double nearest(const Point2& p, Point2* closest) const { return search(p, closest, m_Unbounded); }
+
+  /** The distance to the nearest segment where it is under `limit`; otherwise a value not under
+   *  `limit` (perhaps not the distance). The search stops at `limit`: a query far from every
+   *  segment (the middle of a cap, asked how far its rim is) visits the cells out to it only. */
+  double distanceWithin(const Point2& p, double limit) const { return search(p, nullptr, limit); }
 
   bool empty() const { return m_Segments.empty(); }
 
 private:
+  double search(const Point2& p, Point2* closest, double limit) const;
+
+  static constexpr double m_Unbounded = std::numeric_limits<double>::infinity();
   std::vector<Segment> m_Segments;
   SpatialHash m_Cells;
   long long m_Extent = 0; ///< half-width, in cells, of the square that holds every segment

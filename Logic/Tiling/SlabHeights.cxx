@@ -84,7 +84,7 @@ double SlabOverlay::Impl::domeHeight(int component, const Point2& p) const
   if (rise == 0.0)
     return base;
   const NearestSegment& rim = components[component].capLevel() == LowerLevel ? *lowerNearest : *upperNearest;
-  const double s = std::min(1.0, rim.distance(p) / std::abs(rise));
+  const double s = std::min(1.0, rim.distanceWithin(p, std::abs(rise)) / std::abs(rise)); // 1 from |rise| on
   // Never flat on the contour's own slice, where the neighbouring slab's triangles meet it.
   return base + rise * std::max(1e-3, std::sqrt(1.0 - (1.0 - s) * (1.0 - s)));
 }

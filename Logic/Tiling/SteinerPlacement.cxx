@@ -74,7 +74,8 @@ bool SlabOverlay::Impl::insertSteiner(const Point2& p, double z, MeshBuilder& me
   // Measured in 3D: a row point just above a contour in projection is fine, a point beside a contour
   // at that contour's own height makes a sliver.
   const auto within = [clearance](double flat, double dz) { return flat * flat + dz * dz < clearance * clearance; };
-  if (clearance > 0.0 && (within(lowerNearest->distance(p), z - z0) || within(upperNearest->distance(p), z1 - z)))
+  if (clearance > 0.0 &&
+      (within(lowerNearest->distanceWithin(p, clearance), z - z0) || within(upperNearest->distanceWithin(p, clearance), z1 - z)))
     return false;
   // Steiner points go strictly inside difference polygons: never on a contour edge, which the
   // neighbouring slab shares.

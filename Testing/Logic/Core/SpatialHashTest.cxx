@@ -107,3 +107,27 @@ TEST(NearestSegment, AgreesWithBruteForceNearAndFarFromTheSegments)
   }
   EXPECT_TRUE(std::isinf(NearestSegment({}, 1.0).distance({ 0.0, 0.0 })));
 }
+
+TEST(NearestSegment, WithinALimitTheDistanceIsExactAndBeyondItNotUnder)
+{
+  // A ring of short segments, asked from inside, on and outside it with limits around the answer.
+  std::vector<NearestSegment::Segment> segments;
+  for (int k = 0; k < 64; ++k)
+  {
+    const double a = 2.0 * M_PI * k / 64, b = 2.0 * M_PI * (k + 1) / 64;
+    segments.push_back({ { 30.0 * std::cos(a), 30.0 * std::sin(a) }, { 30.0 * std::cos(b), 30.0 * std::sin(b) } });
+  }
+  const NearestSegment nearest(segments, 2.0);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> anywhere(-50.0, 50.0), limit(0.0, 40.0);
+  for (int query = 0; query < 2000; ++query)
+  {
+    const Point2 p{ anywhere(random), anywhere(random) };
+    const double exact = nearest.distance(p), bound = limit(random);
+    const double within = nearest.distanceWithin(p, bound);
+    if (exact < bound)
+      ASSERT_EQ(within, exact) << "at (" << p.x << ", " << p.y << "), limit " << bound;
+    else
+      ASSERT_GE(within, bound) << "at (" << p.x << ", " << p.y << "), limit " << bound;
+  }
+}
