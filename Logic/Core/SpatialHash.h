@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace slicemesh
@@ -44,22 +45,50 @@ public:
     return { x - reach, x + reach, y - reach, y + reach };
   }
 
+  /** The indices of one cell, in the order they were inserted: a chain through the grid's entries. */
+  class Cell
+  {
+  public:
+    class Iterator
+    {
+    public:
+      Iterator(const SpatialHash* grid, std::int32_t entry) : m_Grid(grid), m_Entry(entry) {}
+      int operator*() const { return m_Grid->m_Entries[static_cast<std::size_t>(m_Entry)].index; }
+      Iterator& operator++()
+      {
+        m_Entry = m_Grid->m_Entries[static_cast<std::size_t>(m_Entry)].next;
+        return *this;
+      }
+      bool operator!=(const Iterator& o) const { return m_Entry != o.m_Entry; }
+
+    private:
+      const SpatialHash* m_Grid;
+      std::int32_t m_Entry;
+    };
+    Cell(const SpatialHash* grid, std::int32_t first) : m_Grid(grid), m_First(first) {}
+    Iterator begin() const { return { m_Grid, m_First }; }
+    Iterator end() const { return { m_Grid, -1 }; }
+
+  private:
+    const SpatialHash* m_Grid;
+    std::int32_t m_First;
+  };
+
   /** Adds index to the cell holding p. */
-  void insert(const Point2& p, int index) { listOf({ cellOf(p.x), cellOf(p.y) }).push_back(index); }
+  void insert(const Point2& p, int index) { append({ cellOf(p.x), cellOf(p.y) }, index); }
   /** Adds index to every cell of the range (x outer, y inner). */
   void insert(const CellRange& cells, int index)
   {
     for (long long x = cells.x0; x <= cells.x1; ++x)
       for (long long y = cells.y0; y <= cells.y1; ++y)
-        listOf({ x, y }).push_back(index);
+        append({ x, y }, index);
   }
 
   /** The indices in cell (x, y), in the order they were inserted; valid until the next insert. */
-  const std::vector<int>& cell(long long x, long long y) const
+  Cell cell(long long x, long long y) const
   {
-    static const std::vector<int> none;
     const std::int32_t list = find({ x, y });
-    return list < 0 ? none : m_Lists[static_cast<std::size_t>(list)];
+    return { this, list < 0 ? -1 : m_Ends[static_cast<std::size_t>(list)].first };
   }
 
   /** Calls visit(index) for the indices of the range's cells, cell by cell (x outer, y inner), each
@@ -119,20 +148,26 @@ private:
     }
   }
 
-  /** The list of cell k, made empty if the cell had none. */
-  std::vector<int>& listOf(const CellKey& k)
+  /** Appends index to cell k's chain, starting the chain if the cell had none. */
+  void append(const CellKey& k, int index)
   {
     if (2 * (m_Keys.size() + 1) > m_Slots.size())
       grow();
+    const auto entry = static_cast<std::int32_t>(m_Entries.size());
+    m_Entries.push_back({ index, -1 });
     const std::size_t mask = m_Slots.size() - 1;
     std::size_t slot = hashOf(k) & mask;
     for (; m_Slots[slot] >= 0; slot = (slot + 1) & mask)
       if (m_Keys[static_cast<std::size_t>(m_Slots[slot])] == k)
-        return m_Lists[static_cast<std::size_t>(m_Slots[slot])];
+      {
+        std::pair<std::int32_t, std::int32_t>& ends = m_Ends[static_cast<std::size_t>(m_Slots[slot])];
+        m_Entries[static_cast<std::size_t>(ends.second)].next = entry;
+        ends.second = entry;
+        return;
+      }
     m_Slots[slot] = static_cast<std::int32_t>(m_Keys.size());
     m_Keys.push_back(k);
-    m_Lists.emplace_back();
-    return m_Lists.back();
+    m_Ends.emplace_back(entry, entry);
   }
 
   /** Doubles the table (at least 16 slots) and places every cell again: at most half full. */
@@ -152,7 +187,15 @@ private:
   double m_CellSize;
   std::vector<std::int32_t> m_Slots; ///< list numbers; -1 for an empty slot
   std::vector<CellKey> m_Keys;       ///< the cell of each list
-  std::vector<std::vector<int>> m_Lists;
+  /** The indices of every cell in two arrays, each cell a chain through them (its first and last
+   *  entry in m_Ends): a vector per cell took a third of the tiling's allocations. */
+  struct Entry
+  {
+    int index;
+    std::int32_t next; ///< the cell's next entry; -1 after its last
+  };
+  std::vector<Entry> m_Entries;
+  std::vector<std::pair<std::int32_t, std::int32_t>> m_Ends; ///< first and last entry of each list
 };
 
 } // namespace slicemesh

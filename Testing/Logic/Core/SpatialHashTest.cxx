@@ -44,8 +44,16 @@ TEST(SpatialHash, VisitsCellByCellInInsertionOrderAndStopsAtTheFirstHit)
   hash.forEachIn({ 0, 1, 0, 1 }, [&](int index) { order.push_back(index); });
   // x outer, y inner: (0, 0), (0, 1), (1, 0), (1, 1).
   EXPECT_EQ(order, (std::vector<int>{ 5, 4, 7, 9, 3, 9 }));
-  EXPECT_EQ(hash.cell(0, 0), (std::vector<int>{ 5, 4 }));
-  EXPECT_TRUE(hash.cell(5, -5).empty());
+  auto listed = [&hash](long long x, long long y)
+  {
+    std::vector<int> indices;
+    for (int index : hash.cell(x, y))
+      indices.push_back(index);
+    return indices;
+  };
+  EXPECT_EQ(listed(0, 0), (std::vector<int>{ 5, 4 }));
+  EXPECT_EQ(listed(0, 1), (std::vector<int>{ 7, 9 }));
+  EXPECT_TRUE(listed(5, -5).empty());
 
   std::vector<int> tested;
   EXPECT_TRUE(hash.anyIn({ 0, 1, 0, 1 }, [&](int index) {
