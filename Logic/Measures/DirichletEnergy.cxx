@@ -1,12 +1,11 @@
 #include "Measures/DirichletEnergy.h"
 
 #include "Core/PlanarGeometry.h"
+#include "Measures/EdgeUses.h"
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <numeric>
-#include <utility>
 #include <vector>
 
 namespace slicemesh
@@ -32,56 +31,6 @@ double triangleEnergy(const Point3& a, const Point3& b, const Point3& c)
   const double gy = (x1 * z2 - x2 * z1) / det;
   return 0.5 * std::abs(det) * (gx * gx + gy * gy);
 }
-
-/** The triangles on each side of every edge, grouped by the edge's lower vertex: vertex v's entries,
- *  entries[first[v]] .. entries[first[v + 1]] - 1, are (higher vertex, triangle) pairs in increasing
- *  order, so that walking them all visits the edges as a sort of every edge would. Counted into place
- *  by the lower vertex, then each vertex's few entries sorted: one sort of all the edges was most of
- *  this measure's time. */
-class EdgesByLowerVertex
-{
-public:
-  explicit EdgesByLowerVertex(const TriangleMesh& mesh)
-    : first(mesh.points.size() + 1, 0)
-  {
-    for (const Triangle& t : mesh.triangles)
-      for (int i = 0; i < 3; ++i)
-        ++first[static_cast<std::size_t>(std::min(t[i], t[(i + 1) % 3])) + 1];
-    std::partial_sum(first.begin(), first.end(), first.begin());
-    entries.resize(first.back());
-    std::vector<std::size_t> next(first.begin(), first.end() - 1);
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-      for (int i = 0; i < 3; ++i)
-      {
-        const std::int32_t a = mesh.triangles[t][i], b = mesh.triangles[t][(i + 1) % 3];
-        entries[next[static_cast<std::size_t>(std::min(a, b))]++] = { std::max(a, b), t };
-      }
-    for (std::size_t v = 0; v + 1 < first.size(); ++v)
-      std::sort(entries.begin() + static_cast<std::ptrdiff_t>(first[v]),
-                entries.begin() + static_cast<std::ptrdiff_t>(first[v + 1]));
-  }
-
-  std::size_t vertices() const { return first.size() - 1; }
-
-  /** Vertex v's entries: [begin, end) of `entries`. */
-  std::size_t begin(std::size_t v) const { return first[v]; }
-  std::size_t end(std::size_t v) const { return first[v + 1]; }
-  const std::pair<std::int32_t, std::size_t>& entry(std::size_t e) const { return entries[e]; }
-
-  bool contains(std::int32_t a, std::int32_t b) const
-  {
-    const auto low = static_cast<std::size_t>(std::min(a, b));
-    const std::int32_t high = std::max(a, b);
-    for (std::size_t e = first[low]; e < first[low + 1]; ++e)
-      if (entries[e].first == high)
-        return true;
-    return false;
-  }
-
-private:
-  std::vector<std::size_t> first;
-  std::vector<std::pair<std::int32_t, std::size_t>> entries;
-};
 
 } // namespace
 
@@ -139,7 +88,7 @@ DirichletEnergy measureDirichletEnergy(const TriangleMesh& mesh, const ContourSt
   auto onContour = [&](const Point3& p, const Point3& q) -> bool
   { return std::abs(p.z - q.z) <= tolerance && sliceAt(p.z) >= 0; };
 
-  const EdgesByLowerVertex edges(mesh);
+  const EdgeUses edges(mesh, 1); // on one thread: this measure runs beside the finishing
   auto visitEdge = [&](std::int32_t a, std::int32_t b, std::size_t t1, std::size_t t2)
   {
     if (slabOf[t1] < 0 || slabOf[t1] != slabOf[t2] || facing[t1] != facing[t2])
@@ -172,14 +121,15 @@ DirichletEnergy measureDirichletEnergy(const TriangleMesh& mesh, const ContourSt
       result.largestRelativeDecrease = std::max(result.largestRelativeDecrease, decrease / before);
     }
   };
+  const std::vector<EdgeUse>& uses = edges.uses();
   for (std::size_t v = 0; v < edges.vertices(); ++v)
-    for (std::size_t e = edges.begin(v); e < edges.end(v);)
+    for (std::size_t e = edges.first(v); e < edges.first(v + 1);)
     {
       std::size_t end = e + 1;
-      while (end < edges.end(v) && edges.entry(end).first == edges.entry(e).first)
+      while (end < edges.first(v + 1) && uses[end].other == uses[e].other)
         ++end;
       if (end - e == 2) // an edge between two triangles
-        visitEdge(static_cast<std::int32_t>(v), edges.entry(e).first, edges.entry(e).second, edges.entry(e + 1).second);
+        visitEdge(static_cast<std::int32_t>(v), uses[e].other, uses[e].triangle, uses[e + 1].triangle);
       e = end;
     }
   return result;

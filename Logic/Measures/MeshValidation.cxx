@@ -4,6 +4,7 @@
 #include "Core/ParallelFor.h"
 #include "Core/DisjointSets.h"
 #include "Measures/ComponentOrientation.h"
+#include "Measures/EdgeUses.h"
 #include "Measures/SelfIntersections.h"
 #include "Measures/TriangleAngles.h"
 
@@ -104,77 +105,51 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
     below30 += sums.below30;
   }
 
-  // Edges, gathered by their smaller vertex (counting sort) and sorted within each vertex's few: the
-  // uses of one undirected edge tell boundary and non-manifold edges, their directions orientation
-  // (two uses the same way), and their triangles' normals folds (against the edge's first triangle).
-  struct EdgeUse
-  {
-    std::int32_t other;     ///< the edge's larger vertex
-    std::uint32_t triangle; ///< the triangle using it
-    bool forward;           ///< used from the smaller vertex to the larger
-    bool operator<(const EdgeUse& e) const
-    {
-      return other != e.other ? other < e.other : (triangle != e.triangle ? triangle < e.triangle : forward < e.forward);
-    }
-  };
-  std::vector<std::size_t> edgeStart(nPoints + 1, 0);
-  for (const Triangle& t : mesh.triangles)
-    for (int i = 0; i < 3; ++i)
-      ++edgeStart[static_cast<std::size_t>(std::min(t[i], t[(i + 1) % 3])) + 1];
-  for (std::size_t p = 0; p < nPoints; ++p)
-    edgeStart[p + 1] += edgeStart[p];
-  std::vector<EdgeUse> uses(edgeStart[nPoints]);
-  {
-    std::vector<std::size_t> next(edgeStart.begin(), edgeStart.end() - 1);
-    for (std::size_t f = 0; f < nTriangles; ++f)
-    {
-      const Triangle& t = mesh.triangles[f];
-      for (int i = 0; i < 3; ++i)
-      {
-        const std::int32_t p = t[i], q = t[(i + 1) % 3];
-        uses[next[static_cast<std::size_t>(std::min(p, q))]++] = { std::max(p, q), static_cast<std::uint32_t>(f), p < q };
-      }
-    }
-  }
+  // Edges, gathered by their smaller vertex (EdgeUses): the uses of one undirected edge tell boundary
+  // and non-manifold edges, their directions orientation (two uses the same way), and their
+  // triangles' normals folds (against the edge's first triangle).
   struct EdgeCounts
   {
     std::size_t edges = 0, folded = 0, inconsistent = 0, boundary = 0, nonManifold = 0;
   };
   const std::size_t vertexRanges = fixedRangeCount(nPoints, rangeSize);
   std::vector<EdgeCounts> edgeCounts(vertexRanges);
-  parallelForFixedRanges(nPoints, rangeSize, 0,
-                         [&](std::size_t r, std::size_t firstPoint, std::size_t lastPoint)
-                         {
-                           EdgeCounts& counts = edgeCounts[r];
-                           for (std::size_t p = firstPoint; p < lastPoint; ++p)
+  {
+    const EdgeUses edgeUses(mesh, 0); // released once counted
+    const std::vector<EdgeUse>& uses = edgeUses.uses();
+    parallelForFixedRanges(nPoints, rangeSize, 0,
+                           [&](std::size_t r, std::size_t firstPoint, std::size_t lastPoint)
                            {
-                             const auto first = uses.begin() + static_cast<std::ptrdiff_t>(edgeStart[p]);
-                             const auto last = uses.begin() + static_cast<std::ptrdiff_t>(edgeStart[p + 1]);
-                             std::sort(first, last);
-                             for (auto i = first; i != last;)
+                             EdgeCounts& counts = edgeCounts[r];
+                             for (std::size_t p = firstPoint; p < lastPoint; ++p)
                              {
-                               auto j = i + 1;
-                               std::size_t forward = i->forward ? 1 : 0;
-                               const std::array<double, 3>& m = normals[i->triangle];
-                               for (; j != last && j->other == i->other; ++j)
-                               { // unit normals nearly opposite: the triangles lie on top of each other
-                                 forward += j->forward ? 1 : 0;
-                                 const std::array<double, 3>& n = normals[j->triangle];
-                                 if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -foldCosine)
-                                   ++counts.folded;
+                               const auto first = uses.begin() + static_cast<std::ptrdiff_t>(edgeUses.first(p));
+                               const auto last = uses.begin() + static_cast<std::ptrdiff_t>(edgeUses.first(p + 1));
+                               for (auto i = first; i != last;)
+                               {
+                                 auto j = i + 1;
+                                 std::size_t forward = i->forward ? 1 : 0;
+                                 const std::array<double, 3>& m = normals[i->triangle];
+                                 for (; j != last && j->other == i->other; ++j)
+                                 { // unit normals nearly opposite: the triangles lie on top of each other
+                                   forward += j->forward ? 1 : 0;
+                                   const std::array<double, 3>& n = normals[j->triangle];
+                                   if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -foldCosine)
+                                     ++counts.folded;
+                                 }
+                                 const auto count = static_cast<std::size_t>(j - i);
+                                 const std::size_t backward = count - forward;
+                                 counts.inconsistent += (forward > 1 ? forward - 1 : 0) + (backward > 1 ? backward - 1 : 0);
+                                 ++counts.edges;
+                                 if (count == 1)
+                                   ++counts.boundary;
+                                 else if (count > 2)
+                                   ++counts.nonManifold;
+                                 i = j;
                                }
-                               const auto count = static_cast<std::size_t>(j - i);
-                               const std::size_t backward = count - forward;
-                               counts.inconsistent += (forward > 1 ? forward - 1 : 0) + (backward > 1 ? backward - 1 : 0);
-                               ++counts.edges;
-                               if (count == 1)
-                                 ++counts.boundary;
-                               else if (count > 2)
-                                 ++counts.nonManifold;
-                               i = j;
                              }
-                           }
-                         });
+                           });
+  }
   std::size_t edges = 0;
   for (const EdgeCounts& counts : edgeCounts)
   {
@@ -184,7 +159,6 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
     v.boundaryEdges += counts.boundary;
     v.nonManifoldEdges += counts.nonManifold;
   }
-  uses = std::vector<EdgeUse>();
   normals = std::vector<std::array<double, 3>>();
 
   // A vertex is manifold when its triangles form one fan: the edges opposite it form one connected
