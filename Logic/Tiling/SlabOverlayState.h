@@ -15,6 +15,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
@@ -45,6 +46,10 @@ struct FaceData
   std::array<signed char, 3> cornerLevel{ NoLevel, NoLevel, NoLevel }; ///< for corners on both slices
   std::array<std::int32_t, 3> lifted{ -1, -1, -1 };                   ///< mesh ids, in output winding
   std::array<std::int32_t, 3> cornerId{ -1, -1, -1 }; ///< chain node taken by a corner where the surface switches slices
+  /** The lifted triangle's smallest angle, as the surface-metric flips last ranked their edges by it:
+   *  valid while rankedIn is the Impl's flipRankings (a face's three edges ask for it in one ranking). */
+  double rankedAngle = 0.0;
+  std::uint32_t rankedIn = 0;
 };
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -141,6 +146,7 @@ struct SlabOverlay::Impl
   std::vector<std::pair<Point2, Point2>> lowerSegments, upperSegments;
   std::unique_ptr<NearestSegment> lowerNearest, upperNearest;
   double typicalEdge = 1.0;
+  std::uint32_t flipRankings = 0; ///< rankings of the surface-metric flips so far (FaceData::rankedIn)
 
   // Height of the flat cap over each cap component, recomputed with the components.
   std::vector<double> capZ;

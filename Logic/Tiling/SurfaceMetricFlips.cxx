@@ -87,16 +87,23 @@ std::size_t SlabOverlay::Impl::flipTowardsSurfaceQuality(const MeshBuilder& mesh
   // The worst triangles' edges are taken first (the queue pops from the back): the flips then settle
   // in a better local optimum than in mesh order.
   std::vector<std::pair<double, CDT::Edge>> ranked;
+  // Each face's angle once per ranking, not once for each of its edges (the arc tangents were a
+  // third of this pass); no face changes while the edges are ranked.
+  const std::uint32_t ranking = ++flipRankings;
+  auto rankedAngle = [&](FaceHandle f) {
+    FaceData& data = f->info();
+    if (data.rankedIn != ranking)
+    {
+      data.rankedAngle = smallestAngle(lifted(f->vertex(0)), lifted(f->vertex(1)), lifted(f->vertex(2)));
+      data.rankedIn = ranking;
+    }
+    return data.rankedAngle;
+  };
   // Away from a change every edge was left where no flip improves it: only the edges around the
   // change are looked at first (the refinement's rounds, which insert a few points each).
   for (const CDT::Edge& e : around ? finiteEdgesAround(cdt, *around) : finiteEdgesInStableOrder(cdt))
     if (!e.first->is_constrained(e.second) && isDifference(e.first) && !cdt.is_infinite(e.first->neighbor(e.second)))
-    {
-      const FaceHandle f = e.first, g = f->neighbor(e.second);
-      const double worst = std::min(smallestAngle(lifted(f->vertex(0)), lifted(f->vertex(1)), lifted(f->vertex(2))),
-                                    smallestAngle(lifted(g->vertex(0)), lifted(g->vertex(1)), lifted(g->vertex(2))));
-      ranked.emplace_back(worst, e);
-    }
+      ranked.emplace_back(std::min(rankedAngle(e.first), rankedAngle(e.first->neighbor(e.second))), e);
   std::stable_sort(ranked.begin(), ranked.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
   std::vector<std::pair<VertexHandle, VertexHandle>> queue;
   for (const auto& [worst, e] : ranked)
