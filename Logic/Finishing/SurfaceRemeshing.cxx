@@ -287,7 +287,7 @@ void projectOntoInput(SurfaceMesh& surface, PointMap onInput, const Tree& tree, 
                         if (surface.is_border(v) || (only && !(*only)[index]))
                           continue;
                         const Kernel::Point_3& p = surface.point(v);
-                        surface.point(v) = known(hints[index]) ? tree.closest_point(p, hints[index]) : tree.closest_point(p);
+                        surface.point(v) = known(hints[index]) ? closestPoint(tree, p, hints[index]) : tree.closest_point(p);
                         onInput[v] = surface.point(v);
                       }
                     });

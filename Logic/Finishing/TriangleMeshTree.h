@@ -13,6 +13,8 @@
 #include <boost/iterator/counting_iterator.hpp>
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace slicemesh
@@ -62,6 +64,78 @@ struct FirstCornerOfMesh
 using TriangleMeshPrimitive =
   CGAL::AABB_primitive<std::uint32_t, TriangleOfMesh, FirstCornerOfMesh, CGAL::Tag_true, CGAL::Tag_false>;
 using TriangleMeshTree = CGAL::AABB_tree<CGAL::AABB_traits<CgalKernel, TriangleMeshPrimitive>>;
+
+/** CGAL's closest-point search (its Projection_traits) with one step more: a triangle whose box lies
+ *  beyond the closest point found so far is passed over, where CGAL computes the triangle's closest
+ *  point (most of a query's time) only to keep the one it had. Such a triangle cannot give a point as
+ *  close, so the search keeps the same points in the same order and ends with the same one, bit for
+ *  bit. The box is judged with a margin far above rounding, on the side of computing. */
+class ClosestPointSearch
+{
+public:
+  using Traits = TriangleMeshTree::AABB_traits;
+  using Point = CgalKernel::Point_3;
+
+  ClosestPointSearch(const Traits& traits, const Point& query, const Point& hint)
+    : m_Traits(traits)
+    , m_Margin(1e-9 * (1.0 + std::max({ std::abs(query.x()), std::abs(query.y()), std::abs(query.z()) })))
+    , m_Closest(hint)
+  {
+    setReach(query);
+  }
+
+  bool go_further() const { return true; }
+
+  void intersection(const Point& query, const TriangleMeshPrimitive& primitive)
+  {
+    const CgalKernel::Triangle_3 triangle = CGAL::internal::Primitive_helper<Traits>::get_datum(primitive, m_Traits);
+    double boxDistance = 0.0;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      const double a = triangle[0][axis], b = triangle[1][axis], c = triangle[2][axis], q = query[axis];
+      const double below = std::min({ a, b, c }) - q, above = q - std::max({ a, b, c });
+      const double outside = std::max({ below, above, 0.0 });
+      boxDistance += outside * outside;
+    }
+    if (boxDistance > m_Reach)
+      return;
+    const Point closest = m_Traits.closest_point_object()(query, primitive, m_Closest);
+    if (!m_Traits.equal_3_object()(closest, m_Closest))
+    {
+      m_Closest = closest;
+      setReach(query);
+    }
+  }
+
+  bool do_intersect(const Point& query, const CGAL::AABB_node<Traits>& node) const
+  {
+    return m_Traits.compare_distance_object()(query, node.bbox(), m_Closest) == CGAL::SMALLER;
+  }
+
+  const Point& closest() const { return m_Closest; }
+
+private:
+  /** The squared distance beyond which a box is passed over: the closest point's, plus the margin. */
+  void setReach(const Point& query)
+  {
+    const double reach = std::sqrt(CGAL::squared_distance(query, m_Closest)) + m_Margin;
+    m_Reach = reach * reach;
+  }
+
+  const Traits& m_Traits;
+  double m_Margin;
+  Point m_Closest;
+  double m_Reach = 0.0;
+};
+
+/** tree.closest_point(query, hint), sooner (ClosestPointSearch). */
+inline CgalKernel::Point_3 closestPoint(const TriangleMeshTree& tree, const CgalKernel::Point_3& query,
+                                        const CgalKernel::Point_3& hint)
+{
+  ClosestPointSearch search(tree.traits(), query, hint);
+  tree.traversal(query, search);
+  return search.closest();
+}
 
 /** Fills the empty `tree` with the mesh's triangles in their order (the mesh must outlive it). */
 inline void insertTriangles(TriangleMeshTree& tree, const TriangleMesh& mesh)
