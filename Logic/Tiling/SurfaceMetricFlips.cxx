@@ -130,6 +130,8 @@ std::size_t SlabOverlay::Impl::flipTowardsSurfaceQuality(const MeshBuilder& mesh
       queue.emplace_back(b, w);
     }
   }
+  if (!queue.empty())
+    flipsSettled = false;
   return flips;
 }
 
