@@ -121,6 +121,7 @@ std::size_t insertMutualIntersections(std::vector<Polygon2>& lower, std::vector<
   for (std::size_t c = 0; c < upper.size(); ++c)
     seen[c].assign(upper[c].size(), -1);
   int stamp = 0;
+  const double reach = tolerance * (1.0 + 1e-9) + 1e-12 * cellSize;
 
   for (int lc = 0; lc < static_cast<int>(lower.size()); ++lc)
   {
@@ -137,6 +138,13 @@ std::size_t insertMutualIntersections(std::vector<Polygon2>& lower, std::vector<
         const Polygon2& up = upper[ref.contour];
         const Point2& r = up[ref.edge];
         const Point2& s = up[(ref.edge + 1) % up.size()];
+        // Edges whose boxes, grown by the tolerance, do not overlap can neither touch nor cross:
+        // most of the pairs a cell holds. (The margin a hair wider, so that no distance the tests
+        // below would round to within the tolerance is passed over.)
+        const double margin = reach;
+        if (std::max(p.x, q.x) + margin < std::min(r.x, s.x) || std::max(r.x, s.x) + margin < std::min(p.x, q.x) ||
+            std::max(p.y, q.y) + margin < std::min(r.y, s.y) || std::max(r.y, s.y) + margin < std::min(p.y, q.y))
+          return;
 
         double t = 0.0;
         bool touching = false;
@@ -202,20 +210,26 @@ std::size_t removeVerticesNearCommonOnes(std::vector<Polygon2>& contours, const 
       }
   if (neighbours.empty())
     return 0;
-  std::vector<Point2> own;
-  for (const Polygon2& polygon : contours)
-    own.insert(own.end(), polygon.begin(), polygon.end());
-  SpatialHash neighbourCells(shortLength), ownCells(shortLength);
+  SpatialHash neighbourCells(shortLength);
   for (int i = 0; i < static_cast<int>(neighbours.size()); ++i)
     neighbourCells.insert(neighbours[i].p, i);
-  for (int i = 0; i < static_cast<int>(own.size()); ++i)
-    ownCells.insert(own[i], i);
-  const EdgeGrid neighbourEdges(neighbourContours, 2.0 * shortLength, tolerance);
-
   auto isCommon = [&](const Point2& p) {
     return neighbourCells.anyIn(neighbourCells.cellsWithin(p, tolerance),
                                 [&](int i) { return distance(neighbours[i].p, p) <= tolerance; });
   };
+  // Most slices have no vertex in common with their neighbours (planning-system contours hardly
+  // ever do): the rest is built only for those that have.
+  if (std::none_of(contours.begin(), contours.end(), [&](const Polygon2& polygon)
+                   { return std::any_of(polygon.begin(), polygon.end(), isCommon); }))
+    return 0;
+  std::vector<Point2> own;
+  for (const Polygon2& polygon : contours)
+    own.insert(own.end(), polygon.begin(), polygon.end());
+  SpatialHash ownCells(shortLength);
+  for (int i = 0; i < static_cast<int>(own.size()); ++i)
+    ownCells.insert(own[i], i);
+  const EdgeGrid neighbourEdges(neighbourContours, 2.0 * shortLength, tolerance);
+
   // Whether p lies in the closed triangle cba, or within tolerance of its new edge ca.
   auto inCutOff = [&](const Point2& c, const Point2& b, const Point2& a, const Point2& p) {
     if (distanceToSegment(p, c, a) <= tolerance)
