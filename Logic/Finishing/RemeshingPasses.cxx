@@ -288,6 +288,7 @@ bool degenerateAround(const Mesh& mesh, Vertex v)
   return false;
 }
 
+/** Whether the constraints let e be flipped. */
 bool flipAllowed(const Mesh& mesh, const ConstrainedEdges& constrained, Edge e)
 {
   if (constrainedOrBorder(mesh, constrained, e))
@@ -297,8 +298,14 @@ bool flipAllowed(const Mesh& mesh, const ConstrainedEdges& constrained, Edge e)
   for (Halfedge side : { h, o })
     if (constrained[mesh.edge(mesh.next(side))] && constrained[mesh.edge(mesh.prev(mesh.opposite(side)))])
       return false;
-  // The other diagonal must not be an edge already.
-  return !CGAL::halfedge(mesh.target(mesh.next(h)), mesh.target(mesh.next(o)), mesh).second;
+  return true;
+}
+
+/** Whether the other diagonal of the quad around h is an edge already (a flip would double it).
+ *  A walk around a vertex: asked last, of the edges every other test let through. */
+bool otherDiagonalExists(const Mesh& mesh, Halfedge h)
+{
+  return CGAL::halfedge(mesh.target(mesh.next(h)), mesh.target(mesh.next(mesh.opposite(h))), mesh).second;
 }
 
 void flipForValence(Mesh& mesh, const ConstrainedEdges& constrained)
@@ -313,16 +320,17 @@ void flipForValence(Mesh& mesh, const ConstrainedEdges& constrained)
     if (!flipAllowed(mesh, constrained, e) || !otherDiagonalBetter(mesh, mesh.halfedge(e)))
       continue;
     const Halfedge h = mesh.halfedge(e);
-    const bool forShape = badlyShaped(mesh, constrained, h) || badlyShaped(mesh, constrained, mesh.opposite(h));
     const Vertex a = mesh.source(h), b = mesh.target(h);
     const Vertex c = mesh.target(mesh.next(h)), d = mesh.target(mesh.next(mesh.opposite(h)));
     int& va = valence[a.idx()];
     int& vb = valence[b.idx()];
     int& vc = valence[c.idx()];
     int& vd = valence[d.idx()];
-    const int before = deviation(va, vb, vc, vd);
-    // A flip for shape is kept whatever the valences; one for valence only if they improve.
-    if (!forShape && deviation(va - 1, vb - 1, vc + 1, vd + 1) >= before)
+    // A flip for shape is taken whatever the valences; one for valence only if they improve.
+    const bool forValence = deviation(va - 1, vb - 1, vc + 1, vd + 1) < deviation(va, vb, vc, vd);
+    if (!forValence && !badlyShaped(mesh, constrained, h) && !badlyShaped(mesh, constrained, mesh.opposite(h)))
+      continue;
+    if (otherDiagonalExists(mesh, h))
       continue;
     CGAL::Euler::flip_edge(h, mesh); // h now runs between c and d
     if (!(areaNormal(mesh, h) * areaNormal(mesh, mesh.opposite(h)) > 0.0) || degenerateAround(mesh, mesh.target(h)) ||
