@@ -97,19 +97,17 @@ bool unfoldedAround(Vertex v, const SurfaceMesh& surface)
  *  vertices flagged move. */
 void relaxTangentially(SurfaceMesh& surface, unsigned int threads, const std::vector<char>* only = nullptr)
 {
-  // Every index up to the mesh's capacity: the rounds leave removed elements in place (collecting
-  // them after each round was 3% of a label map's run). Every vertex's normal and target is its own,
-  // computed from the unmoved surface, so the ranges run side by side.
-  const std::size_t vertexCount = surface.num_vertices();
+  // Vertex indices are dense here (the caller collected the garbage); every vertex's normal and
+  // target is its own, computed from the unmoved surface, so the ranges run side by side.
+  const std::size_t vertexCount = surface.number_of_vertices();
   // Not a structured binding: the lambdas below capture it (C++17 does not allow that for bindings).
   auto faceNormals = surface.add_property_map<SurfaceMesh::Face_index, Kernel::Vector_3>("f:relaxation_normal").first;
-  parallelForRanges(surface.num_faces(), threads,
+  parallelForRanges(surface.number_of_faces(), threads,
                     [&](std::size_t first, std::size_t last)
                     {
                       for (std::size_t f = first; f < last; ++f)
-                        if (!surface.is_removed(SurfaceMesh::Face_index(f)))
-                          faceNormals[SurfaceMesh::Face_index(f)] =
-                            PMP::compute_face_normal(SurfaceMesh::Face_index(f), surface);
+                        faceNormals[SurfaceMesh::Face_index(f)] =
+                          PMP::compute_face_normal(SurfaceMesh::Face_index(f), surface);
                     });
   std::vector<std::optional<Kernel::Point_3>> targets(vertexCount);
   parallelForRanges(vertexCount, threads,
@@ -118,8 +116,7 @@ void relaxTangentially(SurfaceMesh& surface, unsigned int threads, const std::ve
                       for (std::size_t index = first; index < last; ++index)
                       {
                         const Vertex v(static_cast<SurfaceMesh::size_type>(index));
-                        if (surface.is_removed(v) || surface.is_isolated(v) || surface.is_border(v) ||
-                            (only && !(*only)[index]))
+                        if (surface.is_isolated(v) || surface.is_border(v) || (only && !(*only)[index]))
                           continue;
                         // The tangent plane: the mean of the unit normals around the vertex. (CGAL's
                         // compute_vertex_normal looks for the normal most visible from every face,
@@ -258,7 +255,7 @@ template <typename PointMap>
 void projectOntoInput(SurfaceMesh& surface, PointMap onInput, const Tree& tree, unsigned int threads,
                       const std::vector<char>* only = nullptr)
 {
-  const std::size_t vertexCount = surface.num_vertices(); // removed vertices included (relaxTangentially)
+  const std::size_t vertexCount = surface.number_of_vertices();
   std::vector<Kernel::Point_3> hints(vertexCount);
   std::deque<Vertex> reached;
   for (Vertex v : surface.vertices())
@@ -287,7 +284,7 @@ void projectOntoInput(SurfaceMesh& surface, PointMap onInput, const Tree& tree, 
                       for (std::size_t index = first; index < last; ++index)
                       {
                         const Vertex v(static_cast<SurfaceMesh::size_type>(index));
-                        if (surface.is_removed(v) || surface.is_border(v) || (only && !(*only)[index]))
+                        if (surface.is_border(v) || (only && !(*only)[index]))
                           continue;
                         const Kernel::Point_3& p = surface.point(v);
                         surface.point(v) = known(hints[index]) ? closestPoint(tree, p, hints[index]) : tree.closest_point(p);
@@ -394,6 +391,7 @@ MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions&
   for (int round = 0; round < options.iterations; ++round)
   {
     splitCollapseFlip(surface, constrained, options.targetEdgeLength);
+    surface.collect_garbage(); // the next round's face index map must be dense
     relaxTangentially(surface, threads);
     if (options.projectEachRound || round + 1 == options.iterations)
       projectOntoInput(surface, onInput, tree, threads);
