@@ -13,7 +13,6 @@
 #include "MeshReader.h"
 #include "PhantomGrid.h"
 #include "PhantomStructureSet.h"
-#include "TubeTree.h"
 
 #include <algorithm>
 #include <chrono>
@@ -152,11 +151,7 @@ int main(int argc, char* argv[])
     arguments += std::string(argv[i]) + " ";
 
   std::vector<NamedPhantom> phantoms = benchmarkPhantoms();
-  phantoms.push_back({ "branching tubes r3", std::make_shared<TubeTree>(
-                                                std::vector<TubeTree::Segment>{ { Vector3(0, 0, -20), Vector3(0, 0, 0) },
-                                                                                { Vector3(0, 0, 0), Vector3(14, 4, 16) },
-                                                                                { Vector3(0, 0, 0), Vector3(-12, -5, 18) } },
-                                                3.0) });
+  phantoms.push_back(branchingTubes());
   std::printf("| phantom | slices (mm) | points (mm) | mean dist, vertices (mm) | mean dist, surface (mm) | max dist (mm) | "
               "volume | triangles | < 30° | min angle | valid | s |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|\n");
   double distanceSum = 0.0, surfaceSum = 0.0, volumeSum = 0.0, seconds = 0.0, worstBelow30 = 0.0, smallestAngle = 180.0;

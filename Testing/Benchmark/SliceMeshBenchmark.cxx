@@ -17,14 +17,9 @@
 #include "MeshWriter.h"
 #include "PhantomGrid.h"
 #include "Sections/IntermediateSections.h"
-#include "Box.h"
-#include "TubeTree.h"
 #include "MaskFileWriter.h"
 #include "MaskMeshing.h"
 #include "SlicerPipeline.h"
-
-
-#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <chrono>
@@ -188,13 +183,8 @@ std::array<double, 3> placementShift(int p)
 std::string targetsTable(const std::vector<BenchmarkGrid>& grids, int placements = 1, const std::string& missedFolder = {})
 {
   std::vector<NamedPhantom> phantoms = benchmarkPhantoms();
-  phantoms.push_back({ "branching tubes r3", std::make_shared<TubeTree>(
-                                                std::vector<TubeTree::Segment>{ { Vector3(0, 0, -20), Vector3(0, 0, 0) },
-                                                                                { Vector3(0, 0, 0), Vector3(14, 4, 16) },
-                                                                                { Vector3(0, 0, 0), Vector3(-12, -5, 18) } },
-                                                3.0) });
-  phantoms.push_back({ "thin plate 40x30x3 tilted", std::make_shared<Box>(Vector3(0, 0, 0), Vector3(20, 15, 1.5),
-                                                                          Eigen::AngleAxisd(0.4, Vector3(1, 0, 0)).toRotationMatrix()) });
+  phantoms.push_back(branchingTubes());
+  phantoms.push_back(thinPlate());
   std::string table =
     placements == 1
       ? "| phantom | grid (mm) | mean dist: SliceMesh / Slicer (mm) | triangles: SliceMesh / Slicer | < 30° | "

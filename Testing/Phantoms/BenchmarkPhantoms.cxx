@@ -6,6 +6,7 @@
 #include "PhantomCombinators.h"
 #include "Sphere.h"
 #include "Torus.h"
+#include "TubeTree.h"
 
 #include <Eigen/Geometry>
 
@@ -34,6 +35,20 @@ std::vector<NamedPhantom> benchmarkPhantoms()
     { "two spheres r10", std::make_shared<DisjointUnion>(std::make_shared<Sphere>(Vector3(-12, 0, 0), 10.0),
                                                           std::make_shared<Sphere>(Vector3(12, 0, 0), 10.0)) },
   };
+}
+
+NamedPhantom branchingTubes()
+{
+  return { "branching tubes r3", std::make_shared<TubeTree>(
+                                   std::vector<TubeTree::Segment>{ { Vector3(0, 0, -20), Vector3(0, 0, 0) },
+                                                                   { Vector3(0, 0, 0), Vector3(14, 4, 16) },
+                                                                   { Vector3(0, 0, 0), Vector3(-12, -5, 18) } },
+                                   3.0) };
+}
+
+NamedPhantom thinPlate()
+{
+  return { "thin plate 40x30x3 tilted", std::make_shared<Box>(Vector3(0, 0, 0), Vector3(20, 15, 1.5), rotation({ 1, 0, 0 }, 0.4)) };
 }
 
 std::vector<BenchmarkGrid> benchmarkGrids()

@@ -28,6 +28,11 @@ struct BenchmarkGrid
 /** Sphere, rotated ellipsoid, tilted cylinder, rotated box, torus, hollow sphere, two spheres. */
 std::vector<NamedPhantom> benchmarkPhantoms();
 
+/** Shapes the quality table does not list, checked beside it: a trunk of tubes 6 mm across that
+ *  branches in two, and a tilted plate 3 mm thick. */
+NamedPhantom branchingTubes();
+NamedPhantom thinPlate();
+
 /** 1 x 1 x 1 mm and 0.8 x 0.8 x 3 mm. */
 std::vector<BenchmarkGrid> benchmarkGrids();
 
