@@ -62,9 +62,9 @@ size_t DeflateCompressor::GetMaximumCompressionSpace(size_t size)
 size_t DeflateCompressor::CompressBuffer(unsigned char const* uncompressedData, size_t uncompressedSize,
                                          unsigned char* compressedBuffer, size_t compressionSpace)
 {
-  libdeflate_compressor* chosen = barelyCompresses(uncompressedData, uncompressedSize)
-                                    ? compressorOf(storer, 0)
-                                    : compressorOf(compressor, deflateLevel);
+  libdeflate_compressor* chosen = barelyCompresses(uncompressedData, uncompressedSize) ? compressorOf(storer, 0) : nullptr;
+  if (!chosen) // compressible, or a libdeflate without level 0
+    chosen = compressorOf(compressor, deflateLevel);
   if (!chosen)
     return 0; // VTK's writer takes 0 for a failed block and reports the error
   return libdeflate_zlib_compress(chosen, uncompressedData, uncompressedSize, compressedBuffer, compressionSpace);
