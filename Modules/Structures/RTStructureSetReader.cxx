@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdint>
+#include <filesystem>
 #include <limits>
 #include <map>
 #include <string>
@@ -19,6 +21,10 @@ namespace slicemesh
 {
 namespace
 {
+
+/** Files up to this size are read whole in one pass (the largest clinical structure sets are tens of
+ *  megabytes). */
+constexpr std::uintmax_t largestStructureSetBytes = 256ull << 20;
 
 /** DCMTK logs warnings about a file's small faults to stderr, several lines each; what matters
  *  reaches the caller through the returned conditions. */
@@ -92,9 +98,13 @@ StructureSet readWithDcmtk(const std::string& path)
   DcmFileFormat file;
   // Every value read in the one pass: values over DCMTK's default 4 KB are otherwise read when first
   // asked for, each by opening the file again (a 50,000-point set: 240 opens; cheap from a local
-  // disk, not from a network share).
-  const OFCondition loaded =
-    file.loadFile(path.c_str(), EXS_Unknown, EGL_noChange, std::numeric_limits<Uint32>::max());
+  // disk, not from a network share). Not for a file larger than any structure set: an image given
+  // by mistake is refused below before its pixels are read.
+  std::error_code sizeError;
+  const auto bytes = std::filesystem::file_size(path, sizeError);
+  const Uint32 maxReadLength =
+    !sizeError && bytes <= largestStructureSetBytes ? std::numeric_limits<Uint32>::max() : DCM_MaxReadLength;
+  const OFCondition loaded = file.loadFile(path.c_str(), EXS_Unknown, EGL_noChange, maxReadLength);
   if (loaded.bad())
     throw Error("cannot read '" + path + "' as DICOM: " + loaded.text());
   DcmDataset& dataset = *file.getDataset();
