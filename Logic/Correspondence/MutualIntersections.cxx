@@ -121,7 +121,14 @@ std::size_t insertMutualIntersections(std::vector<Polygon2>& lower, std::vector<
   for (std::size_t c = 0; c < upper.size(); ++c)
     seen[c].assign(upper[c].size(), -1);
   int stamp = 0;
-  const double reach = tolerance * (1.0 + 1e-9) + 1e-12 * cellSize;
+  // The tolerance a hair wider (far above the rounding of a distance at these coordinates), so that
+  // no pair the distance tests below would find within it is passed over by the boxes.
+  double extent = 0.0;
+  for (const std::vector<Polygon2>* slice : { &lower, &upper })
+    for (const Polygon2& polygon : *slice)
+      for (const Point2& point : polygon)
+        extent = std::max({ extent, std::abs(point.x), std::abs(point.y) });
+  const double reach = tolerance * (1.0 + 1e-9) + 1e-12 * (cellSize + extent);
 
   for (int lc = 0; lc < static_cast<int>(lower.size()); ++lc)
   {
@@ -139,11 +146,9 @@ std::size_t insertMutualIntersections(std::vector<Polygon2>& lower, std::vector<
         const Point2& r = up[ref.edge];
         const Point2& s = up[(ref.edge + 1) % up.size()];
         // Edges whose boxes, grown by the tolerance, do not overlap can neither touch nor cross:
-        // most of the pairs a cell holds. (The margin a hair wider, so that no distance the tests
-        // below would round to within the tolerance is passed over.)
-        const double margin = reach;
-        if (std::max(p.x, q.x) + margin < std::min(r.x, s.x) || std::max(r.x, s.x) + margin < std::min(p.x, q.x) ||
-            std::max(p.y, q.y) + margin < std::min(r.y, s.y) || std::max(r.y, s.y) + margin < std::min(p.y, q.y))
+        // most of the pairs a cell holds.
+        if (std::max(p.x, q.x) + reach < std::min(r.x, s.x) || std::max(r.x, s.x) + reach < std::min(p.x, q.x) ||
+            std::max(p.y, q.y) + reach < std::min(r.y, s.y) || std::max(r.y, s.y) + reach < std::min(p.y, q.y))
           return;
 
         double t = 0.0;

@@ -69,7 +69,9 @@ using TriangleMeshTree = CGAL::AABB_tree<CGAL::AABB_traits<CgalKernel, TriangleM
  *  beyond the closest point found so far is passed over, where CGAL computes the triangle's closest
  *  point (most of a query's time) only to keep the one it had. Such a triangle cannot give a point as
  *  close, so the search keeps the same points in the same order and ends with the same one, bit for
- *  bit. The box is judged with a margin far above rounding, on the side of computing. */
+ *  bit. The box is judged with a margin far above rounding, on the side of computing; only for a
+ *  triangle a billionth of its length thin, whose projected point CGAL's own rounding can carry
+ *  outside its box, could the two differ (such a triangle is no part of a valid tiling's shape). */
 class ClosestPointSearch
 {
 public:

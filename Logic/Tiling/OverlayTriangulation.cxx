@@ -50,14 +50,13 @@ std::vector<Value> inKeyOrder(std::vector<std::pair<Key, Value>> keyed)
   return values;
 }
 
-/** A face's three vertex ids (never negative), sorted and packed into one integer that orders as
- *  the sorted ids do, 21 bits each; nullopt where an id does not fit (a slab of over two million
- *  points). Sorting these rather than arrays was most of the time of finiteFacesAround. */
+/** A face's three vertex ids, sorted and packed into one integer that orders as the sorted ids do,
+ *  21 bits each; nullopt where an id does not fit (negative, or a slab of over two million points). Sorting these rather than arrays was most of the time of finiteFacesAround. */
 std::optional<std::uint64_t> packedFaceKey(std::array<int, 3> ids)
 {
   constexpr int bits = 21;
   std::sort(ids.begin(), ids.end());
-  if (ids[2] >= (1 << bits))
+  if (ids[0] < 0 || ids[2] >= (1 << bits))
     return std::nullopt;
   return (static_cast<std::uint64_t>(ids[0]) << (2 * bits)) | (static_cast<std::uint64_t>(ids[1]) << bits) |
          static_cast<std::uint64_t>(ids[2]);

@@ -147,7 +147,7 @@ struct SlabOverlay::Impl
   std::unique_ptr<NearestSegment> lowerNearest, upperNearest;
   double typicalEdge = 1.0;
   std::uint32_t flipRankings = 0; ///< rankings of the surface-metric flips so far (FaceData::rankedIn)
-  bool flipsSettled = true;       ///< no pass of the surface-metric flips stopped at its limit
+  bool flipsSettled = true;       ///< no pass of the surface-metric flips stopped at its limit (never reset)
 
   // Height of the flat cap over each cap component, recomputed with the components.
   std::vector<double> capZ;

@@ -73,8 +73,10 @@ void SlabOverlay::lift(MeshBuilder& mesh, const SlabLiftOptions& options, Recons
   statistics.steinerPoints += lastChords;
   // The flips after each round of the refinement leave every edge where no flip improves it (a
   // point's insertion changes only the faces around it, which they look at): a last pass over every
-  // edge is needed only where chords were split since, or a pass stopped at its limit. (It never
-  // flipped an edge on the benchmark structure set's 386 slabs or the thick ellipsoid's 88.)
+  // edge is needed only where chords were split since, or a pass stopped at its limit. Up to
+  // rounding: an edge is judged from one of its two faces, and at a threshold the other side can
+  // decide otherwise. (The pass never flipped an edge on the benchmark structure set's 386 slabs
+  // or the thick ellipsoid's 88.)
   if (options.minAngleDegrees > 0.0 && options.surfaceMetricFlips && (lastChords > 0 || !d.flipsSettled))
     d.flipTowardsSurfaceQuality(mesh);
 
