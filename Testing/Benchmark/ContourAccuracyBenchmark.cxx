@@ -2,7 +2,9 @@
 // phantoms are contoured as a planning system draws them: one closed polygon per piece of each
 // slice, its points on the shape's true outline at irregular steps along it. Each is written as an
 // RT structure set, meshed by the SliceMesh executable given (as a user runs it, with the extra
-// arguments given) and measured against the phantom's exact distance at every vertex.
+// arguments given) and measured with the phantom's distance function: at every vertex, and over the
+// surface at the triangles' centroids. One-sided (the mesh against the shape): a part of the shape
+// the mesh leaves out shows in the volume, not in the distances.
 //   ContourAccuracyBenchmark <SliceMesh executable> <work folder> [extra SliceMesh arguments...]
 // Prints one row per phantom, slice spacing and point spacing, then the means.
 #include "BenchmarkPhantoms.h"
@@ -148,7 +150,7 @@ int main(int argc, char* argv[])
   std::filesystem::create_directories(folder);
   std::string arguments;
   for (int i = 3; i < argc; ++i)
-    arguments += std::string(argv[i]) + " ";
+    arguments += "'" + std::string(argv[i]) + "' ";
 
   std::vector<NamedPhantom> phantoms = benchmarkPhantoms();
   phantoms.push_back(branchingTubes());
@@ -156,11 +158,12 @@ int main(int argc, char* argv[])
               "volume | triangles | < 30° | min angle | valid | s |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|\n");
   double distanceSum = 0.0, surfaceSum = 0.0, volumeSum = 0.0, seconds = 0.0, worstBelow30 = 0.0, smallestAngle = 180.0;
   int rows = 0, valid = 0;
-  std::mt19937 random(2026);
+  unsigned int caseNumber = 0;
   for (const NamedPhantom& named : phantoms)
     for (const double sliceSpacing : { 2.0, 3.0 })
       for (const double pointSpacing : { 1.0, 2.5 })
       {
+        std::mt19937 random(2026 + caseNumber++); // a case's points do not depend on the cases before it
         const std::vector<Polygon3> contours = contoured(*named.phantom, sliceSpacing, pointSpacing, random);
         const Row row = meshAndMeasure(*named.phantom, contours, executable, arguments, folder);
         if (!row.meshed)
