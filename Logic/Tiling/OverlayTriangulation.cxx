@@ -50,12 +50,20 @@ std::vector<Value> inKeyOrder(std::vector<std::pair<Key, Value>> keyed)
   return values;
 }
 
-/** A face's three vertex ids, sorted and packed into one integer that orders as the sorted ids do,
- *  21 bits each; nullopt where an id does not fit (negative, or a slab of over two million points). Sorting these rather than arrays was most of the time of finiteFacesAround. */
-std::optional<std::uint64_t> packedFaceKey(std::array<int, 3> ids)
+/** A face's three vertex ids in increasing order. */
+std::array<int, 3> sortedIds(FaceHandle f)
+{
+  std::array<int, 3> ids{ f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info() };
+  std::sort(ids.begin(), ids.end());
+  return ids;
+}
+
+/** Sorted ids packed into one integer that orders as they do, 21 bits each; nullopt where an id
+ *  does not fit (negative, or a slab of over two million points). Sorting these rather than arrays
+ *  was most of the time of finiteFacesAround. */
+std::optional<std::uint64_t> packedFaceKey(const std::array<int, 3>& ids)
 {
   constexpr int bits = 21;
-  std::sort(ids.begin(), ids.end());
   if (ids[0] < 0 || ids[2] >= (1 << bits))
     return std::nullopt;
   return (static_cast<std::uint64_t>(ids[0]) << (2 * bits)) | (static_cast<std::uint64_t>(ids[1]) << bits) |
@@ -96,21 +104,16 @@ std::vector<FaceHandle> slab::finiteFacesAround(const CDT& cdt, const std::vecto
         faces.push_back(face);
     while (++face != done);
   }
-  auto ids = [](FaceHandle f) { return std::array<int, 3>{ f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info() }; };
   std::vector<std::pair<std::uint64_t, FaceHandle>> packed;
   packed.reserve(faces.size());
   for (const FaceHandle f : faces)
-    if (const std::optional<std::uint64_t> key = packedFaceKey(ids(f)))
+    if (const std::optional<std::uint64_t> key = packedFaceKey(sortedIds(f)))
       packed.push_back({ *key, f });
   if (packed.size() == faces.size())
     return inKeyOrder(std::move(packed));
   std::vector<std::pair<std::array<int, 3>, FaceHandle>> keyed;
   for (const FaceHandle f : faces)
-  {
-    std::array<int, 3> key = ids(f);
-    std::sort(key.begin(), key.end());
-    keyed.push_back({ key, f });
-  }
+    keyed.push_back({ sortedIds(f), f });
   return inKeyOrder(std::move(keyed));
 }
 
