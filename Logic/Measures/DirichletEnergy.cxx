@@ -121,17 +121,13 @@ DirichletEnergy measureDirichletEnergy(const TriangleMesh& mesh, const ContourSt
       result.largestRelativeDecrease = std::max(result.largestRelativeDecrease, decrease / before);
     }
   };
-  const std::vector<EdgeUse>& uses = edges.uses();
   for (std::size_t v = 0; v < edges.vertices(); ++v)
-    for (std::size_t e = edges.first(v); e < edges.first(v + 1);)
-    {
-      std::size_t end = e + 1;
-      while (end < edges.first(v + 1) && uses[end].other == uses[e].other)
-        ++end;
-      if (end - e == 2) // an edge between two triangles
-        visitEdge(static_cast<std::int32_t>(v), uses[e].other, uses[e].triangle, uses[e + 1].triangle);
-      e = end;
-    }
+    edges.forEachEdgeOf(v,
+                        [&](const EdgeUse* first, const EdgeUse* last)
+                        {
+                          if (last - first == 2) // an edge between two triangles
+                            visitEdge(static_cast<std::int32_t>(v), first->other, first->triangle, first[1].triangle);
+                        });
   return result;
 }
 

@@ -37,6 +37,22 @@ public:
   std::size_t first(std::size_t v) const { return m_First[v]; }
   const std::vector<EdgeUse>& uses() const { return m_Uses; }
 
+  /** Calls visit(first, last) for each edge filed under vertex v, in order: [first, last) are its
+   *  uses (pointers into uses()). */
+  template <typename Visit>
+  void forEachEdgeOf(std::size_t v, Visit&& visit) const
+  {
+    const EdgeUse* const end = m_Uses.data() + m_First[v + 1];
+    for (const EdgeUse* first = m_Uses.data() + m_First[v]; first != end;)
+    {
+      const EdgeUse* last = first + 1;
+      while (last != end && last->other == first->other)
+        ++last;
+      visit(first, last);
+      first = last;
+    }
+  }
+
   /** Whether some triangle uses the edge between a and b. */
   bool contains(std::int32_t a, std::int32_t b) const;
 

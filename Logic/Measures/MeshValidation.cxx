@@ -116,38 +116,34 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
   std::vector<EdgeCounts> edgeCounts(vertexRanges);
   {
     const EdgeUses edgeUses(mesh, 0); // released once counted
-    const std::vector<EdgeUse>& uses = edgeUses.uses();
     parallelForFixedRanges(nPoints, rangeSize, 0,
                            [&](std::size_t r, std::size_t firstPoint, std::size_t lastPoint)
                            {
                              EdgeCounts& counts = edgeCounts[r];
                              for (std::size_t p = firstPoint; p < lastPoint; ++p)
-                             {
-                               const auto first = uses.begin() + static_cast<std::ptrdiff_t>(edgeUses.first(p));
-                               const auto last = uses.begin() + static_cast<std::ptrdiff_t>(edgeUses.first(p + 1));
-                               for (auto i = first; i != last;)
-                               {
-                                 auto j = i + 1;
-                                 std::size_t forward = i->forward ? 1 : 0;
-                                 const std::array<double, 3>& m = normals[i->triangle];
-                                 for (; j != last && j->other == i->other; ++j)
-                                 { // unit normals nearly opposite: the triangles lie on top of each other
-                                   forward += j->forward ? 1 : 0;
-                                   const std::array<double, 3>& n = normals[j->triangle];
-                                   if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -foldCosine)
-                                     ++counts.folded;
-                                 }
-                                 const auto count = static_cast<std::size_t>(j - i);
-                                 const std::size_t backward = count - forward;
-                                 counts.inconsistent += (forward > 1 ? forward - 1 : 0) + (backward > 1 ? backward - 1 : 0);
-                                 ++counts.edges;
-                                 if (count == 1)
-                                   ++counts.boundary;
-                                 else if (count > 2)
-                                   ++counts.nonManifold;
-                                 i = j;
-                               }
-                             }
+                               edgeUses.forEachEdgeOf(
+                                 p,
+                                 [&](const EdgeUse* first, const EdgeUse* last)
+                                 {
+                                   std::size_t forward = first->forward ? 1 : 0;
+                                   const std::array<double, 3>& m = normals[first->triangle];
+                                   for (const EdgeUse* j = first + 1; j != last; ++j)
+                                   { // unit normals nearly opposite: the triangles lie on top of each other
+                                     forward += j->forward ? 1 : 0;
+                                     const std::array<double, 3>& n = normals[j->triangle];
+                                     if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -foldCosine)
+                                       ++counts.folded;
+                                   }
+                                   const auto count = static_cast<std::size_t>(last - first);
+                                   const std::size_t backward = count - forward;
+                                   counts.inconsistent +=
+                                     (forward > 1 ? forward - 1 : 0) + (backward > 1 ? backward - 1 : 0);
+                                   ++counts.edges;
+                                   if (count == 1)
+                                     ++counts.boundary;
+                                   else if (count > 2)
+                                     ++counts.nonManifold;
+                                 });
                            });
   }
   std::size_t edges = 0;
