@@ -113,14 +113,9 @@ Row meshAndMeasure(const Phantom& phantom, const std::vector<Polygon3>& contours
   row.below30 = 100.0 * quality.fractionBelow30;
   row.minAngle = quality.minAngleDegrees;
   row.volumeError = 100.0 * (std::abs(validation.volume) / phantom.volume() - 1.0);
-  double sum = 0.0;
-  for (const Point3& p : surface.points)
-  {
-    const double d = distanceToSurface(phantom, p);
-    sum += d;
-    row.maxDistance = std::max(row.maxDistance, d);
-  }
-  row.meanDistance = surface.points.empty() ? 0.0 : sum / static_cast<double>(surface.points.size());
+  const VertexDistances distances = vertexDistances(phantom, surface);
+  row.meanDistance = distances.mean;
+  row.maxDistance = distances.max;
   // A surface whose vertices sit on the contours can still cut the corners between them: measured
   // at the triangles' centroids too, each counting for its area.
   double weighted = 0.0, area = 0.0;

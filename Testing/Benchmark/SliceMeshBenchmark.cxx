@@ -64,15 +64,9 @@ void measure(Row& row, const TriangleMesh& physical, const Phantom& phantom, con
   row.minAngle = q.minAngleDegrees;
   row.valid = v.valid() || (v.closed() && v.manifold() && v.selfIntersections == 0 && v.volume < 0.0);
   row.volumeError = 100.0 * (std::abs(v.volume) / phantom.volume() - 1.0);
-  double sum = 0.0;
-  row.maxDistance = 0.0;
-  for (const Point3& p : physical.points)
-  {
-    const double d = distanceToSurface(phantom, p);
-    sum += d;
-    row.maxDistance = std::max(row.maxDistance, d);
-  }
-  row.meanDistance = physical.points.empty() ? 0.0 : sum / physical.points.size();
+  const VertexDistances distances = vertexDistances(phantom, physical);
+  row.meanDistance = distances.mean;
+  row.maxDistance = distances.max;
 }
 
 /** SliceMesh as the CLI runs it (meshMask, the one meshing path), with the contour preparation,

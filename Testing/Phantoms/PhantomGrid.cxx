@@ -2,6 +2,7 @@
 
 #include <Eigen/LU>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -89,6 +90,20 @@ MaskVolume::Pointer rasterizePhantom(const Phantom& phantom, const GridSpec& gri
 double distanceToSurface(const Phantom& phantom, const Point3& physical)
 {
   return std::abs(phantom.signedDistance(Vector3(physical.x, physical.y, physical.z)));
+}
+
+VertexDistances vertexDistances(const Phantom& phantom, const TriangleMesh& mesh)
+{
+  VertexDistances distances;
+  double sum = 0.0;
+  for (const Point3& p : mesh.points)
+  {
+    const double d = distanceToSurface(phantom, p);
+    sum += d;
+    distances.max = std::max(distances.max, d);
+  }
+  distances.mean = mesh.points.empty() ? 0.0 : sum / static_cast<double>(mesh.points.size());
+  return distances;
 }
 
 } // namespace slicemesh

@@ -35,6 +35,14 @@ MaskVolume::Pointer rasterizePhantom(const Phantom& phantom, const GridSpec& gri
 /** |signed distance|: how far a physical point is from the phantom's surface (mm). */
 double distanceToSurface(const Phantom& phantom, const Point3& physical);
 
+/** The mean and largest distanceToSurface over a mesh's vertices (0 for a mesh without any). */
+struct VertexDistances
+{
+  double mean = 0.0;
+  double max = 0.0;
+};
+VertexDistances vertexDistances(const Phantom& phantom, const TriangleMesh& mesh);
+
 } // namespace slicemesh
 
 #endif
