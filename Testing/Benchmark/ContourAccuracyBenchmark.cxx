@@ -8,13 +8,12 @@
 //   ContourAccuracyBenchmark <SliceMesh executable> <work folder> [extra SliceMesh arguments...]
 // Prints one row per phantom, slice spacing and point spacing, then the means.
 #include "BenchmarkPhantoms.h"
-#include "Contours/MarchingSquares.h"
-#include "Core/AreaNormal.h"
 #include "Measures/MeshQuality.h"
 #include "Measures/MeshValidation.h"
 #include "MeshReader.h"
 #include "PhantomGrid.h"
 #include "PhantomStructureSet.h"
+#include "PlannerContours.h"
 
 #include <algorithm>
 #include <chrono>
@@ -32,57 +31,6 @@ namespace
 {
 
 using Polygon3 = std::vector<Point3>; ///< a closed contour of one slice
-
-/** Sampling of the signed distance within a slice: the outline found on it lies within a few
- *  micrometres of the true one, far below any point spacing measured. */
-constexpr double outlineCell = 0.1;
-
-/** Points at irregular steps along the closed polyline `outline`, about `spacing` apart on average
- *  (each step's position moved by up to 35% of a step, as a planner clicks or a tool resamples). */
-Polygon3 planningContour(const Polygon2& outline, double z, double spacing, std::mt19937& random)
-{
-  std::vector<double> along(outline.size() + 1, 0.0);
-  for (std::size_t i = 0; i < outline.size(); ++i)
-    along[i + 1] = along[i] + distance(outline[i], outline[(i + 1) % outline.size()]);
-  const double length = along.back();
-  const int points = std::max(8, static_cast<int>(std::lround(length / spacing)));
-  std::uniform_real_distribution<double> jitter(-0.35, 0.35);
-  Polygon3 contour;
-  std::size_t segment = 0;
-  for (int k = 0; k < points; ++k)
-  {
-    const double at = length * (k + (k == 0 ? 0.0 : jitter(random))) / points;
-    while (segment + 1 < outline.size() && along[segment + 1] < at)
-      ++segment;
-    const Point2& a = outline[segment];
-    const Point2& b = outline[(segment + 1) % outline.size()];
-    const double span = along[segment + 1] - along[segment];
-    const double t = span > 0.0 ? (at - along[segment]) / span : 0.0;
-    contour.push_back({ a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), z });
-  }
-  return contour;
-}
-
-/** The phantom's contours on axial slices `sliceSpacing` apart (placed off the shape's centre, as CT
- *  slices fall), points about `pointSpacing` apart. */
-std::vector<Polygon3> contoured(const Phantom& phantom, double sliceSpacing, double pointSpacing, std::mt19937& random)
-{
-  std::vector<Polygon3> contours;
-  const Bounds bounds = phantom.bounds();
-  const Box2 box{ bounds.lower.x() - 1.0, bounds.lower.y() - 1.0, bounds.upper.x() + 1.0, bounds.upper.y() + 1.0 };
-  for (double z = bounds.lower.z() + 0.37 * sliceSpacing; z < bounds.upper.z(); z += sliceSpacing)
-  {
-    const ScalarGrid2 grid = sampleGrid(box, outlineCell,
-                                        [&](const std::vector<Point2>& nodes, std::vector<double>& values)
-                                        {
-                                          for (const Point2& p : nodes)
-                                            values.push_back(phantom.signedDistance(Vector3(p.x, p.y, z)));
-                                        });
-    for (const Polygon2& outline : zeroContours(grid, 4.0 * outlineCell * outlineCell))
-      contours.push_back(planningContour(outline, z, pointSpacing, random));
-  }
-  return contours;
-}
 
 struct Row
 {
@@ -116,18 +64,7 @@ Row meshAndMeasure(const Phantom& phantom, const std::vector<Polygon3>& contours
   const VertexDistances distances = vertexDistances(phantom, surface);
   row.meanDistance = distances.mean;
   row.maxDistance = distances.max;
-  // A surface whose vertices sit on the contours can still cut the corners between them: measured
-  // at the triangles' centroids too, each counting for its area.
-  double weighted = 0.0, area = 0.0;
-  for (const Triangle& t : surface.triangles)
-  {
-    const Point3 &a = surface.points[t[0]], &b = surface.points[t[1]], &c = surface.points[t[2]];
-    const Point3 n = areaNormal(a, b, c);
-    const double triangleArea = 0.5 * std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-    weighted += triangleArea * distanceToSurface(phantom, { (a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0, (a.z + b.z + c.z) / 3.0 });
-    area += triangleArea;
-  }
-  row.surfaceDistance = area > 0.0 ? weighted / area : 0.0;
+  row.surfaceDistance = meanSurfaceDistance(phantom, surface);
   return row;
 }
 
@@ -159,7 +96,7 @@ int main(int argc, char* argv[])
       for (const double pointSpacing : { 1.0, 2.5 })
       {
         std::mt19937 random(2026 + caseNumber++); // a case's points do not depend on the cases before it
-        const std::vector<Polygon3> contours = contoured(*named.phantom, sliceSpacing, pointSpacing, random);
+        const std::vector<Polygon3> contours = plannerContours(*named.phantom, sliceSpacing, pointSpacing, random);
         const Row row = meshAndMeasure(*named.phantom, contours, executable, arguments, folder);
         if (!row.meshed)
         {

@@ -1,5 +1,7 @@
 #include "PhantomGrid.h"
 
+#include "Core/AreaNormal.h"
+
 #include <Eigen/LU>
 
 #include <algorithm>
@@ -104,6 +106,21 @@ VertexDistances vertexDistances(const Phantom& phantom, const TriangleMesh& mesh
   }
   distances.mean = mesh.points.empty() ? 0.0 : sum / static_cast<double>(mesh.points.size());
   return distances;
+}
+
+double meanSurfaceDistance(const Phantom& phantom, const TriangleMesh& mesh)
+{
+  double weighted = 0.0, area = 0.0;
+  for (const Triangle& t : mesh.triangles)
+  {
+    const Point3 &a = mesh.points[t[0]], &b = mesh.points[t[1]], &c = mesh.points[t[2]];
+    const Point3 n = areaNormal(a, b, c);
+    const double triangleArea = 0.5 * std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+    const Point3 centroid{ (a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0, (a.z + b.z + c.z) / 3.0 };
+    weighted += triangleArea * distanceToSurface(phantom, centroid);
+    area += triangleArea;
+  }
+  return area > 0.0 ? weighted / area : 0.0;
 }
 
 } // namespace slicemesh

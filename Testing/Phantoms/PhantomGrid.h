@@ -43,6 +43,11 @@ struct VertexDistances
 };
 VertexDistances vertexDistances(const Phantom& phantom, const TriangleMesh& mesh);
 
+/** The mean distanceToSurface over a mesh's surface, not only its vertices: at each triangle's
+ *  centroid, weighted by its area (0 for a mesh without area). A surface whose vertices lie on the
+ *  truth can still cut the corners between them. */
+double meanSurfaceDistance(const Phantom& phantom, const TriangleMesh& mesh);
+
 } // namespace slicemesh
 
 #endif
