@@ -7,6 +7,8 @@ packages=(
   cmake g++ make pkg-config
   libinsighttoolkit5-dev libvtk9-dev libcgal-dev libeigen3-dev libgmp-dev libmpfr-dev libtbb-dev
   libgtest-dev libtclap-dev
+  # GDCM's scanner checks a DICOM series' slice positions (Modules/Image); ITK's reader uses GDCM too.
+  libgdcm-dev
   # DICOM SEG segmentation files and RT structure sets (DCMTK), the JSON contour format, polygon
   # booleans for contours that cross (Clipper).
   libdcmtk-dev nlohmann-json3-dev libpolyclipping-dev

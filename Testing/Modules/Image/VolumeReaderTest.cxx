@@ -308,6 +308,28 @@ TEST_F(VolumeReaderTest, DicomSeriesDirectoryRoundTrip)
   EXPECT_NE(errorMessageOf([&] { readVolumeGeometry(path("none.nrrd")); }).find("no such file"), std::string::npos);
 }
 
+TEST_F(VolumeReaderTest, DicomSeriesWithAMissingSliceIsAnError)
+{
+  // The series reader spaces the slices evenly between the first and the last: with one missing,
+  // every slice after the gap would be put half a spacing or more from where it was scanned.
+  using ShortVolume = itk::Image<short, 3>;
+  auto volume = testing::makeImage<ShortVolume>({ 4, 4, 6 }, { 0.8, 0.8, 2.5 });
+  const fs::path dicom = m_Directory / "series";
+  testing::writeCTSeries(volume, dicom);
+  ASSERT_TRUE(fs::remove(dicom / "slice005.dcm")); // the last: still evenly spaced, one slice fewer
+  EXPECT_EQ(readVolume(dicom.string())->GetLargestPossibleRegion().GetSize()[2], 5u);
+
+  ASSERT_TRUE(fs::remove(dicom / "slice002.dcm"));
+  for (const std::string& message : { errorMessageOf([&] { readVolume(dicom.string()); }),
+                                      errorMessageOf([&] { readVolumeGeometry(dicom.string()); }) })
+  {
+    EXPECT_NE(message.find("not evenly spaced"), std::string::npos) << message;
+    EXPECT_NE(message.find("slice001.dcm and slice003.dcm are 5 mm apart where the others are 2.5 mm"), std::string::npos)
+      << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
 TEST_F(VolumeReaderTest, DirectoryWithoutDicomIsAnError)
 {
   writeText("readme.txt", "no images here\n");
