@@ -64,6 +64,43 @@ std::vector<std::size_t> keptIndices(const std::vector<char>& kept)
   return indices;
 }
 
+/** The contour still a proper polygon: at least 3 points, and at least half the area it had as
+ *  traced. A contour thinner than the tolerance (a bar one voxel thick) otherwise falls to a
+ *  triangle or a sliver of almost no area, which no surface can be tiled from; half is where the
+ *  simplified outline stops standing for the traced one. */
+bool isProperPolygon(const Polygon2& polygon, const std::vector<char>& kept)
+{
+  Polygon2 simplified;
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    if (kept[i])
+      simplified.push_back(polygon[i]);
+  return simplified.size() >= std::min<std::size_t>(3, polygon.size()) &&
+         std::abs(twiceSignedArea(simplified)) >= 0.5 * std::abs(twiceSignedArea(polygon));
+}
+
+/** Puts back the dropped point farthest from the kept edge that replaced it; false when none is
+ *  left (every point kept). */
+bool putBackFarthestDropped(const Polygon2& polygon, std::vector<char>& kept)
+{
+  const std::vector<std::size_t> k = keptIndices(kept);
+  std::size_t best = polygon.size();
+  double bestDistance = -1.0;
+  for (std::size_t e = 0; e < k.size(); ++e)
+  {
+    double d = 0.0;
+    const std::size_t split = farthestBetween(polygon, k[e], k[(e + 1) % k.size()], &d);
+    if (split != polygon.size() && d > bestDistance)
+    {
+      bestDistance = d;
+      best = split;
+    }
+  }
+  if (best == polygon.size())
+    return false;
+  kept[best] = 1;
+  return true;
+}
+
 } // namespace
 
 std::vector<Polygon2> simplifyContours(const std::vector<Polygon2>& contours, double tolerance)
@@ -91,14 +128,8 @@ std::vector<Polygon2> simplifyContours(const std::vector<Polygon2>& contours, do
     kept[c][0] = kept[c][far] = 1;
     douglasPeucker(polygon, 0, far, tolerance, kept[c]);
     douglasPeucker(polygon, far, 0, tolerance, kept[c]);
-    // At least a triangle: the point farthest from the chord of the two anchors.
-    while (std::count(kept[c].begin(), kept[c].end(), 1) < 3)
+    while (!isProperPolygon(polygon, kept[c]) && putBackFarthestDropped(polygon, kept[c]))
     {
-      const std::vector<std::size_t> k = keptIndices(kept[c]);
-      double d1 = 0.0, d2 = 0.0;
-      const std::size_t s1 = farthestBetween(polygon, k[0], k[1], &d1);
-      const std::size_t s2 = farthestBetween(polygon, k[1], k[0], &d2);
-      kept[c][d1 >= d2 ? s1 : s2] = 1;
     }
   }
 

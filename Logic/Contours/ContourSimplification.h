@@ -12,7 +12,9 @@ namespace slicemesh
  *  contour, anchored at its first point and the point farthest from it). Then, as long as two kept
  *  edges of the slice cross or touch (of one contour or of two), the dropped point farthest from
  *  each such edge is put back (Saalfeld's topology-preserving repair): the result has no crossing
- *  that the input did not have, and nesting is unchanged. Every contour keeps at least 3 points.
+ *  that the input did not have, and nesting is unchanged. Every contour stays a proper polygon:
+ *  while it has fewer than 3 points or less than half its traced area, the dropped point farthest
+ *  from its kept edge is put back (a contour thinner than the tolerance keeps its width).
  *  tolerance <= 0 returns the contours unchanged. */
 std::vector<Polygon2> simplifyContours(const std::vector<Polygon2>& contours, double tolerance);
 

@@ -558,5 +558,23 @@ TEST(EndToEnd, LabelsAboveOneByteAreMeshedAsFromFloat)
   EXPECT_EQ(mesh, fileText(folder / "float.obj"));
 }
 
+TEST(EndToEnd, ContourSimplificationKeepsAOneVoxelThinBarASolid)
+{
+  // A bar one voxel (0.5 mm) thick and six long in one slice: at a tolerance of 0.25 mm and over,
+  // every traced point is within it of the bar's axis, and the contour once fell to a triangle
+  // that meshed as a flat sheet (exit 7).
+  const fs::path folder = freshFolder("e2e-thin-bar");
+  const fs::path input = folder / "thin-bar.mha";
+  writeMetaImage(input, { 12, 8, 8 }, { 1.0, 0.5, 0.5 },
+                 [](int i, int j, int k) -> unsigned char { return j == 3 && i >= 2 && i <= 7 && k == 2; });
+  for (const std::string tolerance : { "0.2", "0.3", "2" })
+  {
+    const RunResult r = runSliceMesh("--contourSimplification " + tolerance + " " + quoted(input.string()) + " " +
+                                     quoted((folder / "bar.vtp").string()));
+    EXPECT_EQ(r.exitCode, cli::Success) << tolerance << ": " << r.err;
+    EXPECT_EQ(r.err, "") << tolerance;
+  }
+}
+
 } // namespace
 } // namespace slicemesh::testing

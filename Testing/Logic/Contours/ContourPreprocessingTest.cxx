@@ -137,8 +137,32 @@ TEST(ContourSimplification, DropsPointsWithinTheToleranceOnly)
   }
   // Tolerance 0: unchanged.
   EXPECT_EQ(simplifyContours(std::vector<Polygon2>{ zigzag }, 0.0).front().size(), zigzag.size());
-  // A contour smaller than the tolerance keeps a triangle.
-  EXPECT_EQ(simplifyContours(std::vector<Polygon2>{ circle(0, 0, 0.2, 20) }, 5.0).front().size(), 3u);
+  // A contour smaller than the tolerance keeps at least half its area: 4 of its points (a
+  // triangle of 3 would keep 32% of the disk, the square 64%).
+  const Polygon2 small = circle(0, 0, 0.2, 20);
+  const Polygon2 kept = simplifyContours(std::vector<Polygon2>{ small }, 5.0).front();
+  EXPECT_EQ(kept.size(), 4u);
+  EXPECT_GE(polygonArea(kept), 0.5 * polygonArea(small));
+}
+
+TEST(ContourSimplification, AContourThinnerThanTheToleranceKeepsItsWidth)
+{
+  // A bar one pixel thick and six long on pixels of 1 x 0.5 mm, traced: every point lies within
+  // 0.25 mm of the chord between its two ends, so at 0.3 mm Douglas-Peucker keeps a triangle of a
+  // quarter of its area (a flat sliver the tiling cannot close).
+  std::vector<Polygon2> bar = staircaseContours(12, 8, [](double x, double y) { return y == 3 && x >= 2 && x <= 7; });
+  ASSERT_EQ(bar.size(), 1u);
+  for (Point2& p : bar.front())
+    p.y *= 0.5;
+  for (double tolerance : { 0.2, 0.25, 0.3, 1.0, 10.0 })
+  {
+    const Polygon2 simplified = simplifyContours(bar, tolerance).front();
+    SCOPED_TRACE(tolerance);
+    EXPECT_GE(simplified.size(), 4u);
+    EXPECT_LT(simplified.size(), bar.front().size());
+    EXPECT_GE(polygonArea(simplified), 0.5 * polygonArea(bar.front()));
+    EXPECT_TRUE(contourCrossings({ simplified }).empty());
+  }
 }
 
 TEST(ContourSimplification, NeverCreatesCrossings)
