@@ -189,6 +189,7 @@ PipelineSettings settingsFrom(const ParsedArguments& arguments)
   }
   settings.reportFile = arguments.text("report");
   settings.snapshotFile = arguments.text("snapshot");
+  settings.returnParameterFile = arguments.returnParameterFile;
   settings.threads = static_cast<unsigned int>(arguments.integer("threads"));
   return settings;
 }

@@ -76,9 +76,20 @@ void requireWritableFolder(const fs::path& folder, bool create, const std::strin
  *  run writes nothing. */
 ColorTable checkBeforeWork(const PipelineSettings& settings)
 {
-  const fs::path output(settings.outputModel);
-  requireWritableFolder(output.has_parent_path() ? output.parent_path() : ".", false,
-                        "cannot write mesh '" + settings.outputModel + "'");
+  auto folderOf = [](const std::string& file)
+  {
+    const fs::path path(file);
+    return path.has_parent_path() ? path.parent_path() : fs::path(".");
+  };
+  requireWritableFolder(folderOf(settings.outputModel), false, "cannot write mesh '" + settings.outputModel + "'");
+  // The files written after the mesh: a missing folder must not cost the whole run.
+  if (!settings.reportFile.empty())
+    requireWritableFolder(folderOf(settings.reportFile), false, "cannot write report '" + settings.reportFile + "'");
+  if (!settings.returnParameterFile.empty())
+    requireWritableFolder(folderOf(settings.returnParameterFile), false,
+                          "cannot write the return-parameter file '" + settings.returnParameterFile + "'");
+  if (!settings.snapshotFile.empty())
+    requireWritableFolder(folderOf(settings.snapshotFile), false, "cannot write snapshot '" + settings.snapshotFile + "'");
   if ((settings.multiLabel.enabled || settings.contours.enabled()) && !settings.multiLabel.outputDirectory.empty())
     requireWritableFolder(settings.multiLabel.outputDirectory, true,
                           std::string("cannot write the ") + (settings.contours.enabled() ? "ROI" : "label") +

@@ -35,6 +35,8 @@ struct PipelineSettings
   CoordinateSystem coordinateSystem = CoordinateSystem::LPS;
   std::string reportFile;   ///< JSON quality report to write; empty: none
   std::string snapshotFile; ///< PNG picture coloured by triangle quality; empty: none
+  /** Slicer's --returnparameterfile: written by the caller after the run, its folder checked before. */
+  std::string returnParameterFile;
   /** One mesh per label of a label map. */
   MultiLabelSettings multiLabel;
   /** A structure set or contour file instead of the volume: one mesh per ROI, named, coloured and

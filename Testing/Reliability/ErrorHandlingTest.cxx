@@ -296,6 +296,32 @@ TEST(ErrorHandling, OutputFolderMissingOrNotWritable)
   }
 }
 
+TEST(ErrorHandling, ReportReturnParameterAndSnapshotFoldersAreCheckedBeforeAnyWork)
+{
+  // The files written after the mesh: a missing folder is refused as the output's is, before any
+  // stage starts, and the mesh is not written either (it was, after the whole run, then exit 6).
+  const Folders f = foldersFor("result-folders");
+  writeMetaImage(f.inputs / "box.mha", { 6, 6, 6 }, { 1, 1, 1 },
+                 [](int i, int j, int k) -> unsigned char { return i > 1 && i < 4 && j > 1 && j < 4 && k > 1 && k < 4; });
+  const std::string input = (f.inputs / "box.mha").string();
+  const std::string missing = (f.outputs / "nowhere").string();
+  const std::vector<std::pair<std::string, std::string>> cases{
+    { "--report", "cannot write report '" + missing + "/r.json': folder '" + missing + "' does not exist" },
+    { "--returnparameterfile",
+      "cannot write the return-parameter file '" + missing + "/r.txt': folder '" + missing + "' does not exist" },
+    { "--snapshot", "cannot write snapshot '" + missing + "/s.png': folder '" + missing + "' does not exist" },
+  };
+  const std::vector<std::string> files{ "r.json", "r.txt", "s.png" };
+  for (std::size_t c = 0; c < cases.size(); ++c)
+  {
+    const std::string options = cases[c].first + " " + quoted(missing + "/" + files[c]);
+    expectFailure(f.outputs, input, cli::WriteFailed, cases[c].second, options);
+    expectFailure(f.outputs, input, cli::WriteFailed, cases[c].second, "--splitLabels " + options);
+    const RunResult r = runSliceMesh(options + " " + quoted(input) + " " + quoted((f.outputs / "out.vtp").string()));
+    EXPECT_EQ(r.out.find("<filter-start>"), std::string::npos) << "no stage may start: " << r.out;
+  }
+}
+
 TEST(ErrorHandling, UnknownOutputExtension)
 {
   const Folders f = foldersFor("extension");
