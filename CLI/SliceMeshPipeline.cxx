@@ -97,7 +97,9 @@ ColorTable checkBeforeWork(const PipelineSettings& settings)
   std::string reason;
   if (!settings.snapshotFile.empty() && !snapshotAvailable(&reason))
     throw PipelineFailure(WriteFailed, "cannot render snapshot '" + settings.snapshotFile + "': " + reason);
-  if (settings.multiLabel.enabled && !settings.multiLabel.colorTable.empty())
+  // Read in every run, not only where it names the labels: a wrong path is the user's mistake
+  // whichever run it is given to.
+  if (!settings.multiLabel.colorTable.empty())
     return guarded(BadArguments, [&] { return ColorTable::read(settings.multiLabel.colorTable); });
   return {};
 }

@@ -322,6 +322,22 @@ TEST(ErrorHandling, ReportReturnParameterAndSnapshotFoldersAreCheckedBeforeAnyWo
   }
 }
 
+TEST(ErrorHandling, AnUnreadableColourTableIsRefusedInEveryRun)
+{
+  // A single-label run ignored a colour table it could not open; one mesh per label refused it.
+  const Folders f = foldersFor("colour-table");
+  writeMetaImage(f.inputs / "box.mha", { 6, 6, 6 }, { 1, 1, 1 },
+                 [](int i, int j, int k) -> unsigned char { return i > 1 && i < 4 && j > 1 && j < 4 && k > 1 && k < 4; });
+  const std::string input = (f.inputs / "box.mha").string();
+  const std::string table = (f.inputs / "no-such-table.txt").string();
+  for (const std::string run : { "", "--splitLabels ", "--label 1 " })
+    expectFailure(f.outputs, input, cli::BadArguments, table + ": cannot open the colour table",
+                  run + "--colorTable " + quoted(table));
+  writeText(f.inputs / "bad-table.txt", "Box 1\n");
+  expectFailure(f.outputs, input, cli::BadArguments, "expected 'value name [r g b [a]]'",
+                "--colorTable " + quoted((f.inputs / "bad-table.txt").string()));
+}
+
 TEST(ErrorHandling, UnknownOutputExtension)
 {
   const Folders f = foldersFor("extension");
