@@ -1,5 +1,6 @@
 #include "SliceMeshPipeline.h"
 
+#include "LengthLimits.h"
 #include "PipelineStep.h"
 #include "PipelineStructures.h"
 
@@ -18,10 +19,12 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <mutex>
 #include <optional>
 #include <sstream>
@@ -242,6 +245,14 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   // The masks are cut: the volume (or the segmentation's layers) is no longer needed.
   volume = StoredVolume();
   segmentation.layers.clear();
+  // Lengths too fine for the grid are refused before the meshing grows without bound.
+  double smallestVoxelSide = std::numeric_limits<double>::infinity();
+  for (const Structure& s : structures)
+    if (s.live())
+      for (unsigned int axis = 0; axis < 3; ++axis)
+        smallestVoxelSide = std::min(smallestVoxelSide, s.mask ? s.mask->GetSpacing()[axis] : s.contours.spacing[axis]);
+  if (std::isfinite(smallestVoxelSide))
+    requireResolvableLengths(settings.meshing, smallestVoxelSide);
   for (const Structure& s : structures)
     if (!s.report.error.empty())
     {

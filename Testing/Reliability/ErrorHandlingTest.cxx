@@ -338,6 +338,27 @@ TEST(ErrorHandling, AnUnreadableColourTableIsRefusedInEveryRun)
                 "--colorTable " + quoted((f.inputs / "bad-table.txt").string()));
 }
 
+TEST(ErrorHandling, LengthsUnderATwentiethOfTheSmallestVoxelSideAreRefused)
+{
+  // In the XML's range (0 .. 50) but far under the voxels: --targetEdgeLength 1e-300 grew without
+  // bound, 0.005 mm on a 1 mm grid to gigabytes. The smallest side here is 0.5 mm: 0.025 mm. (Just
+  // under it, so that without the limit this fails fast instead of hanging.)
+  const Folders f = foldersFor("tiny-lengths");
+  writeMetaImage(f.inputs / "box.mha", { 8, 8, 8 }, { 1, 1, 0.5 },
+                 [](int i, int j, int k) -> unsigned char { return i > 1 && i < 5 && j > 1 && j < 5 && k > 1 && k < 6; });
+  const std::string input = (f.inputs / "box.mha").string();
+  for (const std::string option : { "--targetEdgeLength", "--maxEdgeLength", "--wallRowHeight", "--contourPointSpacing" })
+  {
+    expectFailure(f.outputs, input, cli::BadArguments, option + " (", option + " 0.024");
+    expectFailure(f.outputs, input, cli::BadArguments,
+                  "0.02 mm is under a twentieth of the smallest voxel side (0.5 mm): use at least 0.025 mm",
+                  "--splitLabels " + option + " 0.02");
+    const RunResult r = runSliceMesh(option + " 0.025 " + quoted(input) + " " + quoted((f.outputs / "fine.vtp").string()));
+    EXPECT_EQ(r.exitCode, cli::Success) << option << ": " << r.err;
+    fs::remove(f.outputs / "fine.vtp");
+  }
+}
+
 TEST(ErrorHandling, UnknownOutputExtension)
 {
   const Folders f = foldersFor("extension");
