@@ -18,7 +18,7 @@ set(SLICEMESH_INTERNAL_HEADERS
   Core/DisjointSets.h Core/SpatialHash.h Core/NearestSegment.h
   Contours/ContourCrossings.h
   Correspondence/PolygonProximity.h Correspondence/MutualIntersections.h
-  Finishing/RemeshingRegions.h
+  Finishing/RemeshingRegions.h Finishing/PieceTargetVolumes.h
   Measures/SurfaceMeshConversion.h
   Tiling/SlabTiling.h Tiling/SlabOverlayState.h Tiling/MeshBuilder.h)
 file(GLOB SLICEMESH_LOGIC_HEADERS RELATIVE ${PROJECT_SOURCE_DIR}/Logic ${PROJECT_SOURCE_DIR}/Logic/*/*.h)

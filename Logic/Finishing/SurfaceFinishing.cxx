@@ -2,6 +2,7 @@
 
 #include "Core/ParallelFor.h"
 #include "Core/SpatialHash.h"
+#include "Finishing/PieceTargetVolumes.h"
 #include "Measures/ComponentOrientation.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/MeshCrossings.h"
@@ -570,7 +571,8 @@ TriangleMesh joinPieces(const std::vector<FinishedPiece>& pieces, std::vector<st
 } // namespace
 
 FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& tilingValidation,
-                              const SurfaceFinishingOptions& options, unsigned int threads, double targetVolume)
+                              const SurfaceFinishingOptions& options, unsigned int threads, double targetVolume,
+                              const std::vector<ContourVolume>& targetShares)
 {
   // The tiling's self-intersections may not have been looked for yet (MeshedContours): it is
   // checked here where it is handed back, and piece by piece where a piece is kept as tiled.
@@ -598,18 +600,16 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   std::size_t components = 0;
   vertexComponents(tiling, components);
   const bool onePiece = components == 1 && !tiling.triangles.empty();
-  // The target is shared among the pieces in proportion to their tiled volumes. Between thick slices
-  // a thin or branching structure's tiling falls short of its voxels by up to a tenth or so; among
-  // several pieces, a target farther off than a quarter is not such a shortfall spread evenly (specks
-  // in one slice fall far shorter than large pieces: their domed caps are most of them) and is not
-  // followed. A piece alone owns its target whatever the shortfall: a structure in one slice a few
-  // millimetres across is tiled at about 60% of its slab's volume. Not a speck, though: it is a few
-  // triangles across, and an offset that gave back a shortfall that large (a voxel is tiled at a
-  // sixth of its volume) would bend them out of shape.
-  const double scale = targetVolume / tilingValidation.volume;
-  const bool nearTarget = std::abs(scale - 1.0) <= 0.25;
-  const double volumeScale = targetVolume > 0.0 && (onePiece || nearTarget) ? scale : 1.0;
-  const double speckVolumeScale = targetVolume > 0.0 && nearTarget ? scale : 1.0;
+  // A tiling of one piece owns the target whatever the shortfall: a structure in one slice a few
+  // millimetres across is tiled at about 60% of its slab's volume. Among several pieces each gets
+  // the shares of its own contours (without shares, the target in proportion to the tiled volumes),
+  // followed within a quarter of its tiled volume: between thick slices a thin or branching piece
+  // falls short of its voxels by up to a tenth or so, while a speck falls far shorter (a voxel is
+  // tiled at a sixth of its volume: its domed caps are most of it), and an offset that gave that
+  // back would bend it out of shape. No piece makes up for another: shared in proportion, a cube
+  // beside twenty single voxels was finished 1.7% too large.
+  const double scale = targetVolume > 0.0 ? targetVolume / tilingValidation.volume : 1.0;
+  auto followed = [](double s) { return std::abs(s - 1.0) <= 0.25 ? s : 1.0; };
   std::vector<TriangleMesh> split = onePiece ? std::vector<TriangleMesh>() : splitIntoPieces(tiling);
   std::vector<const TriangleMesh*> tiledPieces;
   if (onePiece)
@@ -619,6 +619,10 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   std::vector<FinishedPiece> pieces(tiledPieces.size());
   std::vector<MeshValidation> tiledValidations(tiledPieces.size());
   std::vector<char> speck(tiledPieces.size());
+  const std::vector<double> targets = !onePiece && targetVolume > 0.0 && !targetShares.empty()
+                                        ? pieceTargetVolumes(tiledPieces, targetShares, targetVolume)
+                                        : std::vector<double>();
+  std::vector<double> volumeScales(tiledPieces.size(), 1.0);
   // The piece that holds most of the surface (often the only one) would keep one thread busy long
   // after the others are done: it gets the threads for the work inside it.
   auto innerThreads = [&](std::size_t p) {
@@ -633,10 +637,13 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
                 // A speck of a few voxels is a couple of target edges across: it is finished at its
                 // own scale.
                 speck[p] = isSpeck(tiledValidations[p], options.remeshing.targetEdgeLength);
+                // A hole's piece and its shares are both negative.
+                const double own = targets.empty() ? scale : targets[p] / tiledValidations[p].volume;
+                volumeScales[p] = onePiece && !speck[p] ? scale : own > 0.0 ? followed(own) : 1.0;
                 if (speck[p])
-                  pieces[p] = finishedSpeck(*tiledPieces[p], tiledValidations[p], options, speckVolumeScale, innerThreads(p));
+                  pieces[p] = finishedSpeck(*tiledPieces[p], tiledValidations[p], options, volumeScales[p], innerThreads(p));
                 else
-                  pieces[p] = finishPiece(*tiledPieces[p], tiledValidations[p], options, volumeScale, innerThreads(p));
+                  pieces[p] = finishPiece(*tiledPieces[p], tiledValidations[p], options, volumeScales[p], innerThreads(p));
               });
 
   // Pieces that cross each other once finished are remeshed again with their tiled triangles kept
@@ -653,7 +660,7 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
         return;
       }
       pieces[p] = finishedAgainAround(std::move(pieces[p]), *tiledPieces[p], tiledValidations[p], options,
-                                      volumeScale * tiledValidations[p].volume, innerThreads(p), places,
+                                      volumeScales[p] * tiledValidations[p].volume, innerThreads(p), places,
                                       round < roundsRemeshedAround);
     });
   std::vector<MeshValidation> validations;

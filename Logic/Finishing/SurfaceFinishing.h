@@ -3,6 +3,7 @@
 #ifndef SurfaceFinishing_h
 #define SurfaceFinishing_h
 
+#include "Measures/ContourVolumes.h"
 #include "Measures/MeshValidation.h"
 #include "Finishing/SurfaceRemeshing.h"
 #include "Finishing/SurfaceSmoothing.h"
@@ -63,10 +64,13 @@ struct FinishedSurface
 SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing);
 
 /** Finishes a tiling whose validation is given, one connected piece at a time: each piece is
- *  remeshed and smoothed and gets its tiled volume back, times targetVolume / the tiling's volume
- *  when a `targetVolume` (mm^3) is given (the voxels' volume: the tiling's chords sit slightly
- *  inside a curved surface), within 25% of the tiling's unless the tiling is one piece (a small
- *  structure in one slice is tiled well short of its slab); where smoothing makes its triangles cross,
+ *  remeshed and smoothed and gets its tiled volume back, or, when a `targetVolume` (mm^3) is given
+ *  (the voxels' volume: the tiling's chords sit slightly inside a curved surface), its target: a
+ *  tiling of one piece targetVolume whatever its shortfall (a small structure in one slice is tiled
+ *  well short of its slab); each of several pieces the `targetShares` that fall on it
+ *  (pieceTargetVolumes), or without shares targetVolume shared in proportion to the tiled volumes,
+ *  followed only within 25% of the piece's tiled volume (a voxel is tiled at a sixth of its
+ *  volume, and an offset that large would bend a speck out of shape); where smoothing makes its triangles cross,
  *  the vertices around them (growing rings, three tries) go back to their remeshed positions. A piece
  *  is kept finished only if it is a valid surface of its tiled topology, facing the same way;
  *  otherwise it is smoothed only (put back to the tiling where sheets cross, likewise), else left
@@ -82,7 +86,7 @@ SurfaceFinishingOptions finishingOptionsFor(const std::array<double, 3>& spacing
  *  `threads` threads (0: every core); the result does not depend on the number. */
 FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& tilingValidation,
                               const SurfaceFinishingOptions& options, unsigned int threads = 0,
-                              double targetVolume = 0.0);
+                              double targetVolume = 0.0, const std::vector<ContourVolume>& targetShares = {});
 
 /** "Remeshed", "Smoothed", "Tiled". */
 const char* finishName(SurfaceFinish finish);

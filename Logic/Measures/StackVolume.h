@@ -16,6 +16,9 @@ namespace slicemesh
  *  neighbours, as the tiling bridges it. */
 double prismVolume(const ContourStack& stack);
 
+/** The thickness prismVolume gives slice k (mm). */
+double sliceThickness(const ContourStack& stack, std::size_t k);
+
 } // namespace slicemesh
 
 #endif

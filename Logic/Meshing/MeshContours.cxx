@@ -49,7 +49,11 @@ MeshedContours startMeshing(ContourStack traced, const MeshingOptions& options, 
   meshing.options = resolvedMeshingOptions(options, spacing);
   // Voxels and planning systems count a structure's end slices whole: so do caps half a slice beyond.
   if (meshing.options.reconstruction.capPlacement == CapPlacement::HalfSliceBeyond)
+  {
     meshing.targetVolume = volume > 0.0 ? volume : prismVolume(traced);
+    // A mask's contours are traced on its pixels: their shares are its voxels, not their areas.
+    meshing.targetShares = volume > 0.0 ? contourVolumes(traced, { spacing[0], spacing[1] }) : contourVolumes(traced);
+  }
   meshing.stack = std::move(traced);
   return meshing;
 }
@@ -93,7 +97,7 @@ void runMeshingStage(MeshingStage stage, MeshedContours& meshing, const std::fun
                    [&meshing] { return measureDirichletEnergy(meshing.tiling, meshing.stack); });
       meshing.surface =
         finishSurface(meshing.tiling, meshing.tilingValidation, meshing.options.finishing, meshing.options.threads,
-                      meshing.sections.sectionsInserted == 0 ? meshing.targetVolume : 0.0);
+                      meshing.sections.sectionsInserted == 0 ? meshing.targetVolume : 0.0, meshing.targetShares);
       measure(meshing, tilingEnergy.get());
       break;
     }

@@ -50,6 +50,9 @@ struct MeshedContours
    *  the traced contours' prismVolume; 0 (caps at the slice) keeps the tiling's, as do slabs given
    *  intermediate sections (their shape between the slices is the implicit function's). */
   double targetVolume = 0.0;
+  /** Each traced contour's share of targetVolume and a point of it (contourVolumes: for a mask, its
+   *  own pixels), by which every connected piece of the surface gets the volume of its own contours. */
+  std::vector<ContourVolume> targetShares;
   TriangleMesh tiling;             ///< stack frame, mm
   /** The tiling's validation; its self-intersection test is run only when the tiling is the
    *  surface asked for (finish Tiled); finishSurface checks what of a finished tiling it keeps. */
