@@ -345,6 +345,9 @@ int ModuleEntryPoint(int argc, char* argv[])
     {
       std::cerr << "SliceMesh: warning: " << oneLine(note) << std::endl;
     }
+    // On stdout: a note, not a warning (3D Slicer marks a run that writes to stderr as failing).
+    if (!result.inputKindChoice.empty())
+      std::cout << "SliceMesh: " << result.inputKindChoice << std::endl;
     std::cout << summaryLine(result, arguments.text("outputModel")) << std::endl;
     if (!arguments.returnParameterFile.empty())
     {

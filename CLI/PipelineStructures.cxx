@@ -30,10 +30,11 @@ std::string who(const Structure& s, const std::string& noun)
   return noun.empty() ? std::string() : noun + " " + std::to_string(s.report.label) + " (" + s.report.name + "): ";
 }
 
-Structure maskStructure(StoredVolume volume, const PipelineSettings& settings)
+Structure maskStructure(StoredVolume volume, const PipelineSettings& settings, std::string* automaticChoice)
 {
   Structure s;
-  s.mask = guarded(EmptySegmentation, [&] { return segmentStoredVolume(std::move(volume), settings.segmentation); });
+  s.mask = guarded(EmptySegmentation,
+                   [&] { return segmentStoredVolume(std::move(volume), settings.segmentation, automaticChoice); });
   if (settings.minimumComponentVolume > 0.0)
   {
     const SmallComponentRemoval removal =

@@ -39,8 +39,9 @@ struct Structure
 /** "label 3 (Hippocampus): ", "ROI 2 (PTV): " or nothing (a one-mesh run). */
 std::string who(const Structure& s, const std::string& noun);
 
-/** The single mask of a one-mesh run, after --minimumComponentVolume. */
-Structure maskStructure(StoredVolume volume, const PipelineSettings& settings);
+/** The single mask of a one-mesh run, after --minimumComponentVolume. `automaticChoice` receives
+ *  the line saying which input kind was chosen from the voxels, when it was chosen so. */
+Structure maskStructure(StoredVolume volume, const PipelineSettings& settings, std::string* automaticChoice);
 
 /** What one structure of a multi-label run is cut from: a label value of one label map (the volume,
  *  or a layer of a segmentation file) with its box, and the number, name and colour it goes by. */

@@ -226,6 +226,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   startStage(Segmentation);
   std::vector<Structure> structures;
   std::vector<std::string> failures;
+  std::string inputKindChoice;
   if (fromContours)
     structures = roiStructures(structureSet, referenceImage, settings);
   else if (segmentationInput)
@@ -241,7 +242,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
     structures = labelStructures(labelMapSources(volume, colors), settings.multiLabel.labels,
                                  settings.multiLabel.labelNames, false, settings);
   else
-    structures.push_back(maskStructure(std::move(volume), settings));
+    structures.push_back(maskStructure(std::move(volume), settings, &inputKindChoice));
   // The masks are cut: the volume (or the segmentation's layers) is no longer needed.
   volume = StoredVolume();
   segmentation.layers.clear();
@@ -346,6 +347,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
     if (s.live())
       s.meshing.options.threads = 2 * contourPoints(s.meshing.stack) > allPoints ? threads : 1;
   PipelineResult result;
+  result.inputKindChoice = inputKindChoice;
   startStage(Correspondence);
   eachStructure(MeshingFailed, [&](Structure& s, const std::function<void(double)>& fraction)
                 { runMeshingStage(MeshingStage::Correspondence, s.meshing, fraction); });

@@ -54,6 +54,8 @@ struct PipelineResult
   double seconds = 0.0;       ///< wall-clock time from reading to writing
   RunQuality quality;         ///< shape, Dirichlet energy, spacing ratio, seconds per stage
   SectionStatistics sections; ///< of the correspondence stage (notes of every label)
+  /** Which input kind a one-mesh run chose from the voxels, and why; empty when --inputKind set it. */
+  std::string inputKindChoice;
 };
 
 /** A stage failed; carries the exit code that names the kind of failure and a one-line message. */

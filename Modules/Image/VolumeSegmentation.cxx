@@ -22,11 +22,22 @@ namespace
 {
 
 /** The distinct voxel values of a label map, or nothing when the volume is not one: a voxel that
- *  is negative, fractional or non-finite, or more than 65535 distinct values. One pass over the
- *  voxels; the common small labels are tallied in a table, rare large ones in a set. */
+ *  is negative, fractional or non-finite, or more than 65535 distinct values (then `whyNot`, when
+ *  given, says which). One pass over the voxels; the common small labels are tallied in a table,
+ *  rare large ones in a set. */
 template <typename TImage>
-std::optional<std::vector<double>> labelsOf(const TImage* volume)
+std::optional<std::vector<double>> labelsOf(const TImage* volume, std::string* whyNot = nullptr)
 {
+  auto notLabels = [whyNot](const std::string& reason, double value)
+  {
+    if (whyNot)
+    {
+      std::ostringstream text;
+      text << reason << " (" << value << ")";
+      *whyNot = text.str();
+    }
+    return std::nullopt;
+  };
   using Pixel = typename TImage::PixelType;
   constexpr std::size_t maxLabels = 65535;
   constexpr std::size_t tableSize = 65536;
@@ -42,13 +53,17 @@ std::optional<std::vector<double>> labelsOf(const TImage* volume)
     // NaN fails the first test, fractions the second (std::floor keeps infinities, so test them).
     if constexpr (std::is_floating_point_v<Pixel>)
     {
-      if (!(value >= 0.0f) || std::floor(value) != value || std::isinf(value))
-        return std::nullopt;
+      if (std::isnan(value) || std::isinf(value))
+        return notLabels("a voxel is not finite", value);
+      if (value < 0.0f)
+        return notLabels("a voxel is negative", value);
+      if (std::floor(value) != value)
+        return notLabels("a voxel is not a whole number", value);
     }
     else if constexpr (std::is_signed_v<Pixel>)
     {
       if (value < 0)
-        return std::nullopt;
+        return notLabels("a voxel is negative", static_cast<double>(value));
     }
     if (static_cast<double>(value) < static_cast<double>(tableSize))
     {
@@ -60,7 +75,7 @@ std::optional<std::vector<double>> labelsOf(const TImage* volume)
     else if (!seenLarge.insert(value).second)
       continue;
     if (++distinct > maxLabels)
-      return std::nullopt;
+      return notLabels("more than 65535 distinct values, the last", static_cast<double>(value));
   }
 
   std::vector<double> labels;
@@ -168,9 +183,23 @@ MaskVolume::Pointer labelMapMask(const TImage* volume, const SegmentationOptions
   return mask;
 }
 
+/** The line that says which kind an Automatic run chose, and why. */
+std::string automaticChoiceText(const std::optional<std::vector<double>>& labels, const std::string& whyNot)
+{
+  std::ostringstream text;
+  if (labels)
+    text << "input kind LabelMap, chosen from the voxels: " << labels->size() << " whole non-negative values, "
+         << labels->front() << " to " << labels->back() << " (--inputKind Grayscale thresholds it instead)";
+  else
+    text << "input kind Grayscale, chosen from the voxels: " << whyNot
+         << " (--inputKind LabelMap meshes its non-zero voxels instead)";
+  return text.str();
+}
+
 } // namespace
 
-MaskVolume::Pointer segmentVolume(const ScalarVolume* volume, const SegmentationOptions& options)
+MaskVolume::Pointer segmentVolume(const ScalarVolume* volume, const SegmentationOptions& options,
+                                  std::string* automaticChoice)
 {
   if (!volume || volume->GetBufferedRegion().GetNumberOfPixels() == 0)
     throw Error("segmentVolume: an empty volume");
@@ -179,9 +208,14 @@ MaskVolume::Pointer segmentVolume(const ScalarVolume* volume, const Segmentation
   InputKind kind = options.kind;
   if (kind != InputKind::Grayscale)
   {
-    labels = labelsOf(volume);
+    std::string whyNot;
+    labels = labelsOf(volume, &whyNot);
     if (kind == InputKind::Automatic)
+    {
       kind = labels ? InputKind::LabelMap : InputKind::Grayscale;
+      if (automaticChoice)
+        *automaticChoice = automaticChoiceText(labels, whyNot);
+    }
   }
 
   if (kind == InputKind::LabelMap)
@@ -235,24 +269,31 @@ MaskVolume::Pointer segmentVolume(const ScalarVolume* volume, const Segmentation
   return mask;
 }
 
-MaskVolume::Pointer segmentStoredVolume(StoredVolume volume, const SegmentationOptions& options)
+MaskVolume::Pointer segmentStoredVolume(StoredVolume volume, const SegmentationOptions& options,
+                                        std::string* automaticChoice)
 {
   if (auto* asFloat = std::get_if<ScalarVolume::Pointer>(&volume))
-    return segmentVolume(*asFloat, options);
+    return segmentVolume(*asFloat, options, automaticChoice);
   const itk::ImageBase<3>* image = imageOf(volume);
   if (!image || image->GetBufferedRegion().GetNumberOfPixels() == 0)
     throw Error("segmentVolume: an empty volume");
   // Integers: a label map unless grayscale is asked for or a voxel is negative (labelsOf).
+  std::string whyNot;
   const std::optional<std::vector<double>> labels =
     options.kind == InputKind::Grayscale
       ? std::nullopt
-      : std::visit([](const auto& stored) { return labelsOf(stored.GetPointer()); }, volume);
+      : std::visit([&](const auto& stored) { return labelsOf(stored.GetPointer(), &whyNot); }, volume);
+  if (options.kind == InputKind::Automatic && automaticChoice)
+    *automaticChoice = automaticChoiceText(labels, whyNot);
   if (options.kind == InputKind::LabelMap || (options.kind == InputKind::Automatic && labels))
     return std::visit([&](const auto& stored) { return labelMapMask(stored.GetPointer(), options, labels); }, volume);
-  // Grayscale methods work on float: the stored voxels go as soon as they are widened.
+  // Grayscale methods work on float: the stored voxels go as soon as they are widened. The choice
+  // is made: the widened volume is segmented as grayscale.
   const ScalarVolume::Pointer widened = floatVolumeOf(volume);
   volume = ScalarVolume::Pointer();
-  return segmentVolume(widened, options);
+  SegmentationOptions grayscale = options;
+  grayscale.kind = InputKind::Grayscale;
+  return segmentVolume(widened, grayscale);
 }
 
 } // namespace slicemesh

@@ -7,13 +7,14 @@
 #include "VolumeReader.h"
 
 #include <optional>
+#include <string>
 
 namespace slicemesh
 {
 
 enum class InputKind
 {
-  Automatic, ///< a label map when every voxel is a small non-negative integer, else grayscale
+  Automatic, ///< a label map when every voxel is a whole number >= 0 (at most 65535 values), else grayscale
   LabelMap,
   Grayscale
 };
@@ -33,13 +34,18 @@ struct SegmentationOptions
   MaskRefinementOptions refinement;
 };
 
-/** Throws slicemesh::Error when the mask would be empty (naming the labels that do occur). */
-MaskVolume::Pointer segmentVolume(const ScalarVolume* volume, const SegmentationOptions& options);
+/** Throws slicemesh::Error when the mask would be empty (naming the labels that do occur). With
+ *  InputKind::Automatic, `automaticChoice` (when given) receives one line saying which kind was
+ *  chosen from the voxels and why ("input kind Grayscale, chosen from the voxels: a voxel is
+ *  negative (-1) ..."), for the user to pass --inputKind when it is not what they meant. */
+MaskVolume::Pointer segmentVolume(const ScalarVolume* volume, const SegmentationOptions& options,
+                                  std::string* automaticChoice = nullptr);
 
 /** segmentVolume on a volume in the pixel type its file stores (readStoredVolume), with the same
  *  mask. Taken by value: integers segmented as grayscale are widened to float and then released,
  *  so that both are held only while widening, as when the file is read as float. */
-MaskVolume::Pointer segmentStoredVolume(StoredVolume volume, const SegmentationOptions& options);
+MaskVolume::Pointer segmentStoredVolume(StoredVolume volume, const SegmentationOptions& options,
+                                        std::string* automaticChoice = nullptr);
 
 } // namespace slicemesh
 

@@ -54,7 +54,7 @@ double expectedBoxVolume(int a, int b, int slices, double sliceThickness)
   return (a * b - 4 * 0.125) * slices * sliceThickness - 2.0 * perimeter * r * r * (1.0 - M_PI / 4.0);
 }
 
-/** A 3D MetaImage of MET_USHORT or MET_FLOAT voxels (`Pixel`), voxel (i, j, k) value(i, j, k). */
+/** A 3D MetaImage of MET_USHORT, MET_SHORT or MET_FLOAT voxels (`Pixel`), voxel (i, j, k) value(i, j, k). */
 template <typename Pixel>
 void writeMetaImageOf(const fs::path& path, std::array<int, 3> size, std::array<double, 3> spacing,
                       const std::function<Pixel(int, int, int)>& value)
@@ -64,7 +64,9 @@ void writeMetaImageOf(const fs::path& path, std::array<int, 3> size, std::array<
       << "Offset = 0 0 0\nTransformMatrix = 1 0 0 0 1 0 0 0 1\n"
       << "ElementSpacing = " << spacing[0] << " " << spacing[1] << " " << spacing[2] << "\n"
       << "DimSize = " << size[0] << " " << size[1] << " " << size[2] << "\n"
-      << "ElementType = " << (std::is_same_v<Pixel, float> ? "MET_FLOAT" : "MET_USHORT") << "\nElementDataFile = LOCAL\n";
+      << "ElementType = "
+      << (std::is_same_v<Pixel, float> ? "MET_FLOAT" : std::is_same_v<Pixel, std::int16_t> ? "MET_SHORT" : "MET_USHORT")
+      << "\nElementDataFile = LOCAL\n";
   for (int k = 0; k < size[2]; ++k)
     for (int j = 0; j < size[1]; ++j)
       for (int i = 0; i < size[0]; ++i)
@@ -574,6 +576,39 @@ TEST(EndToEnd, ContourSimplificationKeepsAOneVoxelThinBarASolid)
     EXPECT_EQ(r.exitCode, cli::Success) << tolerance << ": " << r.err;
     EXPECT_EQ(r.err, "") << tolerance;
   }
+}
+
+TEST(EndToEnd, AnAutomaticInputKindIsSaidWithItsReason)
+{
+  // A cube of -1 in zeros, stored as int16: read as grayscale (a voxel is negative), so Otsu meshed
+  // the background without a word. The run now says which kind it chose from the voxels and why.
+  const fs::path folder = freshFolder("e2e-input-kind");
+  const fs::path input = folder / "negative.mha";
+  writeMetaImageOf<std::int16_t>(input, { 10, 10, 10 }, { 1.0, 1.0, 1.0 }, [](int i, int j, int k) -> std::int16_t
+                                 { return i >= 2 && i < 8 && j >= 2 && j < 8 && k >= 2 && k < 8 ? -1 : 0; });
+  const fs::path output = folder / "out.vtp";
+  RunResult r = runSliceMesh(quoted(input.string()) + " " + quoted(output.string()));
+  ASSERT_EQ(r.exitCode, cli::Success) << r.err;
+  std::vector<std::string> lines = linesOf(r.out);
+  ASSERT_GE(lines.size(), 2u) << r.out;
+  EXPECT_EQ(lines[lines.size() - 2],
+            "SliceMesh: input kind Grayscale, chosen from the voxels: a voxel is negative (-1) "
+            "(--inputKind LabelMap meshes its non-zero voxels instead)");
+
+  // As the line says: the cube.
+  r = runSliceMesh("--inputKind LabelMap --returnparameterfile " + quoted((folder / "cube.params").string()) + " " +
+                   quoted(input.string()) + " " + quoted(output.string()));
+  ASSERT_EQ(r.exitCode, cli::Success) << r.err;
+  EXPECT_EQ(r.out.find("input kind"), std::string::npos) << "asked for, not chosen: " << r.out;
+  EXPECT_NEAR(std::stod(returnParameterMap(folder / "cube.params").at("volume")), 216.0, 0.05 * 216.0);
+
+  // A label map chosen from the voxels says so too.
+  r = runSliceMesh(quoted(twoBoxesLabelMap(folder).string()) + " " + quoted(output.string()));
+  ASSERT_EQ(r.exitCode, cli::Success) << r.err;
+  lines = linesOf(r.out);
+  ASSERT_GE(lines.size(), 2u) << r.out;
+  EXPECT_EQ(lines[lines.size() - 2], "SliceMesh: input kind LabelMap, chosen from the voxels: 3 whole non-negative "
+                                     "values, 0 to 2 (--inputKind Grayscale thresholds it instead)");
 }
 
 } // namespace
