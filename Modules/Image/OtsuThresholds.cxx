@@ -1,10 +1,11 @@
 // Multiple Otsu thresholds from ITK's histogram generator and calculator.
 #include "OtsuThresholds.h"
 
+#include "FiniteHistogram.h"
+
 #include "Core/SliceMeshTypes.h"
 
 #include "itkOtsuMultipleThresholdsCalculator.h"
-#include "itkScalarImageToHistogramGenerator.h"
 
 namespace slicemesh
 {
@@ -13,23 +14,13 @@ std::vector<double> otsuThresholds(const ScalarVolume* volume, unsigned int coun
 {
   if (count == 0)
     throw Error("Otsu: the number of thresholds must be at least 1");
-  const float* voxel = volume->GetBufferPointer();
-  const std::size_t voxels = volume->GetBufferedRegion().GetNumberOfPixels();
-  bool uniform = true;
-  for (std::size_t n = 1; n < voxels && uniform; ++n)
-    uniform = voxel[n] == voxel[0];
-  if (uniform)
+  const auto range = finiteIntensityRange(volume);
+  if (!range || range->first == range->second)
     throw Error("every voxel has the same value; Otsu's thresholds separate nothing");
 
-  using HistogramGenerator = itk::Statistics::ScalarImageToHistogramGenerator<ScalarVolume>;
-  auto histogramGenerator = HistogramGenerator::New();
-  histogramGenerator->SetInput(volume);
-  histogramGenerator->SetNumberOfBins(256);
-  histogramGenerator->Compute();
-
-  using Calculator = itk::OtsuMultipleThresholdsCalculator<HistogramGenerator::HistogramType>;
+  using Calculator = itk::OtsuMultipleThresholdsCalculator<IntensityHistogram>;
   auto calculator = Calculator::New();
-  calculator->SetInputHistogram(histogramGenerator->GetOutput());
+  calculator->SetInputHistogram(finiteIntensityHistogram(volume, 256));
   calculator->SetNumberOfThresholds(count);
   calculator->Compute();
   const auto& thresholds = calculator->GetOutput();

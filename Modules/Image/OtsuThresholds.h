@@ -12,8 +12,9 @@ namespace slicemesh
 /** The `count` thresholds that split the volume's 256-bin histogram into count + 1 classes with
  *  the largest between-class variance (ITK's OtsuMultipleThresholdsCalculator), in increasing
  *  order. Computed on the whole volume, also when the rest of the segmentation works per slice:
- *  a slice's own histogram (often background only) gives meaningless thresholds.
- *  Throws slicemesh::Error on a uniform volume or count 0. */
+ *  a slice's own histogram (often background only) gives meaningless thresholds. NaN and
+ *  infinite voxels are left out (finiteIntensityHistogram).
+ *  Throws slicemesh::Error on a volume uniform in its finite voxels, or count 0. */
 std::vector<double> otsuThresholds(const ScalarVolume* volume, unsigned int count);
 
 } // namespace slicemesh

@@ -2,13 +2,13 @@
 // (given, or Otsu's).
 #include "VolumeSegmentation.h"
 
+#include "FiniteHistogram.h"
 #include "GrayscaleSegmentation.h"
 #include "StoredVolume.h"
 
 #include "Core/SliceMeshTypes.h"
 
 #include "itkOtsuThresholdCalculator.h"
-#include "itkScalarImageToHistogramGenerator.h"
 
 #include <cmath>
 #include <set>
@@ -87,18 +87,12 @@ std::optional<std::vector<double>> labelsOf(const TImage* volume, std::string* w
   return labels;
 }
 
-/** Otsu's threshold on a 256-bin histogram of the voxel values (ITK's calculator). */
+/** Otsu's threshold on a 256-bin histogram of the finite voxel values (ITK's calculator). */
 double otsuThreshold(const ScalarVolume* volume)
 {
-  using HistogramGenerator = itk::Statistics::ScalarImageToHistogramGenerator<ScalarVolume>;
-  auto histogramGenerator = HistogramGenerator::New();
-  histogramGenerator->SetInput(volume);
-  histogramGenerator->SetNumberOfBins(256);
-  histogramGenerator->Compute();
-
-  using Calculator = itk::OtsuThresholdCalculator<HistogramGenerator::HistogramType, double>;
+  using Calculator = itk::OtsuThresholdCalculator<IntensityHistogram, double>;
   auto calculator = Calculator::New();
-  calculator->SetInput(histogramGenerator->GetOutput());
+  calculator->SetInput(finiteIntensityHistogram(volume, 256));
   calculator->Compute();
   return calculator->GetThreshold();
 }
@@ -247,13 +241,10 @@ MaskVolume::Pointer segmentVolume(const ScalarVolume* volume, const Segmentation
     threshold = *options.threshold;
   else
   {
-    // Otsu's method needs two populations; a uniform volume has none to separate.
-    const float* voxel = volume->GetBufferPointer();
-    const std::size_t count = volume->GetBufferedRegion().GetNumberOfPixels();
-    bool uniform = true;
-    for (std::size_t n = 1; n < count && uniform; ++n)
-      uniform = voxel[n] == voxel[0];
-    if (uniform)
+    // Otsu's method needs two populations; a uniform volume has none to separate (NaN and
+    // infinities are not intensities: left out, as from the histogram).
+    const auto range = finiteIntensityRange(volume);
+    if (!range || range->first == range->second)
       throw Error(volumeName(volume) + ": every voxel has the same value; Otsu's threshold separates nothing");
     threshold = otsuThreshold(volume);
   }

@@ -1,9 +1,13 @@
 #include "Core/SliceMeshTypes.h"
+#include "FiniteHistogram.h"
+#include "OtsuThresholds.h"
 #include "TestVolumes.h"
 #include "VolumeSegmentation.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <random>
 
 namespace slicemesh
@@ -148,6 +152,55 @@ TEST(VolumeSegmentation, OtsuSeparatesTheTwoPopulations)
   const MaskVolume::Pointer mask = segmentVolume(volume, SegmentationOptions{});
   expectMask(volume.GetPointer(), mask.GetPointer(), [](float v) { return v > 55.0f; });
   EXPECT_EQ(countInside(mask), 1000u);
+}
+
+TEST(VolumeSegmentation, TheFiniteHistogramIsITKsOnAFiniteVolume)
+{
+  // The same bounds and counts as ITK's generator: Otsu's thresholds (and so the meshes) of a
+  // volume without NaN or infinity are unchanged.
+  const auto volume = grayscaleVolume();
+  using Generator = itk::Statistics::ScalarImageToHistogramGenerator<ScalarVolume>;
+  auto generator = Generator::New();
+  generator->SetInput(volume);
+  generator->SetNumberOfBins(256);
+  generator->Compute();
+  const IntensityHistogram* itk = generator->GetOutput();
+  const IntensityHistogram::Pointer finite = finiteIntensityHistogram(volume, 256);
+  ASSERT_EQ(finite->Size(), itk->Size());
+  for (unsigned int bin = 0; bin < itk->Size(); ++bin)
+  {
+    EXPECT_EQ(finite->GetFrequency(bin), itk->GetFrequency(bin)) << bin;
+    EXPECT_EQ(finite->GetBinMin(0, bin), itk->GetBinMin(0, bin)) << bin;
+    EXPECT_EQ(finite->GetBinMax(0, bin), itk->GetBinMax(0, bin)) << bin;
+  }
+}
+
+TEST(VolumeSegmentation, OtsuLeavesNaNAndInfinitiesOut)
+{
+  // One NaN voxel made ITK's histogram bounds NaN, the threshold NaN and the mask empty
+  // ("no voxel is at or above the threshold nan"); infinities stretched the bins over nothing.
+  const auto clean = grayscaleVolume();
+  const MaskVolume::Pointer expected = segmentVolume(clean, SegmentationOptions{});
+  const std::vector<double> expectedThresholds = otsuThresholds(clean, 2);
+  for (const float odd : { std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+                           -std::numeric_limits<float>::infinity() })
+  {
+    SCOPED_TRACE(odd);
+    const auto volume = grayscaleVolume();
+    volume->SetPixel({ { 0, 0, 0 } }, odd);
+    volume->SetPixel({ { 19, 19, 19 } }, odd);
+    const MaskVolume::Pointer mask = segmentVolume(volume, SegmentationOptions{});
+    // Every voxel but the two changed (the first and the last) as without them.
+    for (std::size_t n = 1; n + 1 < volume->GetBufferedRegion().GetNumberOfPixels(); ++n)
+      ASSERT_EQ(mask->GetBufferPointer()[n], expected->GetBufferPointer()[n]) << n;
+    EXPECT_EQ(otsuThresholds(volume, 2), expectedThresholds);
+  }
+  // Uniform apart from NaN: nothing to separate.
+  auto uniform = makeVolume({ 4, 4, 4 });
+  uniform->FillBuffer(3.0f);
+  uniform->SetPixel({ { 1, 1, 1 } }, std::numeric_limits<float>::quiet_NaN());
+  EXPECT_NE(errorMessageOf(uniform, SegmentationOptions{}).find("every voxel has the same value"), std::string::npos);
+  EXPECT_THROW(otsuThresholds(uniform, 1), Error);
 }
 
 TEST(VolumeSegmentation, NegativeIntegersAreGrayscale)
