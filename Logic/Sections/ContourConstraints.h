@@ -18,7 +18,8 @@ struct ConstraintSampling
    *  costs O(n^3): 600 centres solve in a few tens of milliseconds whatever the contours' size,
    *  because contours of thousands of points are subsampled evenly along their arc length. */
   std::size_t maxCentres = 600;
-  /** Each contour keeps at least this many samples, even if the budget is then exceeded a little. */
+  /** Each contour keeps at least this many samples, even if the budget is then exceeded a little;
+   *  three when the contours are too many for that to fit the budget. */
   std::size_t minSamplesPerContour = 8;
   /** Offset of the off-surface pairs along the normal, as a fraction of the sample spacing. */
   double normalOffsetFraction = 0.5;
@@ -35,7 +36,8 @@ struct ConstraintSummary
 
 /** Constraints from the contours of the given slices. Contours may come in any orientation (each slice
  *  is nested first: outer boundaries and holes get normals pointing out of the solid). An offset
- *  point that does not land on its side of the slice's region (a thin part) is dropped. */
+ *  point that does not land on its side of the slice's region (a thin part) is dropped. Throws Error
+ *  for more contours than even three samples each would keep within three times the budget. */
 std::vector<ImplicitConstraint> contourConstraints(const std::vector<Slice>& slices,
                                                    const ConstraintSampling& sampling = {},
                                                    ConstraintSummary* summary = nullptr);

@@ -103,6 +103,29 @@ TEST(VariationalImplicit, SolveTimeForLargeContours)
   }
 }
 
+TEST(VariationalImplicit, ManySmallContoursStayNearTheBudget)
+{
+  // A spray of small contours (noise): eight samples each would be far over the budget, and the
+  // dense solve grows with the cube of the centres. Each gets three; too many are refused.
+  auto spray = [](int perSide) {
+    std::vector<Slice> slices;
+    for (double z : { 0.0, 2.0 })
+    {
+      Slice slice{ z, {} };
+      for (int i = 0; i < perSide; ++i)
+        for (int j = 0; j < perSide; ++j)
+          slice.contours.push_back(circle(3.0 * i, 3.0 * j, 1.0, 12));
+      slices.push_back(slice);
+    }
+    return slices;
+  };
+  const ConstraintSampling sampling; // 600 centres
+  const std::vector<ImplicitConstraint> constraints = contourConstraints(spray(7), sampling); // 98 contours
+  EXPECT_LE(constraints.size(), 3 * 98 * 3 + sampling.maxCentres);
+  EXPECT_GT(constraints.size(), sampling.maxCentres / 2);
+  EXPECT_THROW(contourConstraints(spray(11), sampling), Error); // 242 contours
+}
+
 TEST(MarchingSquares, CircleBecomesOneCounterClockwiseLoop)
 {
   const double r = 7.3;
