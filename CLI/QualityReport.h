@@ -106,6 +106,9 @@ RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshVal
 
 /** Writes the report as JSON (atomically: a temporary name, renamed when complete); with labels,
  *  a "labels" array follows, one entry per label with its own mesh, quality and Dirichlet blocks.
+ *  Each "mesh" block says what its validation covers: "validatedAs": "wholeMesh" (one mesh, or one
+ *  label's), or at the top of a per-label run "eachStructure" with a "validationNote": the figures
+ *  sum the labels', each checked on its own, and different labels' meshes may touch or intersect.
  *  Throws slicemesh::Error when it cannot. */
 void writeQualityReport(const std::string& path, const std::string& inputVolume, const std::string& outputModel,
                         const MeshValidation& validation, const RunQuality& quality, double seconds,

@@ -377,6 +377,19 @@ TEST(EndToEnd, MultiLabelSummaryAndReportCarryRealQuality)
   EXPECT_NEAR(jsonNumberAfter(second, "volumeMm3"), 3 * 4 * 4 * 2.0, 1e-3 * 96.0);
   EXPECT_NEAR(jsonNumberAfter(json, "volumeMm3"),
               jsonNumberAfter(first, "volumeMm3") + jsonNumberAfter(second, "volumeMm3"), 1e-6);
+  // The combined model's "valid" and self-intersection figures are the labels' own: the report
+  // says so (labels that touch may intersect each other, which is not checked).
+  const std::string top = json.substr(0, json.find("\"labels\": ["));
+  EXPECT_NE(top.find("\"validatedAs\": \"eachStructure\""), std::string::npos) << top;
+  EXPECT_NE(top.find("\"validationNote\": \"the figures sum those of each structure's mesh, checked on its own; "
+                     "meshes of different structures may touch or intersect each other (not checked)\""),
+            std::string::npos)
+    << top;
+  for (const std::string& entry : { first, second })
+  {
+    EXPECT_NE(entry.find("\"validatedAs\": \"wholeMesh\""), std::string::npos) << entry;
+    EXPECT_EQ(entry.find("validationNote"), std::string::npos) << entry;
+  }
 }
 
 /** An ellipse (semi-axes 7 x 2.6 mm) sliding 4 mm along its long axis from slice to slice over
