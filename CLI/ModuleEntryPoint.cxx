@@ -194,13 +194,14 @@ PipelineSettings settingsFrom(const ParsedArguments& arguments)
   return settings;
 }
 
-std::string summaryLine(const PipelineResult& result, const std::string& outputModel)
+std::string summaryLine(const PipelineResult& result, const std::string& outputModel, bool eachStructure)
 {
   const MeshValidation& v = result.validation;
   std::ostringstream line;
   line << "SliceMesh: " << v.triangles << " triangles, " << (v.closed() ? "closed" : "NOT closed") << ", volume "
        << std::fixed << std::setprecision(1) << v.volume << " mm^3 (" << std::setprecision(2) << v.volume / 1000.0
-       << " mL), " << result.seconds << " s -> " << outputModel << "; " << qualitySummary(v, result.quality);
+       << " mL), " << result.seconds << " s -> " << outputModel << "; "
+       << qualitySummary(v, result.quality, eachStructure);
   return line.str();
 }
 
@@ -348,7 +349,7 @@ int ModuleEntryPoint(int argc, char* argv[])
     // On stdout: a note, not a warning (3D Slicer marks a run that writes to stderr as failing).
     if (!result.inputKindChoice.empty())
       std::cout << "SliceMesh: " << result.inputKindChoice << std::endl;
-    std::cout << summaryLine(result, arguments.text("outputModel")) << std::endl;
+    std::cout << summaryLine(result, arguments.text("outputModel"), !structures.empty()) << std::endl;
     if (!arguments.returnParameterFile.empty())
     {
       try

@@ -181,14 +181,14 @@ RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshVal
   return combined;
 }
 
-std::string qualitySummary(const MeshValidation& v, const RunQuality& q)
+std::string qualitySummary(const MeshValidation& v, const RunQuality& q, bool eachStructure)
 {
   std::ostringstream line;
   line << finishSummary(q);
   line << ", " << v.vertices << " vertices, " << v.components << (v.components == 1 ? " component, " : " components, ")
        << (v.manifold() ? "manifold, " : "NOT manifold, ")
        << (!v.selfIntersectionChecked ? "self-intersections not checked, "
-           : v.selfIntersections == 0   ? "no self-intersections, "
+           : v.selfIntersections == 0   ? (eachStructure ? "no self-intersections within a structure, " : "no self-intersections, ")
                                         : std::to_string(v.selfIntersections) + " self-intersecting pairs, ")
        << "Euler characteristic " << v.eulerCharacteristic << ", genus ";
   if (q.genus >= 0)
@@ -214,7 +214,6 @@ std::string qualitySummary(const MeshValidation& v, const RunQuality& q)
 namespace
 {
 
-/** The "mesh", "quality" and "dirichletEnergy" blocks of one mesh, each line after `indent`. */
 /** How the "mesh" block's validation figures were found: of one mesh checked whole, or summed over
  *  the structures of a combined model, each checked on its own. */
 enum class ValidationScope
@@ -223,6 +222,7 @@ enum class ValidationScope
   EachStructure
 };
 
+/** The "mesh", "quality" and "dirichletEnergy" blocks of one mesh, each line after `indent`. */
 void writeMeshBlocks(std::ostream& json, const std::string& indent, const MeshValidation& v, const RunQuality& q,
                      ValidationScope scope = ValidationScope::WholeMesh)
 {

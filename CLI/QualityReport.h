@@ -75,8 +75,10 @@ std::string finishSummary(const RunQuality& quality);
 /** "finish Remeshed (target edge 1.10 mm), 41649 vertices, 1 component, manifold, no
  *  self-intersections, genus 0, min angle 21.3 deg, <30 deg 0.4%, <10 deg 0.0%, aspect ratio mean
  *  1.18 max 2.71, area 9126.4 mm^2, point/slice spacing 0.83, Dirichlet energy of the tiling 812.3
- *  mm^2; stages Reading 0.01 s, ..." */
-std::string qualitySummary(const MeshValidation& validation, const RunQuality& quality);
+ *  mm^2; stages Reading 0.01 s, ...". `eachStructure`: the validation sums structures checked each
+ *  on its own (labels or ROIs of one run, which may touch or cross each other): "no
+ *  self-intersections within a structure". */
+std::string qualitySummary(const MeshValidation& validation, const RunQuality& quality, bool eachStructure = false);
 
 /** The figures of one label of a multi-label run (runPipeline), as the report lists it. */
 struct LabelReport
