@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <optional>
@@ -287,9 +288,38 @@ void checkNiftiSpacing(const std::string& path, const std::optional<Nifti1Header
   }
 }
 
+/** GDCM aborts the process (a failed assertion) on a DICOM file cut off inside or just after its
+ *  File Meta Information, before ITK could report anything: such a file is refused here. The meta
+ *  group's length is its first element, (0002,0000) UL, after the 128-byte preamble and "DICM"; the
+ *  file must hold the group and at least one element of the data set after it. */
+void checkDicomFileMeta(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::array<unsigned char, 144> head{};
+  in.read(reinterpret_cast<char*>(head.data()), static_cast<std::streamsize>(head.size()));
+  const std::streamsize read = in.gcount();
+  if (read < 132 || std::memcmp(head.data() + 128, "DICM", 4) != 0)
+    return; // not a DICOM file with a preamble
+  std::error_code error;
+  const auto fileSize = std::filesystem::file_size(path, error);
+  if (error)
+    return;
+  const bool groupLengthFirst = read == 144 && head[132] == 0x02 && head[133] == 0 && head[134] == 0 && head[135] == 0 &&
+                                head[136] == 'U' && head[137] == 'L';
+  const std::uint64_t groupLength =
+    groupLengthFirst ? static_cast<std::uint64_t>(head[140]) | static_cast<std::uint64_t>(head[141]) << 8 |
+                         static_cast<std::uint64_t>(head[142]) << 16 | static_cast<std::uint64_t>(head[143]) << 24
+                     : 0;
+  const std::uint64_t needed = 144 + groupLength + 8;
+  if (fileSize < needed)
+    throw Error(path + ": a truncated DICOM file (" + std::to_string(fileSize) + " bytes; its header needs at least " +
+                std::to_string(needed) + ")");
+}
+
 /** The header of an image file through the ImageIO ITK picks for it. */
 itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
 {
+  checkDicomFileMeta(path);
   constexpr auto reading = itk::ImageIOFactory::FileModeEnum::ReadMode;
   itk::ImageIOBase::Pointer io = itk::ImageIOFactory::CreateImageIO(path.c_str(), reading);
   const std::string unreadable = path + ": not an image file SliceMesh can read (NIfTI, NRRD, MetaImage, DICOM)";

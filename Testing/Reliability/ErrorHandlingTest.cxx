@@ -145,6 +145,22 @@ TEST(ErrorHandling, TruncatedOrCorruptFiles)
   expectFailure(f.outputs, (f.inputs / "cut.nii").string(), cli::UnreadableInput, "truncated");
   writeMetaImageWith(f.inputs / "cut.mha", "NDims = 3\nDimSize = 8 8 8\nElementSpacing = 1 1 1\n", 300);
   expectFailure(f.outputs, (f.inputs / "cut.mha").string(), cli::UnreadableInput, "cannot read the voxels");
+
+  // A DICOM file cut off in or just after its File Meta Information: GDCM's reader aborted the
+  // process (a failed assertion) before ITK could say anything.
+  // The preamble, "DICM", and the meta group's length (0002,0000) UL 200, then its first element
+  // (0002,0001) OB begun: a file that promises 200 bytes of meta information.
+  std::string dicom(128, '\0');
+  dicom += "DICM";
+  dicom += std::string("\x02\x00\x00\x00UL\x04\x00\xc8\x00\x00\x00", 12);
+  dicom += std::string("\x02\x00\x01\x00OB\x00\x00\x02\x00\x00\x00\x00\x01", 14);
+  dicom.resize(198, '\0');
+  for (std::size_t bytes : { 132u, 150u, 198u })
+  {
+    const fs::path cut = f.inputs / ("cut" + std::to_string(bytes) + ".dcm");
+    writeText(cut, dicom.substr(0, bytes));
+    expectFailure(f.outputs, cut.string(), cli::UnreadableInput, "truncated DICOM file");
+  }
 }
 
 TEST(ErrorHandling, AMalformedNrrdIsOneLineNamingTheFileAndTheFault)
