@@ -282,7 +282,15 @@ std::vector<Structure> roiStructures(const StructureSet& set, const std::optiona
       continue;
     }
     ContourRepairReport repair;
-    s.contours.stack = repairContours(s.contours.stack, settings.contours.repair, &repair);
+    try
+    {
+      s.contours.stack = repairContours(s.contours.stack, settings.contours.repair, &repair);
+    }
+    catch (const Error& e) // a point beyond any anatomy: this ROI fails, the others are meshed
+    {
+      s.report.error = e.what();
+      continue;
+    }
     if (repair.any()) // a keyhole's perimeter is not its contours'
     {
       const double pointSpacing = automaticPointSpacing(s.contours.stack);

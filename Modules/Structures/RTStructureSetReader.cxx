@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <limits>
@@ -68,7 +69,8 @@ std::vector<double> decimalStrings(DcmItem& item, const DcmTagKey& tag, const st
       ++at;
     double value = 0.0;
     const std::from_chars_result parsed = std::from_chars(at, end, value);
-    if (parsed.ec != std::errc())
+    // from_chars reads "nan" and "inf", which a decimal string cannot hold.
+    if (parsed.ec != std::errc() || !std::isfinite(value))
       throw Error(where + ": a contour's data holds a value that is not a number");
     at = parsed.ptr;
     while (at < end && (*at == ' ' || *at == '\0'))

@@ -222,6 +222,20 @@ TEST(StructureSet, SeveralContoursPerSliceBranchingAndDriftingContours)
   EXPECT_EQ(drifting.components, 1u) << "circles overlapping from slice to slice make one slanted column";
 }
 
+TEST(StructureSet, AnROIBeyondAnyAnatomyFailsAloneAndTheOthersAreWritten)
+{
+  // Points over a kilometre from the origin are refused by the contour repair (its integer grid);
+  // that ROI fails with its reason, as an ROI without contours does, not the whole run (exit 1).
+  PlanarStructure far = roi(7, "Far", { 1, 2, 3 });
+  for (int k = 0; k < 4; ++k)
+    far.contours.push_back(circle(2.0e6, 0.0, Spacing * k, 10.0));
+  const SetRun run = meshSet("Far", { nestedAnnulus(), far });
+  EXPECT_EQ(run.result.exitCode, cli::MeshingFailed) << run.result.err;
+  EXPECT_TRUE(hasLine(run.result.err, "beyond the 1 km any anatomy lies within")) << run.result.err;
+  EXPECT_FALSE(fs::exists(run.folder / "rois" / "007_Far.vtp"));
+  expectValid(run.folder / "rois" / "001_Annulus_nested.vtp");
+}
+
 TEST(StructureSet, EmptyAndSingleSliceROIsAreReportedAndTheOthersWritten)
 {
   PlanarStructure single = roi(8, "Single", { 1, 2, 3 });

@@ -128,7 +128,9 @@ TEST(StructureSetReader, ReadsDecimalStringsWithSignsExponentsAndPaddingExactly)
 TEST(StructureSetReader, AContourValueThatIsNoNumberIsAOneLineError)
 {
   const fs::path dir = folder("not-a-number");
-  for (const std::string data : { "1.0\\abc\\2.0", "1.0\\\\2.0\\3.0", "1.0\\2.0x\\3.0" })
+  // NaN and infinity too: the parser reads them as numbers, but a decimal string cannot hold them.
+  for (const std::string data : { "1.0\\abc\\2.0", "1.0\\\\2.0\\3.0", "1.0\\2.0x\\3.0", "1.0\\nan\\2.0", "inf\\1.0\\2.0",
+                                  "1.0\\2.0\\-INF" })
   {
     const fs::path path = dir / "RS.dcm";
     writeWithFirstContourData(path, data);
