@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <iostream>
 #include <set>
 #include <sstream>
@@ -21,6 +22,22 @@ std::string lowerCase(std::string text)
 {
   std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
   return text;
+}
+
+/** The value most of `values` share (within 1% of it; ties: the smallest); 0 for none. */
+double mostCommon(std::vector<double> values)
+{
+  std::sort(values.begin(), values.end());
+  double common = 0.0;
+  std::size_t most = 0;
+  for (double value : values)
+  {
+    const auto alike = static_cast<std::size_t>(
+      std::count_if(values.begin(), values.end(), [value](double v) { return std::abs(v - value) <= 0.01 * value; }));
+    if (alike > most)
+      most = alike, common = value;
+  }
+  return common;
 }
 
 } // namespace
@@ -244,11 +261,19 @@ std::vector<Structure> roiStructures(const StructureSet& set, const std::optiona
     else if (stack(n) && s.contours.stack.slices.size() > 1)
       spacings.push_back(s.contours.stack.sliceSpacing);
   }
-  // An ROI in one slice gets the set's usual spacing as its thickness.
-  stacking.fallbackSliceSpacing = median(spacings, 0.0);
+  // The set's slice spacing: the most common of its ROIs' own (ties: the smallest). Most ROIs are
+  // drawn on every slice of the planning image; the median of 2.5, 5 and 20 mm ROIs is not its
+  // spacing. An ROI in one slice gets it as its thickness, and an ROI drawn several of its slices
+  // apart is stacked on it (ContourStackingOptions::fallbackSliceSpacing).
+  stacking.fallbackSliceSpacing = mostCommon(spacings);
   for (std::size_t n = 0; n < rois.size(); ++n)
-    if (!structures[n].report.error.empty() && !rois[n].contours.empty() && stacking.fallbackSliceSpacing > 0.0)
+  {
+    const bool oneSlice = !structures[n].report.error.empty() && !rois[n].contours.empty();
+    const bool farApart = structures[n].report.error.empty() && !rois[n].contours.empty() &&
+                          structures[n].contours.stack.sliceSpacing > 2.5 * stacking.fallbackSliceSpacing;
+    if ((oneSlice || farApart) && stacking.fallbackSliceSpacing > 0.0)
       stack(n);
+  }
   // Contours off the image's slices are a mismatch of the whole set as a rule: one line for all.
   std::string offSlices;
   double largestDeviation = 0.0;

@@ -277,18 +277,29 @@ StackedContours stackContours(const std::vector<Polygon3>& contours, const Conto
   for (std::size_t k = 1; k < slices.size(); ++k)
     gaps.push_back(slices[k].z - slices[k - 1].z);
   double spacing = median(gaps, options.fallbackSliceSpacing);
+  // Slices three or more of the set's apart (two drawn 50 mm apart among 2.5 mm ones) are where the
+  // structure was drawn, not a structure of 50 mm slices: 25 mm caps beyond each and a 50 mm column
+  // between them. Every other slice (twice the set's) stays the structure's own spacing, tiled across.
+  auto severalSlicesOf = [&spacing](double slice)
+  {
+    const double steps = std::round(spacing / slice);
+    return steps >= 3.0 && std::abs(spacing - steps * slice) <= 0.05 * slice;
+  };
   // The image's spacing says nothing of contours that are not on its slices.
   if (options.expectedSliceSpacing > 0.0 && (!options.sliceNormal || result.givenNormalUsed))
   {
     const double expected = options.expectedSliceSpacing;
-    const bool onItsSlices = gaps.empty() || std::any_of(gaps.begin(), gaps.end(), [&](double gap)
-                                                         { return std::abs(gap - expected) <= 0.05 * expected; });
+    const bool onItsSlices = gaps.empty() || severalSlicesOf(expected) ||
+                             std::any_of(gaps.begin(), gaps.end(),
+                                         [&](double gap) { return std::abs(gap - expected) <= 0.05 * expected; });
     if (onItsSlices)
       spacing = expected;
     else
       result.notes.push_back("no two slices of contours are one image slice (" + millimetres(expected) +
                              ") apart: their own spacing (" + millimetres(spacing) + ") is used");
   }
+  else if (options.fallbackSliceSpacing > 0.0 && !gaps.empty() && severalSlicesOf(options.fallbackSliceSpacing))
+    spacing = options.fallbackSliceSpacing;
   if (!(spacing > 0.0))
   {
     std::ostringstream message;

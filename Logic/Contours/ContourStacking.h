@@ -33,15 +33,20 @@ struct ContourStackingOptions
   double maxNormalDeviationDegrees = 1.0;
   /** The slice spacing of that image (mm); 0: none known. Unless the contours are off its slices
    *  (their normal is not sliceNormal), it is the stack's spacing when they lie in one slice or two
-   *  of their slices are one image slice apart (within 5%), so that gaps are counted in the image's
-   *  slices; otherwise the contours' median gap is (a note says so). */
+   *  of their slices are one image slice apart (within 5%), or their median gap is three or more
+   *  image slices (a whole number, within 5%), so that gaps are counted in the image's slices;
+   *  otherwise the contours' median gap is (a note says so). */
   double expectedSliceSpacing = 0.0;
   /** Contours whose own normal is further than this from the slice normal are skipped (degrees). */
   double maxTiltDegrees = 10.0;
   /** Contours closer than this along the normal share a slice (mm); 0: a quarter of the median gap
    *  over 0.05 mm between contour positions (the slice spacing), at most 0.25 mm. */
   double sliceTolerance = 0.0;
-  /** The slice spacing when the contours cannot tell it (all in one slice); 0: none known. */
+  /** The slice spacing when the contours cannot tell it (all in one slice); 0: none known. Also, with
+   *  no image spacing known (expectedSliceSpacing), the spacing of the set the contours belong to: a
+   *  structure whose own gaps are three or more of these slices (a whole number, within 5%) is
+   *  drawn on the set's slices and stops and starts again between them, as it does when the image's
+   *  spacing is known; it is not a structure of slices that far apart. */
   double fallbackSliceSpacing = 0.0;
   /** Resample spacing in the slice plane (mm); 0: automaticPointSpacing of the stack. */
   double pointSpacing = 0.0;

@@ -264,6 +264,41 @@ TEST(StructureSet, EmptyAndSingleSliceROIsAreReportedAndTheOthersWritten)
   expectValid(run.folder / "all.vtp");
 }
 
+TEST(StructureSet, SlicesSeveralOfTheSetsApartAreSlabsOfTheSetsSpacing)
+{
+  // Two ROIs on every slice, one every other slice, one in two slices 50 mm apart and one in a
+  // single slice. The set's slice spacing is its ROIs' most common one (Spacing), not the median
+  // of their spacings (2 Spacing here). The far-apart ROI (17 slices) is two slabs of that spacing, as
+  // a planning system counts it, not a 51 mm column reaching 25 mm beyond each drawn slice; the
+  // every-other-slice one keeps its own spacing (tiled across, as a planner interpolates).
+  PlanarStructure everyOther = roi(3, "EveryOther", { 1, 2, 3 });
+  for (int k = 0; k < 10; k += 2)
+    everyOther.contours.push_back(circle(40.0, 40.0, Spacing * k, 8.0));
+  PlanarStructure second = roi(4, "Second", { 1, 2, 3 });
+  for (int k = 0; k < 6; ++k)
+    second.contours.push_back(circle(40.0, -40.0, Spacing * k, 8.0));
+  PlanarStructure apart = roi(5, "Apart", { 1, 2, 3 });
+  apart.contours.push_back(circle(0.0, 80.0, 0.0, 10.0));
+  apart.contours.push_back(circle(0.0, 80.0, 17 * Spacing, 10.0));
+  PlanarStructure single = roi(6, "Single", { 1, 2, 3 });
+  single.contours.push_back(circle(0.0, -80.0, 9.0, 10.0));
+  const SetRun run = meshSet("SeveralApart", { nestedAnnulus(), everyOther, second, apart, single });
+  ASSERT_EQ(run.result.exitCode, cli::Success) << run.result.err;
+  const double slab = polygonArea(10.0) * Spacing;
+  const MeshValidation two = expectValid(run.folder / "rois" / "005_Apart.vtp");
+  EXPECT_EQ(two.components, 2u);
+  EXPECT_NEAR(two.volume, 2.0 * slab, 0.1 * slab);
+  double minZ = 1e9, maxZ = -1e9;
+  for (const Point3& p : readMesh((run.folder / "rois" / "005_Apart.vtp").string()).mesh.points)
+    minZ = std::min(minZ, p.z), maxZ = std::max(maxZ, p.z);
+  EXPECT_NEAR(minZ, -0.5 * Spacing, 0.5);
+  EXPECT_NEAR(maxZ, 17.5 * Spacing, 0.5);
+  const MeshValidation one = expectValid(run.folder / "rois" / "006_Single.vtp");
+  EXPECT_NEAR(one.volume, slab, 0.1 * slab);
+  const MeshValidation other = expectValid(run.folder / "rois" / "003_EveryOther.vtp");
+  EXPECT_EQ(other.components, 1u);
+}
+
 TEST(StructureSet, SmallROIsInOneSliceEncloseTheirSlabVolume)
 {
   // A structure a few millimetres across drawn in one slice: its caps, domes half a slice high,
