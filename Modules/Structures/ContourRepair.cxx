@@ -124,11 +124,17 @@ std::vector<Polygon2> evenOddRegion(const std::vector<Polygon2>& contours, const
   cleaner.Execute(ClipperLib::ctUnion, simple, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
 
   std::vector<Polygon2> result;
-  const double smallest = options.channelWidth * options.channelWidth * Scale * Scale;
+  // Crumbs of a crossing: under the channel's square, or under a square millimetre and a hundredth
+  // of the slice's largest piece (the loops a contour drawn back and forth over itself leaves).
+  double largest = 0.0;
+  for (const ClipperLib::Path& path : simple)
+    largest = std::max(largest, std::abs(ClipperLib::Area(path)));
+  const double smallest = std::max(options.channelWidth * options.channelWidth * Scale * Scale,
+                                   std::min(Scale * Scale, 0.01 * largest));
   for (const ClipperLib::Path& path : simple)
   {
     if (path.size() < 3 || std::abs(ClipperLib::Area(path)) < smallest)
-      continue; // crumbs of a crossing
+      continue;
     Polygon2 contour;
     contour.reserve(path.size());
     for (const ClipperLib::IntPoint& p : path)

@@ -91,6 +91,31 @@ TEST(ContourRepair, OverlappingContoursFollowTheEvenOddRule)
   EXPECT_NEAR(nestedArea(region), 100.0, 0.1);
 }
 
+TEST(ContourRepair, AContourDrawnBackAndForthOverItselfLeavesNoCrumbs)
+{
+  // A circle of 20 mm whose 200 points zig-zag up to 0.5 mm across it, as a shaky hand or an
+  // export's rounding draws: it crosses itself in dozens of places, and the even-odd rule leaves
+  // the loops between crossings as tiny islands and holes (0.01-0.5 mm^2). Kept, they tiled into
+  // folded slivers (an invalid mesh, exit 7) and, at 2 mm, runs of minutes and gigabytes. They are
+  // dropped: under a square millimetre and a hundredth of the slice's largest piece.
+  Polygon2 shaky;
+  for (int i = 0; i < 200; ++i)
+  {
+    const double angle = 2.0 * M_PI * i / 200.0;
+    // Each point moved by up to 0.5 mm along x and y, with no pattern along the circle.
+    const double dx = ((i * 7919) % 11 - 5) * 0.1, dy = ((i * 104729) % 13 - 6) * (0.5 / 6.0);
+    shaky.push_back({ 20.0 * std::cos(angle) + dx, 20.0 * std::sin(angle) + dy });
+  }
+  ASSERT_FALSE(contourCrossings({ shaky }).empty());
+  const std::vector<Polygon2> region = evenOddRegion({ shaky });
+  ASSERT_EQ(region.size(), 1u);
+  EXPECT_TRUE(contourCrossings(region).empty());
+  EXPECT_NEAR(nestedArea(region), M_PI * 20.0 * 20.0, 0.02 * M_PI * 20.0 * 20.0);
+  // A contour of 3 mm^2 in the same slice is a structure, not a crumb: kept.
+  const std::vector<Polygon2> withIsland = evenOddRegion({ shaky, flat(circle(40.0, 0.0, 0.0, 1.0, 32)) });
+  EXPECT_EQ(withIsland.size(), 2u);
+}
+
 TEST(ContourRepair, APointFarBeyondAnyAnatomyIsAnErrorNotACrash)
 {
   // 6.7e31 mm (a fuzzed file's coordinate): too large for the integers of the polygon booleans.
