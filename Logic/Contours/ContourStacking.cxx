@@ -117,13 +117,49 @@ Vector3 newellNormal(const Polygon3& contour)
   return normal;
 }
 
+Vector3 planeNormal(const Polygon3& contour)
+{
+  const Vector3 newell = newellNormal(contour);
+  if (contour.size() < 3)
+    return newell;
+  // The triangles from the centroid to each edge, each turned to agree with the largest: they do
+  // not cancel where the contour's lobes wind opposite ways (a symmetric figure eight, whose
+  // Newell normal vanishes while it still spans a plane and, by the even-odd rule, two lobes).
+  Vector3 centre{ 0.0, 0.0, 0.0 };
+  for (const Point3& p : contour)
+    centre = { centre[0] + p.x, centre[1] + p.y, centre[2] + p.z };
+  centre = scaled(centre, 1.0 / static_cast<double>(contour.size()));
+  std::vector<Vector3> fan;
+  std::size_t largest = 0;
+  for (std::size_t i = 0; i < contour.size(); ++i)
+  {
+    const Point3& p = contour[i];
+    const Point3& q = contour[(i + 1) % contour.size()];
+    const Vector3 a{ p.x - centre[0], p.y - centre[1], p.z - centre[2] };
+    const Vector3 b{ q.x - centre[0], q.y - centre[1], q.z - centre[2] };
+    fan.push_back({ a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] });
+    if (norm(fan.back()) > norm(fan[largest]))
+      largest = fan.size() - 1;
+  }
+  Vector3 unsignedSum{ 0.0, 0.0, 0.0 };
+  for (const Vector3& n : fan)
+  {
+    const double sign = dot(n, fan[largest]) < 0.0 ? -1.0 : 1.0;
+    for (int k = 0; k < 3; ++k)
+      unsignedSum[k] += sign * n[k];
+  }
+  // Newell's wherever it stands for the contour (any contour that does not cross itself, and most
+  // that do): only a cancelling one is replaced.
+  return norm(newell) > 1e-6 * norm(unsignedSum) ? newell : unsignedSum;
+}
+
 Vector3 sliceNormalOf(const std::vector<Polygon3>& contours)
 {
   std::vector<Vector3> normals;
   std::size_t largest = 0;
   for (const Polygon3& contour : contours)
   {
-    normals.push_back(newellNormal(withoutClosingPoint(contour)));
+    normals.push_back(planeNormal(withoutClosingPoint(contour)));
     if (norm(normals.back()) > norm(normals[largest]))
       largest = normals.size() - 1;
   }
@@ -196,7 +232,7 @@ StackedContours stackContours(const std::vector<Polygon3>& contours, const Conto
   for (const Polygon3& raw : contours)
   {
     const Polygon3 contour = withoutClosingPoint(raw);
-    const Vector3 n = newellNormal(contour);
+    const Vector3 n = planeNormal(contour);
     const double length = norm(n);
     if (contour.size() < 3 || !(length > 1e-12))
     {

@@ -23,6 +23,12 @@ using Vector3 = std::array<double, 3>;
  *  winding), its length twice the enclosed area; robust to a few points off the plane. */
 Vector3 newellNormal(const Polygon3& contour);
 
+/** The normal of the plane a closed contour spans: newellNormal, unless the contour crosses itself
+ *  so that its lobes' windings cancel it (a symmetric figure eight); then the sum of the triangles
+ *  from its centroid to its edges, each turned to agree with the largest (its length then twice
+ *  the lobes' area). */
+Vector3 planeNormal(const Polygon3& contour);
+
 struct ContourStackingOptions
 {
   /** The slice direction of the image the contours were drawn on, when known (any length, either

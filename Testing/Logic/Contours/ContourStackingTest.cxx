@@ -49,6 +49,23 @@ TEST(ContourStacking, NewellNormalIsTwiceTheAreaAlongThePlaneNormal)
   EXPECT_NEAR(n[2], 2.0 * 16.0, 1e-9); // counter-clockwise seen from +z: +z, twice the 16 mm^2
 }
 
+TEST(ContourStacking, ASymmetricFigureEightStillSpansItsPlane)
+{
+  // A bow tie: two triangular lobes of 8 mm^2 wound opposite ways through one crossing. Newell's
+  // normal cancels, and the contour (two lobes by the even-odd rule) was dropped as one without an
+  // area; an ROI of only such contours failed with "the slice plane is undefined".
+  auto figureEight = [](double z) { return Polygon3{ { -4, -2, z }, { 4, 2, z }, { 4, -2, z }, { -4, 2, z } }; };
+  auto length = [](const Vector3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); };
+  EXPECT_LT(length(newellNormal(figureEight(0.0))), 1e-9);
+  const Vector3 n = planeNormal(figureEight(0.0));
+  EXPECT_NEAR(std::abs(n[2]), length(n), 1e-12);
+  EXPECT_NEAR(length(n), 2.0 * 16.0, 1e-9); // twice the two lobes' area
+  const StackedContours stacked = stackContours({ figureEight(0.0), figureEight(2.5), figureEight(5.0) });
+  ASSERT_EQ(stacked.stack.slices.size(), 3u);
+  for (const Slice& slice : stacked.stack.slices)
+    EXPECT_EQ(slice.contours.size(), 1u);
+}
+
 TEST(ContourStacking, AxialContoursKeepThePatientAxesAndTheirPositions)
 {
   std::vector<Polygon3> contours;
