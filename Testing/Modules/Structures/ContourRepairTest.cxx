@@ -167,6 +167,26 @@ TEST(ContourRepair, EdgesWithinAGapAreFoundOnlyCloserThanIt)
   EXPECT_TRUE(contourCrossings({ a, b }).empty());
 }
 
+TEST(ContourRepair, ADenselySampledContourIsKeptAsGivenUnlessItCrossesItself)
+{
+  // 20,000 points on a 20 mm circle, 0.006 mm apart: every edge is within the channel width of the
+  // next but one. Such neighbours along the contour are no channel: the slice is kept exactly, not
+  // run through the closing (whose strictly-simple pass is quadratic in the points: a 100,000-point
+  // contour took 20 s). Two points swapped still make a loop that is repaired.
+  const Polygon2 dense = flat(circle(0.0, 0.0, 0.0, 20.0, 20000));
+  ContourStack stack;
+  stack.slices.push_back({ 0.0, { dense } });
+  ContourRepairReport report;
+  const ContourStack kept = repairContours(stack, {}, &report);
+  EXPECT_FALSE(report.any());
+  EXPECT_EQ(kept.slices[0].contours[0].size(), dense.size());
+  Polygon2 looped = dense;
+  std::swap(looped[100], looped[102]);
+  stack.slices[0].contours = { looped };
+  repairContours(stack, {}, &report);
+  EXPECT_EQ(report.crossingSlices.size(), 1u);
+}
+
 TEST(ContourRepair, SlicesAreKeptWithoutClosingOnlyWhereClosingCannotChangeThem)
 {
   // Two circles, a keyhole and a spike at gaps on both sides of the 0.1 mm channel width: wherever
