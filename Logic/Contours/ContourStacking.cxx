@@ -92,6 +92,16 @@ std::string millimetres(double value)
   return text.str();
 }
 
+/** The mean of the contour's points: the products of the normals are taken about it, since far
+ *  from the origin they would lose the digits that matter. */
+Vector3 centreOf(const Polygon3& contour)
+{
+  Vector3 centre{ 0.0, 0.0, 0.0 };
+  for (const Point3& p : contour)
+    centre = { centre[0] + p.x, centre[1] + p.y, centre[2] + p.z };
+  return scaled(centre, 1.0 / static_cast<double>(contour.size()));
+}
+
 } // namespace
 
 Vector3 newellNormal(const Polygon3& contour)
@@ -99,11 +109,7 @@ Vector3 newellNormal(const Polygon3& contour)
   Vector3 normal{ 0.0, 0.0, 0.0 };
   if (contour.size() < 3)
     return normal;
-  // About the centroid: far from the origin, the products would lose the digits that matter.
-  Vector3 centre{ 0.0, 0.0, 0.0 };
-  for (const Point3& p : contour)
-    centre = { centre[0] + p.x, centre[1] + p.y, centre[2] + p.z };
-  centre = scaled(centre, 1.0 / static_cast<double>(contour.size()));
+  const Vector3 centre = centreOf(contour);
   for (std::size_t i = 0; i < contour.size(); ++i)
   {
     const Point3& p = contour[i];
@@ -125,10 +131,7 @@ Vector3 planeNormal(const Polygon3& contour)
   // The triangles from the centroid to each edge, each turned to agree with the largest: they do
   // not cancel where the contour's lobes wind opposite ways (a symmetric figure eight, whose
   // Newell normal vanishes while it still spans a plane and, by the even-odd rule, two lobes).
-  Vector3 centre{ 0.0, 0.0, 0.0 };
-  for (const Point3& p : contour)
-    centre = { centre[0] + p.x, centre[1] + p.y, centre[2] + p.z };
-  centre = scaled(centre, 1.0 / static_cast<double>(contour.size()));
+  const Vector3 centre = centreOf(contour);
   std::vector<Vector3> fan;
   std::size_t largest = 0;
   for (std::size_t i = 0; i < contour.size(); ++i)
