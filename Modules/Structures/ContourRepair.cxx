@@ -29,8 +29,12 @@ void requireWithinReach(const std::vector<Polygon2>& contours)
   for (const Polygon2& contour : contours)
     for (const Point2& p : contour)
       if (!(std::abs(p.x) <= Reach && std::abs(p.y) <= Reach))
-        throw Error("a contour point lies " + std::to_string(std::max(std::abs(p.x), std::abs(p.y))) +
-                    " mm from the origin, beyond the 1 km any anatomy lies within");
+      {
+        std::ostringstream message;
+        message << "a contour point lies " << std::max(std::abs(p.x), std::abs(p.y))
+                << " mm from the origin, beyond the 1 km any anatomy lies within";
+        throw Error(message.str());
+      }
 }
 
 ClipperLib::Paths toPaths(const std::vector<Polygon2>& contours)

@@ -153,10 +153,11 @@ StructureSet readWithDcmtk(const std::string& path)
     auto found = byNumber.find(number);
     if (found == byNumber.end())
     {
-      // Contours of an ROI the set does not declare: kept, under its number.
+      // Contours of an ROI the set does not declare: kept, under its number, and said.
       PlanarStructure roi;
       roi.number = number;
       roi.name = "ROI_" + std::to_string(number);
+      roi.notes.push_back("not declared in the Structure Set ROI Sequence: named by its number");
       found = byNumber.emplace(number, set.structures.size()).first;
       set.structures.push_back(std::move(roi));
     }

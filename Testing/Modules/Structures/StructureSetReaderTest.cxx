@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
 #include <dcmtk/dcmdata/dcuid.h>
@@ -123,6 +125,27 @@ TEST(StructureSetReader, ReadsDecimalStringsWithSignsExponentsAndPaddingExactly)
   EXPECT_EQ(contour[2].x, 0.5);
   EXPECT_EQ(contour[2].y, 100.0);
   EXPECT_EQ(contour[2].z, 0.0);
+}
+
+TEST(StructureSetReader, ContoursOfAnUndeclaredROIAreKeptAndSaid)
+{
+  // The first ROI's contours refer to ROI 99, which the Structure Set ROI Sequence does not list.
+  const fs::path path = folder("undeclared") / "RS.dcm";
+  writeRTStructureSet(path.string(), twoStructures());
+  DcmFileFormat file;
+  ASSERT_TRUE(file.loadFile(path.c_str()).good());
+  DcmItem* roi = nullptr;
+  ASSERT_TRUE(file.getDataset()->findAndGetSequenceItem(DCM_ROIContourSequence, roi, 0).good());
+  ASSERT_TRUE(roi->putAndInsertString(DCM_ReferencedROINumber, "99").good());
+  ASSERT_TRUE(file.saveFile(path.c_str(), EXS_LittleEndianExplicit).good());
+  const StructureSet set = readStructureSet(path.string());
+  const auto undeclared = std::find_if(set.structures.begin(), set.structures.end(),
+                                       [](const PlanarStructure& s) { return s.number == 99; });
+  ASSERT_NE(undeclared, set.structures.end());
+  EXPECT_EQ(undeclared->name, "ROI_99");
+  EXPECT_FALSE(undeclared->contours.empty());
+  ASSERT_EQ(undeclared->notes.size(), 1u);
+  EXPECT_NE(undeclared->notes[0].find("not declared"), std::string::npos) << undeclared->notes[0];
 }
 
 TEST(StructureSetReader, AContourValueThatIsNoNumberIsAOneLineError)
