@@ -87,6 +87,14 @@ void writeNrrd(const fs::path& path, const std::string& spaceDirections)
     out.put(static_cast<char>(v % 5 == 0));
 }
 
+/** A 2 x 2 x 2 voxel box in a 6^3 label map, box.mha in `folder`: an input every run meshes. */
+std::string writeBoxInput(const fs::path& folder)
+{
+  writeMetaImage(folder / "box.mha", { 6, 6, 6 }, { 1, 1, 1 },
+                 [](int i, int j, int k) -> unsigned char { return i > 1 && i < 4 && j > 1 && j < 4 && k > 1 && k < 4; });
+  return (folder / "box.mha").string();
+}
+
 std::string readBytes(const fs::path& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -274,9 +282,7 @@ TEST(ErrorHandling, EverythingSmallerThanTheMinimumComponentVolume)
 TEST(ErrorHandling, OutputFolderMissingOrNotWritable)
 {
   const Folders f = foldersFor("output-folder");
-  writeMetaImage(f.inputs / "box.mha", { 6, 6, 6 }, { 1, 1, 1 },
-                 [](int i, int j, int k) -> unsigned char { return i > 1 && i < 4 && j > 1 && j < 4 && k > 1 && k < 4; });
-  const std::string input = quoted((f.inputs / "box.mha").string());
+  const std::string input = quoted(writeBoxInput(f.inputs));
   RunResult r = runSliceMesh(input + " " + quoted((f.outputs / "nowhere" / "out.vtp").string()));
   EXPECT_EQ(r.exitCode, cli::WriteFailed);
   EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
@@ -317,9 +323,7 @@ TEST(ErrorHandling, ReportReturnParameterAndSnapshotFoldersAreCheckedBeforeAnyWo
   // The files written after the mesh: a missing folder is refused as the output's is, before any
   // stage starts, and the mesh is not written either (it was, after the whole run, then exit 6).
   const Folders f = foldersFor("result-folders");
-  writeMetaImage(f.inputs / "box.mha", { 6, 6, 6 }, { 1, 1, 1 },
-                 [](int i, int j, int k) -> unsigned char { return i > 1 && i < 4 && j > 1 && j < 4 && k > 1 && k < 4; });
-  const std::string input = (f.inputs / "box.mha").string();
+  const std::string input = writeBoxInput(f.inputs);
   const std::string missing = (f.outputs / "nowhere").string();
   const std::vector<std::pair<std::string, std::string>> cases{
     { "--report", "cannot write report '" + missing + "/r.json': folder '" + missing + "' does not exist" },
@@ -342,9 +346,7 @@ TEST(ErrorHandling, AnUnreadableColourTableIsRefusedInEveryRun)
 {
   // A single-label run ignored a colour table it could not open; one mesh per label refused it.
   const Folders f = foldersFor("colour-table");
-  writeMetaImage(f.inputs / "box.mha", { 6, 6, 6 }, { 1, 1, 1 },
-                 [](int i, int j, int k) -> unsigned char { return i > 1 && i < 4 && j > 1 && j < 4 && k > 1 && k < 4; });
-  const std::string input = (f.inputs / "box.mha").string();
+  const std::string input = writeBoxInput(f.inputs);
   const std::string table = (f.inputs / "no-such-table.txt").string();
   for (const std::string run : { "", "--splitLabels ", "--label 1 " })
     expectFailure(f.outputs, input, cli::BadArguments, table + ": cannot open the colour table",
