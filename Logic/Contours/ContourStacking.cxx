@@ -38,13 +38,24 @@ Vector3 asVector(const Point3& p)
   return { p.x, p.y, p.z };
 }
 
-/** The contour without a closing point that repeats the first (many files store it). */
-Polygon3 withoutClosingPoint(Polygon3 contour)
+bool samePoint(const Point3& a, const Point3& b)
 {
-  while (contour.size() > 1 && contour.front().x == contour.back().x && contour.front().y == contour.back().y &&
-         contour.front().z == contour.back().z)
-    contour.pop_back();
-  return contour;
+  return a.x == b.x && a.y == b.y && a.z == b.z;
+}
+
+/** The contour without points that repeat the one before them: a closing point that repeats the
+ *  first (many files store it) and points stored twice in a row (some exports do). Left in, each
+ *  is an edge of no length, which the repair would report as a keyhole in every slice. */
+Polygon3 withoutRepeatedPoints(const Polygon3& contour)
+{
+  Polygon3 kept;
+  kept.reserve(contour.size());
+  for (const Point3& p : contour)
+    if (kept.empty() || !samePoint(kept.back(), p))
+      kept.push_back(p);
+  while (kept.size() > 1 && samePoint(kept.front(), kept.back()))
+    kept.pop_back();
+  return kept;
 }
 
 /** An in-plane orthonormal basis (u, v) with u x v = normal: u from the patient axis most
@@ -162,7 +173,7 @@ Vector3 sliceNormalOf(const std::vector<Polygon3>& contours)
   std::size_t largest = 0;
   for (const Polygon3& contour : contours)
   {
-    normals.push_back(planeNormal(withoutClosingPoint(contour)));
+    normals.push_back(planeNormal(withoutRepeatedPoints(contour)));
     if (norm(normals.back()) > norm(normals[largest]))
       largest = normals.size() - 1;
   }
@@ -234,7 +245,7 @@ StackedContours stackContours(const std::vector<Polygon3>& contours, const Conto
   const double maxTiltCosine = std::cos(options.maxTiltDegrees * Pi / 180.0);
   for (const Polygon3& raw : contours)
   {
-    const Polygon3 contour = withoutClosingPoint(raw);
+    const Polygon3 contour = withoutRepeatedPoints(raw);
     const Vector3 n = planeNormal(contour);
     const double length = norm(n);
     if (contour.size() < 3 || !(length > 1e-12))

@@ -153,6 +153,29 @@ TEST(ContourStacking, ContoursOfOneSliceGroupDespiteSmallOffsetsAndDuplicatesAre
   EXPECT_TRUE(mentions(stacked.notes, "repeated"));
 }
 
+TEST(ContourStacking, PointsStoredTwiceInARowAreOnePoint)
+{
+  // Some exports store every point twice, and most repeat the first at the end: edges of no length,
+  // which the repair would take for keyholes.
+  std::vector<Polygon3> contours;
+  for (int k = 0; k < 3; ++k)
+  {
+    Polygon3 doubled;
+    for (const Point3& p : square({ 0.0, 0.0, 2.5 * k }, { 1, 0, 0 }, { 0, 1, 0 }, 5.0))
+      doubled.insert(doubled.end(), { p, p });
+    doubled.push_back(doubled.front());
+    contours.push_back(doubled);
+  }
+  const StackedContours stacked = stackContours(contours);
+  ASSERT_EQ(stacked.stack.slices.size(), 3u);
+  for (const Slice& slice : stacked.stack.slices)
+  {
+    ASSERT_EQ(slice.contours.size(), 1u);
+    ASSERT_EQ(slice.contours[0].size(), 4u);
+    EXPECT_NEAR(std::abs(twiceSignedArea(slice.contours[0])), 200.0, 1e-9);
+  }
+}
+
 TEST(ContourStacking, UnevenSpacingIsToleratedAndReported)
 {
   std::vector<Polygon3> contours;
