@@ -159,7 +159,8 @@ bool collapseSpoilsATriangle(const Mesh& mesh, Halfedge h)
   return false;
 }
 
-void collapseShortEdges(Mesh& mesh, const ConstrainedEdges& constrained, double low, double high)
+void collapseShortEdges(Mesh& mesh, const ConstrainedEdges& constrained, double low, double high,
+                        const SlidingVertices* sliding)
 {
   const double squaredLow = low * low, squaredHigh = high * high;
   // Found once: a collapse never removes a held vertex nor makes one held (of the two edges it
@@ -168,8 +169,17 @@ void collapseShortEdges(Mesh& mesh, const ConstrainedEdges& constrained, double 
   for (Vertex v : mesh.vertices())
     heldVertex[v.idx()] = held(mesh, constrained, v);
   auto isHeld = [&](Vertex v) { return heldVertex[v.idx()] != 0; };
+  // A constrained edge from a sliding vertex goes into its other end: the line stays as it was.
+  auto slides = [&](Halfedge h)
+  {
+    return sliding && constrained[mesh.edge(h)] && !mesh.is_border(mesh.edge(h)) &&
+           ((*sliding)[mesh.source(h)] || (*sliding)[mesh.target(h)]);
+  };
   auto collapseAllowed = [&](Halfedge h)
-  { return !constrainedOrBorder(mesh, constrained, mesh.edge(h)) && !(isHeld(mesh.source(h)) && isHeld(mesh.target(h))); };
+  {
+    return slides(h) ||
+           (!constrainedOrBorder(mesh, constrained, mesh.edge(h)) && !(isHeld(mesh.source(h)) && isHeld(mesh.target(h))));
+  };
   std::priority_queue<Waiting, std::vector<Waiting>, LongerFirstOut> waiting;
   auto wait = [&](Halfedge h)
   {
@@ -188,9 +198,10 @@ void collapseShortEdges(Mesh& mesh, const ConstrainedEdges& constrained, double 
     // h's source goes into its target: a held vertex stays.
     Halfedge h = w.halfedge;
     const bool sourceHeld = isHeld(mesh.source(h)), targetHeld = isHeld(mesh.target(h));
-    if (sourceHeld)
+    const bool alongLine = slides(h);
+    if (alongLine ? !(*sliding)[mesh.source(h)] : sourceHeld)
       h = mesh.opposite(h);
-    const bool eitherWay = !sourceHeld && !targetHeld;
+    const bool eitherWay = !alongLine && !sourceHeld && !targetHeld;
     // Whether an edge to the source's neighbours would grow past 4/3 of the target. The cheapest
     // test, first where the direction is settled (most short edges fail it).
     auto tooLong = [&](Halfedge into)
@@ -212,6 +223,8 @@ void collapseShortEdges(Mesh& mesh, const ConstrainedEdges& constrained, double 
     if ((eitherWay && tooLong(h)) || !CGAL::Euler::does_satisfy_link_condition(mesh.edge(h), mesh))
       continue;
     const Vertex kept = mesh.target(h);
+    if (alongLine)
+      constrained[mesh.edge(h)] = false; // it goes; CGAL's collapse takes no constrained edge
     // Merging the two edges of each removed triangle, the constrained one is the one kept.
     CGAL::Euler::collapse_edge(mesh.edge(h), mesh, constrained);
     for (Halfedge around : CGAL::halfedges_around_target(kept, mesh))
@@ -357,14 +370,15 @@ CgalKernel::Vector_3 areaNormal(const CgalSurfaceMesh& mesh, CgalSurfaceMesh::Ha
   return CGAL::cross_product(Vector(a, b), Vector(a, c));
 }
 
-void splitCollapseFlip(CgalSurfaceMesh& surface, const ConstrainedEdges& constrained, double targetEdgeLength)
+void splitCollapseFlip(CgalSurfaceMesh& surface, const ConstrainedEdges& constrained, double targetEdgeLength,
+                       const SlidingVertices* sliding)
 {
   const double low = 0.8 * targetEdgeLength, high = 4.0 / 3.0 * targetEdgeLength;
   bool hasConstraints = false;
   for (Edge e : surface.edges())
     hasConstraints = hasConstraints || constrainedOrBorder(surface, constrained, e);
   splitLongEdges(surface, constrained, hasConstraints, high);
-  collapseShortEdges(surface, constrained, low, high);
+  collapseShortEdges(surface, constrained, low, high, sliding);
   flipForValence(surface, constrained);
 }
 

@@ -2,6 +2,7 @@
 
 #include "Core/ParallelFor.h"
 #include "Core/SpatialHash.h"
+#include "Finishing/HeldContourEdges.h"
 #include "Finishing/PieceTargetVolumes.h"
 #include "Measures/ComponentOrientation.h"
 #include "Measures/MeshComponents.h"
@@ -81,6 +82,28 @@ std::size_t unsmoothCrossings(TriangleMesh& mesh, const std::vector<Point3>& uns
     validation = validateMesh(mesh, crossings);
   }
   return moved;
+}
+
+/** How far the vertices not held by drawn contours may move to give a piece its volume (mm): a
+ *  quarter of the slice spacing; 0 (unbounded) without held contours. On drawn contours only the
+ *  caps and the rows between the slices move, and a wall thinner than an edge has no more than a row
+ *  of vertices along each cap, which would be pushed far past the half slice to make up its volume. */
+double heldOffset(const SurfaceFinishingOptions& options)
+{
+  if (!options.heldContours)
+    return 0.0;
+  const ContourStack& stack = *options.heldContours;
+  double spacing = stack.sliceSpacing;
+  if (!(spacing > 0.0) && stack.slices.size() > 1)
+    spacing = (stack.slices.back().z - stack.slices.front().z) / static_cast<double>(stack.slices.size() - 1);
+  return spacing > 0.0 ? 0.25 * spacing : options.remeshing.targetEdgeLength;
+}
+
+/** The vertices of `mesh` on the held contours (SurfaceFinishingOptions::heldContours), a flag per
+ *  vertex; empty without held contours. */
+std::vector<char> heldVertices(const TriangleMesh& mesh, const SurfaceFinishingOptions& options)
+{
+  return options.heldContours ? heldContourEdges(mesh, *options.heldContours).vertices : std::vector<char>();
 }
 
 } // namespace
@@ -278,9 +301,11 @@ FinishedPiece smoothedRemesh(TriangleMesh remeshed, const SurfaceFinishingOption
   const std::vector<Point3> unsmoothed = remeshed.points; // smoothing moves points only
   const std::vector<char> leftAsTiled =
     crossedOthers.empty() ? std::vector<char>() : verticesNear(remeshed, crossedOthers, keptRadius(options));
-  smoothSurface(remeshed, options.smoothing, threads);
-  // The remesh's chords cut the corners of structures a few edges across: the piece gets its volume back.
-  offsetToVolume(remeshed, volume);
+  const std::vector<char> held = heldVertices(remeshed, options);
+  smoothSurface(remeshed, options.smoothing, threads, held);
+  // The remesh's chords cut the corners of structures a few edges across: the piece gets its volume
+  // back (on drawn contours, as far as heldOffset lets it).
+  offsetToVolume(remeshed, volume, held, heldOffset(options));
   // After the offset, which would move them too (outwards: towards the other piece).
   std::size_t unsmoothedVertices = leftAsTiled.empty() ? 0 : unsmooth(remeshed, unsmoothed, leftAsTiled);
   std::vector<std::pair<std::size_t, std::size_t>> crossings;
@@ -334,8 +359,8 @@ std::optional<FinishedPiece> remeshedAround(const TriangleMesh& tiled, const Mes
     std::optional<FinishedPiece> around;
     try
     {
-      around = smoothedRemesh(remeshSurfaceAround(tiled, keep, options.remeshing, threads), options, volume, threads,
-                              places.crossedOthers);
+      around = smoothedRemesh(remeshSurfaceAround(tiled, keep, options.remeshing, threads, options.heldContours.get()),
+                              options, volume, threads, places.crossedOthers);
     }
     catch (const std::exception&) // the triangles around the kept ones are no manifold surface
     {
@@ -369,7 +394,8 @@ std::optional<FinishedPiece> remeshedPiece(const TriangleMesh& tiled, const Mesh
   std::optional<FinishedPiece> piece;
   try
   {
-    piece = smoothedRemesh(remeshSurface(tiled, options.remeshing, threads), options, volume, threads);
+    piece = smoothedRemesh(remeshSurface(tiled, options.remeshing, threads, options.heldContours.get()), options, volume,
+                           threads);
   }
   catch (const std::exception& e) // ours, or a CGAL precondition the piece does not meet
   {
@@ -422,9 +448,10 @@ FinishedPiece finishPiece(const TriangleMesh& tiled, const MeshValidation& refer
     result.why = "remeshed: " + why;
   }
   TriangleMesh smoothed = tiled;
-  smoothSurface(smoothed, options.smoothing, threads);
+  const std::vector<char> held = heldVertices(tiled, options);
+  smoothSurface(smoothed, options.smoothing, threads, held);
   if (volumeScale != 1.0 && options.smoothing.iterations > 0) // no iterations asked: the tiling itself
-    offsetToVolume(smoothed, volumeScale * reference.volume);
+    offsetToVolume(smoothed, volumeScale * reference.volume, held, heldOffset(options));
   std::vector<std::pair<std::size_t, std::size_t>> crossings;
   MeshValidation validation = validateMesh(smoothed, crossings);
   const std::size_t unsmoothedVertices = unsmoothCrossings(smoothed, tiled.points, validation, crossings);

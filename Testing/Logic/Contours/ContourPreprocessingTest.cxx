@@ -335,7 +335,7 @@ TEST(ContourResampling, KeepingTheAreaUndoesTheChordsCut)
     EXPECT_LT(std::abs(std::hypot(p.x, p.y) - 10.0), 2.0 * 2.0 / (8.0 * 10.0));
   // Through the slice version: crossing-free as before.
   const std::vector<Polygon2> ring = { circle(0, 0, 10, 400), circle(0, 0, 9.7, 400, true) };
-  EXPECT_TRUE(contourCrossings(resampleContours(ring, 8.0, /*keepArea=*/true)).empty());
+  EXPECT_TRUE(contourCrossings(resampleContours(ring, 8.0, ResampledShape::KeepingArea)).empty());
 }
 
 TEST(ContourPreparation, TracedContoursLoseOnlyThePointsOnAStraightRun)
