@@ -411,6 +411,7 @@ MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions&
         constrained[surface.edge(h)] = true;
     }
   }
+  const ContourVertices contourVertices{ heldOnContour, slidingOnContour };
   std::vector<char> movable;
   auto freeVertices = [&]() -> const std::vector<char>*
   {
@@ -427,7 +428,7 @@ MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions&
     onInput[v] = surface.point(v);
   for (int round = 0; round < options.iterations; ++round)
   {
-    splitCollapseFlip(surface, constrained, options.targetEdgeLength, heldContours ? &slidingOnContour : nullptr);
+    splitCollapseFlip(surface, constrained, options.targetEdgeLength, heldContours ? &contourVertices : nullptr);
     surface.collect_garbage(); // the next round's face index map must be dense
     relaxTangentially(surface, threads, freeVertices());
     if (options.projectEachRound || round + 1 == options.iterations)
