@@ -91,6 +91,8 @@ Polygon2 resampleContourKeepingCorners(const Polygon2& contour, double spacing)
 {
   if (!(spacing > 0.0) || contour.size() < 3 || !(perimeter(contour) > 0.0))
     return contour;
+  // A small drawn contour keeps more of its points than a traced one: its shape is the anatomy.
+  spacing = std::min(spacing, perimeter(contour) / static_cast<double>(std::min(contour.size(), fewestDrawnPoints)));
   const std::vector<std::size_t> corners = contourCorners(contour, spacing);
   if (corners.empty())
     return resampleContour(contour, spacing);

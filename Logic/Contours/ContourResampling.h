@@ -10,6 +10,9 @@ namespace slicemesh
 /** The fewest points resampleContour leaves a contour that had at least as many. */
 constexpr std::size_t fewestResampledPoints = 8;
 
+/** The fewest points resampleContourKeepingCorners leaves a drawn contour that had at least as many. */
+constexpr std::size_t fewestDrawnPoints = 16;
+
 /** A drawn contour's corner turns by more than this (degrees): a square's turn 90, a circle drawn
  *  with 32 points 11.25. */
 constexpr double cornerTurnDegrees = 30.0;
@@ -34,7 +37,7 @@ std::vector<std::size_t> contourCorners(const Polygon2& contour, double spacing,
 
 /** Points at even arc-length steps along the contour between its corners (contourCorners), each
  *  corner kept exactly: every stretch from one corner to the next gets max(1, round(length /
- *  spacing)) steps. Every point lies on the input polyline, so a drawn square stays a square and a
+ *  spacing)) steps, the spacing at most a fewestDrawnPoints-th of the perimeter. Every point lies on the input polyline, so a drawn square stays a square and a
  *  slot narrower than the spacing keeps its walls. A contour without corners is resampleContour. */
 Polygon2 resampleContourKeepingCorners(const Polygon2& contour, double spacing);
 

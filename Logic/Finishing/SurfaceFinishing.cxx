@@ -99,6 +99,12 @@ double heldOffset(const SurfaceFinishingOptions& options)
   return spacing > 0.0 ? 0.25 * spacing : options.remeshing.targetEdgeLength;
 }
 
+/** A piece held on drawn contours that ends further than this from its volume (a fraction of it)
+ *  is finished again without them. A thin wall's caps leave it a few percent short (a 2 mm shell
+ *  2.4%, its caps a row of vertices each); a disc 2 mm across drawn in one slice, all caps, more
+ *  than half. */
+constexpr double heldVolumeShortfall = 0.1;
+
 /** The vertices of `mesh` on the held contours (SurfaceFinishingOptions::heldContours), a flag per
  *  vertex; empty without held contours. */
 std::vector<char> heldVertices(const TriangleMesh& mesh, const SurfaceFinishingOptions& options)
@@ -442,8 +448,18 @@ FinishedPiece finishPiece(const TriangleMesh& tiled, const MeshValidation& refer
     // length, where a gap narrower than the edge makes the remesh cross itself, rescued the large
     // pieces of noisy k-means labels but cost 80 s and 1.4 million triangles there: not what was asked.)
     std::string why;
-    if (std::optional<FinishedPiece> remeshed =
-          remeshedPiece(tiled, reference, options, volumeScale * reference.volume, threads, why))
+    const double volume = volumeScale * reference.volume;
+    std::optional<FinishedPiece> remeshed = remeshedPiece(tiled, reference, options, volume, threads, why);
+    if (remeshed && options.heldContours && std::abs(remeshed->validation.volume - volume) > heldVolumeShortfall * std::abs(volume))
+    {
+      // Held on its contours it cannot hold its volume (a structure a few millimetres across in one
+      // slice, whose caps are most of it): finished as a mask's surface is, its contours not held.
+      SurfaceFinishingOptions free = options;
+      free.heldContours.reset();
+      remeshed.reset();
+      remeshed = remeshedPiece(tiled, reference, free, volume, threads, why);
+    }
+    if (remeshed)
       return std::move(*remeshed);
     result.why = "remeshed: " + why;
   }
@@ -483,6 +499,9 @@ FinishedPiece finishedSpeck(const TriangleMesh& tiled, const MeshValidation& ref
   if (options.finish == SurfaceFinish::Remeshed)
   {
     SurfaceFinishingOptions ownScale = options;
+    // A speck's contours are not held: its caps are most of it, too few vertices to give it its
+    // volume (a disc 2 mm across in one slice is tiled at under half its slab) if its contour stays.
+    ownScale.heldContours.reset();
     ownScale.remeshing.targetEdgeLength = speckEdgeLength(tiled, reference, options.remeshing.targetEdgeLength);
     ownScale.remeshing.projectEachRound = true;
     std::string why;
