@@ -101,7 +101,7 @@ double heldOffset(const SurfaceFinishingOptions& options)
 
 /** A piece held on drawn contours that ends further than this from its volume (a fraction of it)
  *  is finished again without them. A thin wall's caps leave it a few percent short (a 2 mm shell
- *  2.4%, its caps a row of vertices each); a disc 2 mm across drawn in one slice, all caps, more
+ *  1-3%, its caps a row of vertices each); a disc 2 mm across drawn in one slice, all caps, more
  *  than half. */
 constexpr double heldVolumeShortfall = 0.1;
 

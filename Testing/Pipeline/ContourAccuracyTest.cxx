@@ -201,7 +201,7 @@ TEST(ContourAccuracy, AThinShellKeepsItsCornersAndWalls)
 // 5%): room for changes of the method's details, while a surface half again as far off fails.
 TEST(ContourAccuracy, SphereFromAStructureSet)
 {
-  expectCloseToTheTruth("sphere r20", 0.125); // measured 0.0698 mm (0.0832 before the contours were held)
+  expectCloseToTheTruth("sphere r20", 0.125); // measured 0.0698 mm
 }
 
 TEST(ContourAccuracy, RotatedBoxFromAStructureSet)
