@@ -325,11 +325,11 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
                   }
                   else
                   {
-                    // Planning-system contours are irregularly spaced: resampled (keeping their
-                    // area) to the ROI's point spacing unless one was asked for.
+                    // Planning-system contours are irregularly spaced: resampled keeping their
+                    // corners, to the ROI's point spacing (resolvedMeshingOptions) unless one was
+                    // asked for.
                     MeshingOptions options = settings.meshing;
-                    if (!(options.contours.pointSpacing > 0.0))
-                      options.contours.pointSpacing = s.contours.spacing[0];
+                    options.drawnContours = true;
                     s.meshing = startMeshing(s.contours.stack, options, s.contours.spacing);
                   }
                   runMeshingStage(MeshingStage::Preparation, s.meshing);

@@ -48,9 +48,11 @@ ContourStack prepareContours(const ContourStack& traced, const ContourPreparatio
   }
   if (resolved.simplificationTolerance > 0.0)
     result = simplifyContours(result, resolved.simplificationTolerance);
-  // Resampled contours keep their enclosed area: chords cut the corners of small structures.
+  // Traced contours keep their enclosed area: chords cut the corners of small structures. Drawn
+  // contours keep their corners and every point on the drawn line: they are the anatomy as drawn.
   if (resolved.pointSpacing > 0.0)
-    result = resampleContours(result, resolved.pointSpacing, /*keepArea=*/true);
+    result = resampleContours(result, resolved.pointSpacing,
+                              resolved.keepCorners ? ResampledShape::KeepingCorners : ResampledShape::KeepingArea);
   return result;
 }
 

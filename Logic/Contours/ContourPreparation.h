@@ -24,6 +24,10 @@ struct ContourPreparationOptions
   double smoothingMaxShift = 0.0;       ///< bound on each point's move (mm); 0: 0.3 of the smaller pixel side
   double simplificationTolerance = 0.0; ///< Douglas-Peucker tolerance, crossing-free (mm); 0: none
   double pointSpacing = 0.0;            ///< resample to this spacing (mm); 0: automatic (see resolved)
+  /** Drawn contours (a structure set's): resampled keeping their corners and every point on the
+   *  drawn polyline (resampleContourKeepingCorners), not keeping their area. Traced contours are a
+   *  staircase, whose corners are not the anatomy's. */
+  bool keepCorners = false;
 };
 
 /** The options with every automatic value replaced by its value for a grid of this spacing (x, y,
@@ -36,7 +40,8 @@ ContourPreparationOptions resolvedContourPreparation(const ContourPreparationOpt
 
 /** The contours as the tiling takes them, with resolved options: smoothed (ContourSmoothing.h) when
  *  the mode is Smoothed, simplified (ContourSimplification.h), resampled to the point spacing
- *  keeping each contour's area (ContourResampling.h), all crossing-free. */
+ *  keeping each contour's area, or with keepCorners its corners (ContourResampling.h), all
+ *  crossing-free. */
 ContourStack prepareContours(const ContourStack& traced, const ContourPreparationOptions& resolved);
 
 } // namespace slicemesh

@@ -45,6 +45,95 @@ Polygon2 resampleContour(const Polygon2& contour, double spacing)
   return resampled;
 }
 
+std::vector<std::size_t> contourCorners(const Polygon2& contour, double spacing, double turnDegrees)
+{
+  const std::size_t n = contour.size();
+  if (n < 3)
+    return {};
+  const double cosine = std::cos(turnDegrees * M_PI / 180.0);
+  // Each point's turn (the cosine between its incoming and outgoing edges) and arc length.
+  std::vector<double> turn(n, 1.0), arc(n + 1, 0.0);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const Point2& previous = contour[(i + n - 1) % n];
+    const Point2& p = contour[i];
+    const Point2& next = contour[(i + 1) % n];
+    const double ax = p.x - previous.x, ay = p.y - previous.y, bx = next.x - p.x, by = next.y - p.y;
+    const double la = std::hypot(ax, ay), lb = std::hypot(bx, by);
+    turn[i] = la > 0.0 && lb > 0.0 ? (ax * bx + ay * by) / (la * lb) : 1.0;
+    arc[i + 1] = arc[i] + lb;
+  }
+  const double length = arc[n];
+  std::vector<std::size_t> sharp;
+  for (std::size_t i = 0; i < n; ++i)
+    if (turn[i] < cosine)
+      sharp.push_back(i);
+  // Sharpest first; a corner within half a spacing of a sharper one (along the contour, either way
+  // round) is not kept.
+  std::stable_sort(sharp.begin(), sharp.end(), [&](std::size_t a, std::size_t b) { return turn[a] < turn[b]; });
+  std::vector<std::size_t> corners;
+  for (std::size_t i : sharp)
+  {
+    const bool crowded = std::any_of(corners.begin(), corners.end(),
+                                     [&](std::size_t c)
+                                     {
+                                       const double along = std::abs(arc[i] - arc[c]);
+                                       return std::min(along, length - along) < 0.5 * spacing;
+                                     });
+    if (!crowded)
+      corners.push_back(i);
+  }
+  std::sort(corners.begin(), corners.end());
+  return corners;
+}
+
+Polygon2 resampleContourKeepingCorners(const Polygon2& contour, double spacing)
+{
+  if (!(spacing > 0.0) || contour.size() < 3 || !(perimeter(contour) > 0.0))
+    return contour;
+  // A small drawn contour keeps more of its points than a traced one: its shape is the anatomy.
+  spacing = std::min(spacing, perimeter(contour) / static_cast<double>(std::min(contour.size(), fewestDrawnPoints)));
+  const std::vector<std::size_t> corners = contourCorners(contour, spacing);
+  if (corners.empty())
+    return resampleContour(contour, spacing);
+  const std::size_t n = contour.size();
+  Polygon2 resampled;
+  for (std::size_t k = 0; k < corners.size(); ++k)
+  {
+    // The stretch from this corner to the next (round to the first), as an open polyline.
+    const std::size_t from = corners[k], to = corners[(k + 1) % corners.size()];
+    const std::size_t points = (to + n - from) % n == 0 ? n : (to + n - from) % n;
+    double length = 0.0;
+    for (std::size_t i = 0; i < points; ++i)
+      length += distance(contour[(from + i) % n], contour[(from + i + 1) % n]);
+    const std::size_t steps = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(length / spacing)));
+    const double step = length / static_cast<double>(steps);
+    resampled.push_back(contour[from]);
+    std::size_t edge = 0;
+    double edgeStart = 0.0;
+    double edgeLength = distance(contour[from], contour[(from + 1) % n]);
+    for (std::size_t j = 1; j < steps; ++j)
+    {
+      const double s = static_cast<double>(j) * step;
+      while (edgeStart + edgeLength < s && edge + 1 < points)
+      {
+        edgeStart += edgeLength;
+        ++edge;
+        edgeLength = distance(contour[(from + edge) % n], contour[(from + edge + 1) % n]);
+      }
+      const Point2& a = contour[(from + edge) % n];
+      const Point2& b = contour[(from + edge + 1) % n];
+      const double t = edgeLength > 0.0 ? std::clamp((s - edgeStart) / edgeLength, 0.0, 1.0) : 0.0;
+      resampled.push_back({ a.x + t * (b.x - a.x), a.y + t * (b.y - a.y) });
+    }
+  }
+  // A small contour keeps enough points for its shape, as resampleContour leaves it.
+  const std::size_t fewest = std::max<std::size_t>(3, std::min(contour.size(), fewestResampledPoints));
+  if (resampled.size() < fewest)
+    return resampled.size() * 2 >= fewest ? resampleContourKeepingCorners(contour, 0.5 * spacing) : contour;
+  return resampled;
+}
+
 Polygon2 resampleContourKeepingArea(const Polygon2& contour, double spacing)
 {
   Polygon2 resampled = resampleContour(contour, spacing);
@@ -52,10 +141,16 @@ Polygon2 resampleContourKeepingArea(const Polygon2& contour, double spacing)
   return resampled;
 }
 
-std::vector<Polygon2> resampleContours(const std::vector<Polygon2>& contours, double spacing, bool keepArea)
+std::vector<Polygon2> resampleContours(const std::vector<Polygon2>& contours, double spacing, ResampledShape shape)
 {
-  auto resample = [keepArea](const Polygon2& contour, double step) {
-    return keepArea ? resampleContourKeepingArea(contour, step) : resampleContour(contour, step);
+  auto resample = [shape](const Polygon2& contour, double step) {
+    switch (shape)
+    {
+      case ResampledShape::KeepingArea: return resampleContourKeepingArea(contour, step);
+      case ResampledShape::KeepingCorners: return resampleContourKeepingCorners(contour, step);
+      case ResampledShape::Chords: break;
+    }
+    return resampleContour(contour, step);
   };
   if (!(spacing > 0.0))
     return contours;
@@ -95,11 +190,11 @@ std::vector<Polygon2> resampleContours(const std::vector<Polygon2>& contours, do
   return result;
 }
 
-ContourStack resampleContours(const ContourStack& stack, double spacing, bool keepArea)
+ContourStack resampleContours(const ContourStack& stack, double spacing, ResampledShape shape)
 {
   ContourStack result = stack;
   for (Slice& slice : result.slices)
-    slice.contours = resampleContours(slice.contours, spacing, keepArea);
+    slice.contours = resampleContours(slice.contours, spacing, shape);
   return result;
 }
 

@@ -159,7 +159,34 @@ bool collapseSpoilsATriangle(const Mesh& mesh, Halfedge h)
   return false;
 }
 
-void collapseShortEdges(Mesh& mesh, const ConstrainedEdges& constrained, double low, double high)
+/** Whether the triangle of these three vertices would lie flat on a slice: all three on contours,
+ *  at one height. */
+bool flatOnContour(const Mesh& mesh, const ContourVertices* contour, Vertex a, Vertex b, Vertex c)
+{
+  return contour && contour->onContour[a] && contour->onContour[b] && contour->onContour[c] &&
+         mesh.point(a).z() == mesh.point(b).z() && mesh.point(b).z() == mesh.point(c).z();
+}
+
+/** Whether collapsing h's source into its target would leave a triangle flat on a slice
+ *  (flatOnContour) that was not. */
+bool collapseFlattens(const Mesh& mesh, Halfedge h, const ContourVertices* contour)
+{
+  if (!contour || !contour->onContour[mesh.target(h)])
+    return false;
+  const Vertex s = mesh.source(h), t = mesh.target(h);
+  for (Halfedge around : CGAL::halfedges_around_target(mesh.opposite(h), mesh))
+  {
+    if (mesh.is_border(around))
+      continue;
+    const Vertex a = mesh.target(mesh.next(around)), b = mesh.target(mesh.next(mesh.next(around)));
+    if (a != t && b != t && flatOnContour(mesh, contour, t, a, b) && !flatOnContour(mesh, contour, s, a, b))
+      return true;
+  }
+  return false;
+}
+
+void collapseShortEdges(Mesh& mesh, const ConstrainedEdges& constrained, double low, double high,
+                        const ContourVertices* contour)
 {
   const double squaredLow = low * low, squaredHigh = high * high;
   // Found once: a collapse never removes a held vertex nor makes one held (of the two edges it
@@ -168,8 +195,17 @@ void collapseShortEdges(Mesh& mesh, const ConstrainedEdges& constrained, double 
   for (Vertex v : mesh.vertices())
     heldVertex[v.idx()] = held(mesh, constrained, v);
   auto isHeld = [&](Vertex v) { return heldVertex[v.idx()] != 0; };
+  // A constrained edge from a sliding vertex goes into its other end: the line stays as it was.
+  auto slides = [&](Halfedge h)
+  {
+    return contour && constrained[mesh.edge(h)] && !mesh.is_border(mesh.edge(h)) &&
+           (contour->sliding[mesh.source(h)] || contour->sliding[mesh.target(h)]);
+  };
   auto collapseAllowed = [&](Halfedge h)
-  { return !constrainedOrBorder(mesh, constrained, mesh.edge(h)) && !(isHeld(mesh.source(h)) && isHeld(mesh.target(h))); };
+  {
+    return slides(h) ||
+           (!constrainedOrBorder(mesh, constrained, mesh.edge(h)) && !(isHeld(mesh.source(h)) && isHeld(mesh.target(h))));
+  };
   std::priority_queue<Waiting, std::vector<Waiting>, LongerFirstOut> waiting;
   auto wait = [&](Halfedge h)
   {
@@ -188,9 +224,10 @@ void collapseShortEdges(Mesh& mesh, const ConstrainedEdges& constrained, double 
     // h's source goes into its target: a held vertex stays.
     Halfedge h = w.halfedge;
     const bool sourceHeld = isHeld(mesh.source(h)), targetHeld = isHeld(mesh.target(h));
-    if (sourceHeld)
+    const bool alongLine = slides(h);
+    if (alongLine ? !contour->sliding[mesh.source(h)] : sourceHeld)
       h = mesh.opposite(h);
-    const bool eitherWay = !sourceHeld && !targetHeld;
+    const bool eitherWay = !alongLine && !sourceHeld && !targetHeld;
     // Whether an edge to the source's neighbours would grow past 4/3 of the target. The cheapest
     // test, first where the direction is settled (most short edges fail it).
     auto tooLong = [&](Halfedge into)
@@ -203,15 +240,18 @@ void collapseShortEdges(Mesh& mesh, const ConstrainedEdges& constrained, double 
     };
     if (!eitherWay && tooLong(h))
       continue;
-    if (collapseSpoilsATriangle(mesh, h))
+    auto spoils = [&](Halfedge into) { return collapseSpoilsATriangle(mesh, into) || collapseFlattens(mesh, into, contour); };
+    if (spoils(h))
     {
-      if (!eitherWay || collapseSpoilsATriangle(mesh, mesh.opposite(h)))
+      if (!eitherWay || spoils(mesh.opposite(h)))
         continue;
       h = mesh.opposite(h);
     }
     if ((eitherWay && tooLong(h)) || !CGAL::Euler::does_satisfy_link_condition(mesh.edge(h), mesh))
       continue;
     const Vertex kept = mesh.target(h);
+    if (alongLine)
+      constrained[mesh.edge(h)] = false; // it goes; CGAL's collapse takes no constrained edge
     // Merging the two edges of each removed triangle, the constrained one is the one kept.
     CGAL::Euler::collapse_edge(mesh.edge(h), mesh, constrained);
     for (Halfedge around : CGAL::halfedges_around_target(kept, mesh))
@@ -308,7 +348,7 @@ bool otherDiagonalExists(const Mesh& mesh, Halfedge h)
   return CGAL::halfedge(mesh.target(mesh.next(h)), mesh.target(mesh.next(mesh.opposite(h))), mesh).second;
 }
 
-void flipForValence(Mesh& mesh, const ConstrainedEdges& constrained)
+void flipForValence(Mesh& mesh, const ConstrainedEdges& constrained, const ContourVertices* contour)
 {
   std::vector<int> valence(mesh.num_vertices(), 0);
   for (Halfedge h : mesh.halfedges())
@@ -330,7 +370,7 @@ void flipForValence(Mesh& mesh, const ConstrainedEdges& constrained)
     const bool forValence = deviation(va - 1, vb - 1, vc + 1, vd + 1) < deviation(va, vb, vc, vd);
     if (!forValence && !badlyShaped(mesh, constrained, h) && !badlyShaped(mesh, constrained, mesh.opposite(h)))
       continue;
-    if (otherDiagonalExists(mesh, h))
+    if (flatOnContour(mesh, contour, c, d, a) || flatOnContour(mesh, contour, c, d, b) || otherDiagonalExists(mesh, h))
       continue;
     CGAL::Euler::flip_edge(h, mesh); // h now runs between c and d
     if (!(areaNormal(mesh, h) * areaNormal(mesh, mesh.opposite(h)) > 0.0) || degenerateAround(mesh, mesh.target(h)) ||
@@ -347,6 +387,59 @@ void flipForValence(Mesh& mesh, const ConstrainedEdges& constrained)
   }
 }
 
+/** The angle at c of the triangle a b c (radians). */
+double angleAt(const Point& c, const Point& a, const Point& b)
+{
+  const Vector u(c, a), v(c, b);
+  const double lengths = std::sqrt(u.squared_length() * v.squared_length());
+  return lengths > 0.0 ? std::acos(std::clamp(u * v / lengths, -1.0, 1.0)) : 0.0;
+}
+
+/** Flips, sweep after sweep (a few), the edges that are not locally Delaunay (the angles opposite
+ *  them sum to more than 180 degrees) between two triangles within coplanarDegrees of each other,
+ *  where the constraints allow and no triangle around turns over. Around a drawn contour the
+ *  valence flips leave the narrow triangles that a contour edge the passes may not touch makes
+ *  with a vertex beside it; flipped to Delaunay they widen. Only nearly flat quads: a flip across
+ *  a fold (a box's edge between two slices) would cut it. */
+void flipToDelaunay(Mesh& mesh, const ConstrainedEdges& constrained, const ContourVertices* contour)
+{
+  constexpr double coplanarDegrees = 20.0;
+  const double coplanarCosine = std::cos(coplanarDegrees * M_PI / 180.0);
+  for (int sweep = 0; sweep < 3; ++sweep)
+  {
+    bool flipped = false;
+    for (Edge e : mesh.edges())
+    {
+      if (!flipAllowed(mesh, constrained, e))
+        continue;
+      const Halfedge h = mesh.halfedge(e);
+      const Point& a = mesh.point(mesh.source(h));
+      const Point& b = mesh.point(mesh.target(h));
+      const Point& c = mesh.point(mesh.target(mesh.next(h)));
+      const Point& d = mesh.point(mesh.target(mesh.next(mesh.opposite(h))));
+      if (angleAt(c, a, b) + angleAt(d, a, b) <= M_PI + 1e-9)
+        continue;
+      const Vector n = areaNormal(mesh, h), m = areaNormal(mesh, mesh.opposite(h));
+      const Vertex vc = mesh.target(mesh.next(h)), vd = mesh.target(mesh.next(mesh.opposite(h)));
+      if (!(n * m > coplanarCosine * std::sqrt(n.squared_length() * m.squared_length())) ||
+          flatOnContour(mesh, contour, vc, vd, mesh.source(h)) || flatOnContour(mesh, contour, vc, vd, mesh.target(h)) ||
+          otherDiagonalExists(mesh, h))
+        continue;
+      CGAL::Euler::flip_edge(h, mesh); // h now runs between c and d
+      if (!(areaNormal(mesh, h) * areaNormal(mesh, mesh.opposite(h)) > 0.0) || degenerateAround(mesh, mesh.target(h)) ||
+          degenerateAround(mesh, mesh.source(h)) || !unfoldedAround(mesh, mesh.target(h)) ||
+          !unfoldedAround(mesh, mesh.source(h)))
+      {
+        CGAL::Euler::flip_edge(h, mesh);
+        continue;
+      }
+      flipped = true;
+    }
+    if (!flipped)
+      break;
+  }
+}
+
 } // namespace
 
 CgalKernel::Vector_3 areaNormal(const CgalSurfaceMesh& mesh, CgalSurfaceMesh::Halfedge_index h)
@@ -357,15 +450,18 @@ CgalKernel::Vector_3 areaNormal(const CgalSurfaceMesh& mesh, CgalSurfaceMesh::Ha
   return CGAL::cross_product(Vector(a, b), Vector(a, c));
 }
 
-void splitCollapseFlip(CgalSurfaceMesh& surface, const ConstrainedEdges& constrained, double targetEdgeLength)
+void splitCollapseFlip(CgalSurfaceMesh& surface, const ConstrainedEdges& constrained, double targetEdgeLength,
+                       const ContourVertices* contour)
 {
   const double low = 0.8 * targetEdgeLength, high = 4.0 / 3.0 * targetEdgeLength;
   bool hasConstraints = false;
   for (Edge e : surface.edges())
     hasConstraints = hasConstraints || constrainedOrBorder(surface, constrained, e);
   splitLongEdges(surface, constrained, hasConstraints, high);
-  collapseShortEdges(surface, constrained, low, high);
-  flipForValence(surface, constrained);
+  collapseShortEdges(surface, constrained, low, high, contour);
+  flipForValence(surface, constrained, contour);
+  if (contour) // drawn contours held
+    flipToDelaunay(surface, constrained, contour);
 }
 
 } // namespace slicemesh

@@ -2,6 +2,7 @@
 
 #include "Core/ParallelFor.h"
 #include "Core/SpatialHash.h"
+#include "Finishing/HeldContourEdges.h"
 #include "Finishing/PieceTargetVolumes.h"
 #include "Measures/ComponentOrientation.h"
 #include "Measures/MeshComponents.h"
@@ -81,6 +82,34 @@ std::size_t unsmoothCrossings(TriangleMesh& mesh, const std::vector<Point3>& uns
     validation = validateMesh(mesh, crossings);
   }
   return moved;
+}
+
+/** How far the vertices not held by drawn contours may move to give a piece its volume (mm): a
+ *  quarter of the slice spacing; 0 (unbounded) without held contours. On drawn contours only the
+ *  caps and the rows between the slices move, and a wall thinner than an edge has no more than a row
+ *  of vertices along each cap, which would be pushed far past the half slice to make up its volume. */
+double heldOffset(const SurfaceFinishingOptions& options)
+{
+  if (!options.heldContours)
+    return 0.0;
+  const ContourStack& stack = *options.heldContours;
+  double spacing = stack.sliceSpacing;
+  if (!(spacing > 0.0) && stack.slices.size() > 1)
+    spacing = (stack.slices.back().z - stack.slices.front().z) / static_cast<double>(stack.slices.size() - 1);
+  return spacing > 0.0 ? 0.25 * spacing : options.remeshing.targetEdgeLength;
+}
+
+/** A piece held on drawn contours that ends further than this from its volume (a fraction of it)
+ *  is finished again without them. A thin wall's caps leave it a few percent short (a 2 mm shell
+ *  1-3%, its caps a row of vertices each); a disc 2 mm across drawn in one slice, all caps, more
+ *  than half. */
+constexpr double heldVolumeShortfall = 0.1;
+
+/** The vertices of `mesh` on the held contours (SurfaceFinishingOptions::heldContours), a flag per
+ *  vertex; empty without held contours. */
+std::vector<char> heldVertices(const TriangleMesh& mesh, const SurfaceFinishingOptions& options)
+{
+  return options.heldContours ? heldContourEdges(mesh, *options.heldContours).vertices : std::vector<char>();
 }
 
 } // namespace
@@ -278,9 +307,11 @@ FinishedPiece smoothedRemesh(TriangleMesh remeshed, const SurfaceFinishingOption
   const std::vector<Point3> unsmoothed = remeshed.points; // smoothing moves points only
   const std::vector<char> leftAsTiled =
     crossedOthers.empty() ? std::vector<char>() : verticesNear(remeshed, crossedOthers, keptRadius(options));
-  smoothSurface(remeshed, options.smoothing, threads);
-  // The remesh's chords cut the corners of structures a few edges across: the piece gets its volume back.
-  offsetToVolume(remeshed, volume);
+  const std::vector<char> held = heldVertices(remeshed, options);
+  smoothSurface(remeshed, options.smoothing, threads, held);
+  // The remesh's chords cut the corners of structures a few edges across: the piece gets its volume
+  // back (on drawn contours, as far as heldOffset lets it).
+  offsetToVolume(remeshed, volume, held, heldOffset(options));
   // After the offset, which would move them too (outwards: towards the other piece).
   std::size_t unsmoothedVertices = leftAsTiled.empty() ? 0 : unsmooth(remeshed, unsmoothed, leftAsTiled);
   std::vector<std::pair<std::size_t, std::size_t>> crossings;
@@ -334,8 +365,8 @@ std::optional<FinishedPiece> remeshedAround(const TriangleMesh& tiled, const Mes
     std::optional<FinishedPiece> around;
     try
     {
-      around = smoothedRemesh(remeshSurfaceAround(tiled, keep, options.remeshing, threads), options, volume, threads,
-                              places.crossedOthers);
+      around = smoothedRemesh(remeshSurfaceAround(tiled, keep, options.remeshing, threads, options.heldContours.get()),
+                              options, volume, threads, places.crossedOthers);
     }
     catch (const std::exception&) // the triangles around the kept ones are no manifold surface
     {
@@ -369,7 +400,8 @@ std::optional<FinishedPiece> remeshedPiece(const TriangleMesh& tiled, const Mesh
   std::optional<FinishedPiece> piece;
   try
   {
-    piece = smoothedRemesh(remeshSurface(tiled, options.remeshing, threads), options, volume, threads);
+    piece = smoothedRemesh(remeshSurface(tiled, options.remeshing, threads, options.heldContours.get()), options, volume,
+                           threads);
   }
   catch (const std::exception& e) // ours, or a CGAL precondition the piece does not meet
   {
@@ -416,15 +448,26 @@ FinishedPiece finishPiece(const TriangleMesh& tiled, const MeshValidation& refer
     // length, where a gap narrower than the edge makes the remesh cross itself, rescued the large
     // pieces of noisy k-means labels but cost 80 s and 1.4 million triangles there: not what was asked.)
     std::string why;
-    if (std::optional<FinishedPiece> remeshed =
-          remeshedPiece(tiled, reference, options, volumeScale * reference.volume, threads, why))
+    const double volume = volumeScale * reference.volume;
+    std::optional<FinishedPiece> remeshed = remeshedPiece(tiled, reference, options, volume, threads, why);
+    if (remeshed && options.heldContours && std::abs(remeshed->validation.volume - volume) > heldVolumeShortfall * std::abs(volume))
+    {
+      // Held on its contours it cannot hold its volume (a structure a few millimetres across in one
+      // slice, whose caps are most of it): finished as a mask's surface is, its contours not held.
+      SurfaceFinishingOptions free = options;
+      free.heldContours.reset();
+      remeshed.reset();
+      remeshed = remeshedPiece(tiled, reference, free, volume, threads, why);
+    }
+    if (remeshed)
       return std::move(*remeshed);
     result.why = "remeshed: " + why;
   }
   TriangleMesh smoothed = tiled;
-  smoothSurface(smoothed, options.smoothing, threads);
+  const std::vector<char> held = heldVertices(tiled, options);
+  smoothSurface(smoothed, options.smoothing, threads, held);
   if (volumeScale != 1.0 && options.smoothing.iterations > 0) // no iterations asked: the tiling itself
-    offsetToVolume(smoothed, volumeScale * reference.volume);
+    offsetToVolume(smoothed, volumeScale * reference.volume, held, heldOffset(options));
   std::vector<std::pair<std::size_t, std::size_t>> crossings;
   MeshValidation validation = validateMesh(smoothed, crossings);
   const std::size_t unsmoothedVertices = unsmoothCrossings(smoothed, tiled.points, validation, crossings);
@@ -456,6 +499,9 @@ FinishedPiece finishedSpeck(const TriangleMesh& tiled, const MeshValidation& ref
   if (options.finish == SurfaceFinish::Remeshed)
   {
     SurfaceFinishingOptions ownScale = options;
+    // A speck's contours are not held: its caps are most of it, too few vertices to give it its
+    // volume (a disc 2 mm across in one slice is tiled at under half its slab) if its contour stays.
+    ownScale.heldContours.reset();
     ownScale.remeshing.targetEdgeLength = speckEdgeLength(tiled, reference, options.remeshing.targetEdgeLength);
     ownScale.remeshing.projectEachRound = true;
     std::string why;

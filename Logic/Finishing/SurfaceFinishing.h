@@ -9,6 +9,7 @@
 #include "Finishing/SurfaceSmoothing.h"
 
 #include <array>
+#include <memory>
 #include <string>
 
 namespace slicemesh
@@ -27,6 +28,11 @@ struct SurfaceFinishingOptions
   SurfaceFinish finish = SurfaceFinish::Remeshed;
   SurfaceSmoothingOptions smoothing;
   SurfaceRemeshingOptions remeshing;
+  /** Drawn contours the finished surface passes through (a structure set's, in the tiling's frame;
+   *  none for a mask, whose traced contours are a staircase to smooth away). The tiling's edges
+   *  along them (HeldContourEdges.h) are kept by the remesh, and their vertices by the smoothing and
+   *  the volume offset: only the surface between the slices and the caps is finished. */
+  std::shared_ptr<const ContourStack> heldContours;
 };
 
 struct FinishedSurface

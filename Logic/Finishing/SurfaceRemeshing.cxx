@@ -2,6 +2,7 @@
 
 #include "Core/AreaNormal.h"
 #include "Core/ParallelFor.h"
+#include "Finishing/HeldContourEdges.h"
 #include "Finishing/RemeshingPasses.h"
 #include "Finishing/RemeshingRegions.h"
 #include "Finishing/TriangleMeshTree.h"
@@ -298,10 +299,10 @@ void projectOntoInput(SurfaceMesh& surface, PointMap onInput, const Tree& tree, 
  *  (the ring around them kept as their border) and their vertices, with those the round adds,
  *  relaxed and projected onto the input. Only there: a round over the whole region cost 4-5% of a
  *  run for the few places that need it. */
-template <typename PointMap>
+template <typename PointMap, typename HeldMap>
 void remeshAroundNarrowTriangles(SurfaceMesh& surface,
                                  const SurfaceMesh::Property_map<SurfaceMesh::Edge_index, bool>& constrained,
-                                 double targetEdgeLength, PointMap onInput, const Tree& tree,
+                                 double targetEdgeLength, PointMap onInput, HeldMap heldOnContour, const Tree& tree,
                                  unsigned int threads)
 {
   const std::vector<Vertex> collapsed = collapseNarrowEdges(surface, constrained, targetEdgeLength);
@@ -350,7 +351,7 @@ void remeshAroundNarrowTriangles(SurfaceMesh& surface,
   surface.collect_garbage();
   std::vector<char> moving(surface.number_of_vertices());
   for (Vertex v : surface.vertices())
-    moving[v.idx()] = inPatch[v];
+    moving[v.idx()] = inPatch[v] && !heldOnContour[v];
   surface.remove_property_map(inPatch);
   relaxTangentially(surface, threads, &moving);
   projectOntoInput(surface, onInput, tree, threads, &moving);
@@ -366,7 +367,7 @@ void remeshAroundNarrowTriangles(SurfaceMesh& surface,
  *  border, where it meets the rest of the piece, is kept exactly: its edges are neither split nor
  *  collapsed, its vertices not moved. Throws Error if the region does not fit a manifold surface. */
 MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions& options, const Tree& tree,
-                        unsigned int threads)
+                        unsigned int threads, const ContourStack* heldContours)
 {
   SurfaceMesh surface = surfaceOf(region.mesh);
   auto origin = surface.add_property_map<Vertex, std::int32_t>("v:origin", -1).first;
@@ -384,19 +385,56 @@ MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions&
           for (SurfaceMesh::Halfedge_index h : CGAL::halfedges_around_face(surface.halfedge(f), surface))
             constrained[surface.edge(h)] = true;
     }
+  // Drawn contours: their edges are constrained and their vertices neither relaxed nor projected
+  // (the passes keep a constrained edge's vertices where they are).
+  auto heldOnContour = surface.add_property_map<Vertex, bool>("v:held_on_contour", false).first;
+  // A point on a straight stretch of a contour (above all a crossing point the tiling put on a
+  // contour edge, a fraction of an edge from its end) may merge into a neighbour along it, away from
+  // the region's border: the contour stays as drawn.
+  auto slidingOnContour = surface.add_property_map<Vertex, bool>("v:sliding_on_contour", false).first;
+  if (heldContours)
+  {
+    const HeldContourEdges held = heldContourEdges(region.mesh, *heldContours);
+    for (Vertex v : surface.vertices())
+    {
+      heldOnContour[v] = held.vertices[v.idx()] != 0;
+      bool nearBorder = false;
+      for (SurfaceMesh::Halfedge_index h : CGAL::halfedges_around_target(v, surface))
+        nearBorder = nearBorder || constrained[surface.edge(h)];
+      slidingOnContour[v] = held.straight[v.idx()] != 0 && !nearBorder;
+    }
+    for (const auto& [a, b] : held.edges)
+    {
+      const SurfaceMesh::Halfedge_index h = surface.halfedge(Vertex(static_cast<SurfaceMesh::size_type>(a)),
+                                                             Vertex(static_cast<SurfaceMesh::size_type>(b)));
+      if (h != SurfaceMesh::null_halfedge())
+        constrained[surface.edge(h)] = true;
+    }
+  }
+  const ContourVertices contourVertices{ heldOnContour, slidingOnContour };
+  std::vector<char> movable;
+  auto freeVertices = [&]() -> const std::vector<char>*
+  {
+    if (!heldContours)
+      return nullptr;
+    movable.assign(surface.number_of_vertices(), 0);
+    for (Vertex v : surface.vertices())
+      movable[v.idx()] = !heldOnContour[v];
+    return &movable;
+  };
   // Every vertex starts on the input piece (the tiling, or slabs already projected onto it).
   auto onInput = surface.add_property_map<Vertex, Kernel::Point_3>("v:on_input", unknownPoint()).first;
   for (Vertex v : surface.vertices())
     onInput[v] = surface.point(v);
   for (int round = 0; round < options.iterations; ++round)
   {
-    splitCollapseFlip(surface, constrained, options.targetEdgeLength);
+    splitCollapseFlip(surface, constrained, options.targetEdgeLength, heldContours ? &contourVertices : nullptr);
     surface.collect_garbage(); // the next round's face index map must be dense
-    relaxTangentially(surface, threads);
+    relaxTangentially(surface, threads, freeVertices());
     if (options.projectEachRound || round + 1 == options.iterations)
-      projectOntoInput(surface, onInput, tree, threads);
+      projectOntoInput(surface, onInput, tree, threads, freeVertices());
   }
-  remeshAroundNarrowTriangles(surface, constrained, options.targetEdgeLength, onInput, tree, threads);
+  remeshAroundNarrowTriangles(surface, constrained, options.targetEdgeLength, onInput, heldOnContour, tree, threads);
   MeshRegion result;
   result.mesh = toTriangleMesh(surface);
   for (Vertex v : surface.vertices())
@@ -408,7 +446,7 @@ MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions&
  *  remeshed is kept as it was when `keepFailed`, else the whole call throws. */
 TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& regionOf, int count,
                            const SurfaceRemeshingOptions& options, const Tree& tree, unsigned int threads,
-                           bool keepFailed)
+                           bool keepFailed, const ContourStack* heldContours)
 {
   std::vector<MeshRegion> regions(static_cast<std::size_t>(count));
   parallelFor(regions.size(), threads,
@@ -417,7 +455,7 @@ TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& reg
                 const MeshRegion region = extractRegion(mesh, regionOf, static_cast<int>(r));
                 try
                 {
-                  regions[r] = remeshRegion(region, options, tree, 1);
+                  regions[r] = remeshRegion(region, options, tree, 1, heldContours);
                 }
                 catch (const std::exception&)
                 {
@@ -455,7 +493,8 @@ constexpr double slabEdges = 2.0 * bandRings * 4.0 / 3.0 + 2.0;
 /** Remeshes one connected, closed piece, projecting onto it. A large piece is remeshed in slabs
  *  side by side, their seams kept, then in bands around the seams, side by side, so that no trace of
  *  the seams is left; the slabs and bands depend on the piece only, never on the threads. */
-TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads)
+TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads,
+                         const ContourStack* heldContours)
 {
   Tree tree;
   buildTreeOf(mesh, tree);
@@ -469,24 +508,25 @@ TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions
     MeshRegion whole{ mesh, {} };
     for (std::size_t v = 0; v < mesh.points.size(); ++v)
       whole.origin.push_back(static_cast<std::int32_t>(v));
-    return remeshRegion(whole, options, tree, threads).mesh;
+    return remeshRegion(whole, options, tree, threads, heldContours).mesh;
   }
   TriangleMesh slabbed;
   try
   {
-    slabbed = remeshRegions(mesh, slabOf, slabs, options, tree, threads, /*keepFailed=*/false);
+    slabbed = remeshRegions(mesh, slabOf, slabs, options, tree, threads, /*keepFailed=*/false, heldContours);
   }
   catch (const std::exception&) // a slab that is no manifold surface on its own (two fans at a vertex)
   {
     SurfaceRemeshingOptions whole = options;
     whole.trianglesPerRegion = 0;
-    return remeshPiece(mesh, whole, threads);
+    return remeshPiece(mesh, whole, threads, heldContours);
   }
   std::vector<char> seam = seamVertices(mesh, slabOf); // the slabs' own vertices come after the piece's
   seam.resize(slabbed.points.size(), 0);
   int bands = 0;
   const std::vector<int> bandOf = seamBands(slabbed, seam, bandRings, bands);
-  const TriangleMesh banded = remeshRegions(slabbed, bandOf, bands, options, tree, threads, /*keepFailed=*/true);
+  const TriangleMesh banded =
+    remeshRegions(slabbed, bandOf, bands, options, tree, threads, /*keepFailed=*/true, heldContours);
   slabbed = TriangleMesh(); // not held beside the banded mesh and its copy without unused vertices
   return withoutUnusedVertices(banded);
 }
@@ -502,7 +542,8 @@ bool remeshingAsked(const TriangleMesh& mesh, const SurfaceRemeshingOptions& opt
 
 } // namespace
 
-TriangleMesh remeshSurface(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads)
+TriangleMesh remeshSurface(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads,
+                           const ContourStack* heldContours)
 {
   if (!remeshingAsked(mesh, options))
     return mesh;
@@ -511,10 +552,10 @@ TriangleMesh remeshSurface(const TriangleMesh& mesh, const SurfaceRemeshingOptio
   std::size_t components = 0;
   vertexComponents(mesh, components);
   if (components == 1)
-    return remeshPiece(mesh, options, threads);
+    return remeshPiece(mesh, options, threads, heldContours);
   std::vector<TriangleMesh> pieces = splitIntoPieces(mesh);
   for (TriangleMesh& piece : pieces)
-    piece = remeshPiece(piece, options, threads);
+    piece = remeshPiece(piece, options, threads, heldContours);
   if (pieces.size() == 1)
     return std::move(pieces.front());
   std::vector<const TriangleMesh*> remeshed;
@@ -524,7 +565,8 @@ TriangleMesh remeshSurface(const TriangleMesh& mesh, const SurfaceRemeshingOptio
 }
 
 TriangleMesh remeshSurfaceAround(const TriangleMesh& mesh, const std::vector<char>& keep,
-                                 const SurfaceRemeshingOptions& options, unsigned int threads)
+                                 const SurfaceRemeshingOptions& options, unsigned int threads,
+                                 const ContourStack* heldContours)
 {
   if (keep.size() != mesh.triangles.size())
     throw Error("surface remeshing: one keep flag per triangle is needed");
@@ -537,7 +579,7 @@ TriangleMesh remeshSurfaceAround(const TriangleMesh& mesh, const std::vector<cha
     regionOf[t] = keep[t] ? -1 : 0;
   // One region: the kept triangles are few and scattered, and the region's border around them is
   // kept exactly, as between slabs.
-  const std::vector<MeshRegion> remeshed{ remeshRegion(extractRegion(mesh, regionOf, 0), options, tree, threads) };
+  const std::vector<MeshRegion> remeshed{ remeshRegion(extractRegion(mesh, regionOf, 0), options, tree, threads, heldContours) };
   return withoutUnusedVertices(reassembleRegions(mesh, regionOf, remeshed));
 }
 

@@ -37,8 +37,11 @@ struct SurfaceRemeshingOptions
  *  projected back onto the input surface (Botsch and Kobbelt's method, by the rules of CGAL's
  *  Polygon_mesh_processing::isotropic_remeshing). The topology is kept. Throws Error if the mesh is
  *  not a manifold surface CGAL can hold. The relaxation's targets and the projection run on `threads`
- *  threads (0: every core), vertex by vertex, so the result does not depend on the number. */
-TriangleMesh remeshSurface(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads = 1);
+ *  threads (0: every core), vertex by vertex, so the result does not depend on the number. With
+ *  `heldContours`, the mesh's edges along them (HeldContourEdges.h) are neither split, collapsed nor
+ *  flipped and their vertices not moved: the remesh cannot cut across a drawn corner or slot. */
+TriangleMesh remeshSurface(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads = 1,
+                           const ContourStack* heldContours = nullptr);
 
 /** remeshSurface of one connected piece, except that the triangles flagged in `keep` (one flag per
  *  triangle) stay as they are, with their vertices; the rest is remeshed around them, its border
@@ -46,7 +49,8 @@ TriangleMesh remeshSurface(const TriangleMesh& mesh, const SurfaceRemeshingOptio
  *  an edge: there the input's triangles are kept. Throws Error as remeshSurface does, and if the
  *  triangles not kept do not fit a manifold surface (two of them meeting at a vertex only). */
 TriangleMesh remeshSurfaceAround(const TriangleMesh& mesh, const std::vector<char>& keep,
-                                 const SurfaceRemeshingOptions& options, unsigned int threads = 1);
+                                 const SurfaceRemeshingOptions& options, unsigned int threads = 1,
+                                 const ContourStack* heldContours = nullptr);
 
 /** The edge length at which an isotropic remesh has about as many triangles as flying edges makes on
  *  a grid of this spacing (mm): sqrt(3 / (1/(sx sy) + 1/(sx sz) + 1/(sy sz))), the spacing itself

@@ -201,9 +201,11 @@ void umbrellaStep(std::vector<Point3>& points, const VertexNeighbours& neighbour
   points.swap(scratch);
 }
 
-/** Signed volume and area of every component (by the component of each triangle's first vertex). */
+/** Signed volume and area of every component (by the component of each triangle's first vertex).
+ *  With `held` (a flag per vertex, not empty), each triangle's area counts by the share of its
+ *  corners not held: the volume an offset of the others gains per unit. */
 void measureComponents(const TriangleMesh& mesh, const std::vector<std::size_t>& component, std::vector<double>& volume,
-                       std::vector<double>& area)
+                       std::vector<double>& area, const std::vector<char>& held = {})
 {
   std::fill(volume.begin(), volume.end(), 0.0);
   std::fill(area.begin(), area.end(), 0.0);
@@ -213,7 +215,12 @@ void measureComponents(const TriangleMesh& mesh, const std::vector<std::size_t>&
     const Point3& a = mesh.points[t[0]];
     const std::size_t k = component[static_cast<std::size_t>(t[0])];
     volume[k] += (a.x * n.x + a.y * n.y + a.z * n.z) / 6.0;
-    area[k] += 0.5 * std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+    double share = 1.0;
+    if (!held.empty())
+      share = static_cast<double>(3 - (held[static_cast<std::size_t>(t[0])] != 0) -
+                                  (held[static_cast<std::size_t>(t[1])] != 0) -
+                                  (held[static_cast<std::size_t>(t[2])] != 0)) / 3.0;
+    area[k] += share * 0.5 * std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
   }
 }
 
@@ -412,16 +419,22 @@ bool relaxAroundNarrowTriangles(std::vector<Point3>& points, const TriangleMesh&
  *  normals by one common distance (a few Newton steps: the volume grows by the area per unit of
  *  offset). Taubin's filter keeps large shapes, but shrinks a structure a few edges across, whose
  *  whole shape lies above the pass band: a vessel two voxels wide would lose half its volume. */
-void restoreVolumes(TriangleMesh& mesh, const std::vector<std::size_t>& component, const std::vector<double>& target)
+void restoreVolumes(TriangleMesh& mesh, const std::vector<std::size_t>& component, const std::vector<double>& target,
+                    const std::vector<char>& held = {}, double maxOffset = 0.0)
 {
-  std::vector<double> volume(target.size()), area(target.size()), offset(target.size());
+  std::vector<double> volume(target.size()), area(target.size()), offset(target.size()), total(target.size(), 0.0);
   for (int step = 0; step < 4; ++step)
   {
-    measureComponents(mesh, component, volume, area);
+    measureComponents(mesh, component, volume, area, held);
     bool done = true;
     for (std::size_t k = 0; k < target.size(); ++k)
     {
       offset[k] = area[k] > 0.0 ? (target[k] - volume[k]) / area[k] : 0.0;
+      if (maxOffset > 0.0)
+      {
+        offset[k] = std::clamp(offset[k], -maxOffset - total[k], maxOffset - total[k]);
+        total[k] += offset[k];
+      }
       done = done && std::abs(target[k] - volume[k]) <= 1e-9 * std::abs(target[k]);
     }
     if (done)
@@ -429,6 +442,8 @@ void restoreVolumes(TriangleMesh& mesh, const std::vector<std::size_t>& componen
     const std::vector<Point3> normals = vertexNormals(mesh);
     for (std::size_t v = 0; v < mesh.points.size(); ++v)
     {
+      if (!held.empty() && held[v])
+        continue;
       const double d = offset[component[v]];
       mesh.points[v].x += d * normals[v].x;
       mesh.points[v].y += d * normals[v].y;
@@ -468,14 +483,15 @@ bool relaxNarrowTriangles(TriangleMesh& mesh, const std::vector<Point3>& start, 
                                     bound, options.narrowTriangleRelaxations, 1, fixed);
 }
 
-void offsetToVolume(TriangleMesh& mesh, double volume)
+void offsetToVolume(TriangleMesh& mesh, double volume, const std::vector<char>& held, double maxOffset)
 {
   if (mesh.triangles.empty())
     return;
-  restoreVolumes(mesh, std::vector<std::size_t>(mesh.points.size(), 0), { volume });
+  restoreVolumes(mesh, std::vector<std::size_t>(mesh.points.size(), 0), { volume }, held, maxOffset);
 }
 
-void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, unsigned int threads)
+void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, unsigned int threads,
+                   const std::vector<char>& held)
 {
   if (options.iterations <= 0 || mesh.triangles.empty())
     return;
@@ -508,11 +524,26 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
   std::vector<Point3> points = start, scratch(order.size());
   const DisplacementBound free(start, {}, false);
   DisplacementBound bound(start, options.maxDisplacement, bounded);
+  // Vertices held where they are (drawn contours' own), by row; put back after every step.
+  std::vector<char> heldRow(held.empty() ? 0 : order.size(), 0);
+  std::vector<std::size_t> heldRows;
+  for (std::size_t r = 0; r < heldRow.size(); ++r)
+    if (held[static_cast<std::size_t>(order[r])])
+    {
+      heldRow[r] = 1;
+      heldRows.push_back(r);
+    }
+  auto putBackHeld = [&]()
+  {
+    for (std::size_t r : heldRows)
+      points[r] = start[r];
+  };
   const int wholePairs = pairsBeforeFeaturesHeld(options);
   for (int i = 0; i < wholePairs; ++i)
   {
     umbrellaStep(points, neighbours, lambda, scratch, free, threads);
     umbrellaStep(points, neighbours, mu, scratch, bound, threads); // the bound is checked after every pair
+    putBackHeld();
   }
   const RowTriangles around = trianglesOfRows(mesh, rank);
   std::vector<char> sharp;
@@ -523,27 +554,32 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
     // alike, and is put back after it: held through both, a feature pulled its neighbours outwards
     // in every inflating step (a torus's mean distance 7% up, where this gives 2.5% down).
     sharp = sharpFeatureRows(points, mesh, rank, around, options.featureAngle, 2, threads);
-    std::vector<std::size_t> heldRows;
+    std::vector<std::size_t> featureRows;
     for (std::size_t r = 0; r < sharp.size(); ++r)
       if (sharp[r])
-        heldRows.push_back(r);
-    std::vector<Point3> heldAt(heldRows.size());
-    for (std::size_t i = 0; i < heldRows.size(); ++i)
-      heldAt[i] = points[heldRows[i]];
+        featureRows.push_back(r);
+    std::vector<Point3> heldAt(featureRows.size());
+    for (std::size_t i = 0; i < featureRows.size(); ++i)
+      heldAt[i] = points[featureRows[i]];
     bound.holdFeatures(sharp, boundAwayFromFeatures(options)); // the relaxation below keeps the plain bound on them
     for (int i = wholePairs; i < options.iterations; ++i)
     {
       umbrellaStep(points, neighbours, lambda, scratch, free, threads);
       umbrellaStep(points, neighbours, mu, scratch, bound, threads);
-      for (std::size_t k = 0; k < heldRows.size(); ++k)
-        points[heldRows[k]] = heldAt[k];
+      for (std::size_t k = 0; k < featureRows.size(); ++k)
+        points[featureRows[k]] = heldAt[k];
+      putBackHeld();
     }
   }
   // The filter moves vertices along the surface too, and where it folds sharply (a tract a voxel or
   // two thick) it crowds them: triangles it leaves with small angles, relaxed back along the surface.
   for (int i = 0; i < options.tangentialRelaxations; ++i)
+  {
     tangentialStep(points, mesh, rank, around, neighbours, scratch, bound, threads);
-  relaxAroundNarrowTriangles(points, mesh, rank, neighbours, around, bound, options.narrowTriangleRelaxations, threads);
+    putBackHeld();
+  }
+  relaxAroundNarrowTriangles(points, mesh, rank, neighbours, around, bound, options.narrowTriangleRelaxations, threads,
+                             heldRow);
   for (std::size_t i = 0; i < order.size(); ++i)
     mesh.points[static_cast<std::size_t>(order[i])] = points[i];
   // A component a few edges across has no shape below the pass band: the filter collapses it, and
@@ -557,7 +593,10 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
   for (std::size_t v = 0; v < mesh.points.size(); ++v)
     if (collapsed[component[v]])
       mesh.points[v] = start[static_cast<std::size_t>(rank[v])];
-  restoreVolumes(mesh, component, volume);
+  // Held vertices leave the others to make up the volume, and where they are few (the cap of a wall
+  // thinner than an edge) no further than the filter's own bound.
+  restoreVolumes(mesh, component, volume, held,
+                 held.empty() ? 0.0 : *std::max_element(options.maxDisplacement.begin(), options.maxDisplacement.end()));
 }
 
 } // namespace slicemesh

@@ -69,9 +69,12 @@ std::array<double, 3> boundAwayFromFeatures(const SurfaceSmoothingOptions& optio
  *  under the filter). A component that lost half its volume or more (a speck the filter collapses)
  *  keeps its unsmoothed vertices instead. The connectivity is not changed. The vertices are moved on
  *  `threads` threads (0: every core), each from the previous step's positions, so the result does
- *  not depend on the number.
+ *  not depend on the number. The vertices flagged in `held` (one flag per vertex; empty: none) take
+ *  each step pair and are put back after it, as sharp features are, and neither the relaxation nor
+ *  the volume offset moves them: a drawn contour's vertices stay on it.
  *  G. Taubin, "A signal processing approach to fair surface design", SIGGRAPH 1995. */
-void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, unsigned int threads = 1);
+void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, unsigned int threads = 1,
+                   const std::vector<char>& held = {});
 
 /** Only the relaxation around narrow triangles of smoothSurface (options.narrowTriangleRelaxations
  *  steps, options.maxDisplacement around `start`, one point per vertex), with the vertices flagged
@@ -82,8 +85,11 @@ bool relaxNarrowTriangles(TriangleMesh& mesh, const std::vector<Point3>& start, 
 
 /** Moves every vertex of a closed, consistently oriented mesh along its vertex normal by one common
  *  distance so that its signed volume becomes `volume` (a few Newton steps: the volume grows by the
- *  area per unit of offset). For one connected piece; offsets large against the mesh's features fold it. */
-void offsetToVolume(TriangleMesh& mesh, double volume);
+ *  area per unit of offset). For one connected piece; offsets large against the mesh's features fold
+ *  it. The vertices flagged in `held` (empty: none) stay; the others move by the distance that gives
+ *  the volume with them held, but no farther than `maxOffset` (mm; 0: unbounded): where few vertices
+ *  are free the volume is then not reached. */
+void offsetToVolume(TriangleMesh& mesh, double volume, const std::vector<char>& held = {}, double maxOffset = 0.0);
 
 } // namespace slicemesh
 

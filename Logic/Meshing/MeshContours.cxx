@@ -6,6 +6,7 @@
 #include "Core/ParallelFor.h"
 
 #include <future>
+#include <memory>
 #include <utility>
 
 namespace slicemesh
@@ -95,8 +96,13 @@ void runMeshingStage(MeshingStage stage, MeshedContours& meshing, const std::fun
       std::future<DirichletEnergy> tilingEnergy =
         std::async(threadCount(meshing.options.threads) > 1 ? std::launch::async : std::launch::deferred,
                    [&meshing] { return measureDirichletEnergy(meshing.tiling, meshing.stack); });
+      // Drawn contours are the anatomy: the finished surface passes through the contours it was tiled
+      // from (held for the finishing only: the stack outlives it).
+      SurfaceFinishingOptions finishing = meshing.options.finishing;
+      if (meshing.options.drawnContours)
+        finishing.heldContours = std::shared_ptr<const ContourStack>(std::shared_ptr<void>(), &meshing.stack);
       meshing.surface =
-        finishSurface(meshing.tiling, meshing.tilingValidation, meshing.options.finishing, meshing.options.threads,
+        finishSurface(meshing.tiling, meshing.tilingValidation, finishing, meshing.options.threads,
                       meshing.sections.sectionsInserted == 0 ? meshing.targetVolume : 0.0, meshing.targetShares);
       measure(meshing, tilingEnergy.get());
       break;

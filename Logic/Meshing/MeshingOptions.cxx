@@ -9,6 +9,7 @@ MeshingOptions resolvedMeshingOptions(const MeshingOptions& options, const std::
 {
   MeshingOptions resolved = options;
   resolved.contours = resolvedContourPreparation(options.contours, spacing);
+  resolved.contours.keepCorners = resolved.contours.keepCorners || options.drawnContours;
   // The library's finishing for this grid (the automatic edge length, smoothing that moves no vertex
   // farther than a fraction of a voxel), with the given choices on top.
   SurfaceFinishingOptions& finishing = resolved.finishing;
@@ -32,6 +33,12 @@ MeshingOptions resolvedMeshingOptions(const MeshingOptions& options, const std::
   // walls, which the tiling meshes cheaply; resampled, they cross everywhere, and an atlas at 1 mm
   // took three times as long to tile.
   const double pixel = std::min(spacing[0], spacing[1]);
+  // Drawn contours keep their points through the finishing: spaced a target edge apart, so that the
+  // remesh around their edges (which it does not touch) makes no narrow triangles. Their own
+  // spacing (x, y) is the pixel side, shorter than the edge between thicker slices.
+  if (options.drawnContours && !(resolved.contours.pointSpacing > 0.0))
+    resolved.contours.pointSpacing =
+      finishing.finish == SurfaceFinish::Remeshed ? std::max(pixel, finishing.remeshing.targetEdgeLength) : pixel;
   if (finishing.finish == SurfaceFinish::Remeshed && !(resolved.contours.pointSpacing > 0.0) &&
       spacing[2] >= resampledSliceRatio * pixel)
     resolved.contours.pointSpacing = remeshedContourSpacing * finishing.remeshing.targetEdgeLength;

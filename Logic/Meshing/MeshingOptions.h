@@ -26,6 +26,10 @@ struct MeshingOptions
   /** Threads for the work inside one structure (its connected pieces, the self-intersection check);
    *  0: every core. The mesh does not depend on it. */
   unsigned int threads = 0;
+  /** The contours are drawn (a structure set's), not traced from a mask: they are the anatomy as
+   *  drawn, so they are resampled keeping their corners (ContourPreparationOptions::keepCorners) and
+   *  the finished surface passes through them (SurfaceFinishingOptions::heldContours). */
+  bool drawnContours = false;
 };
 
 /** The contour point spacing of a remeshed surface, in target edge lengths, when none is given and

@@ -305,7 +305,7 @@ Layer sectionOf(const ShearedFit& fit, double z, double s, double h)
   // resampled to the stack's point spacing, keeping the area, a section is sampled like the slices,
   // with half the triangles and none of the folded pairs that the hair-thin edges made (measured:
   // 18 folded edges on the 5 mm capsule and 3 on the 2 mm helix before, 0 after).
-  return resampleContours(layer, h, true);
+  return resampleContours(layer, h, ResampledShape::KeepingArea);
 }
 
 /** The smallest share of the smaller region by which corresponding regions (the unions of the

@@ -335,7 +335,43 @@ TEST(ContourResampling, KeepingTheAreaUndoesTheChordsCut)
     EXPECT_LT(std::abs(std::hypot(p.x, p.y) - 10.0), 2.0 * 2.0 / (8.0 * 10.0));
   // Through the slice version: crossing-free as before.
   const std::vector<Polygon2> ring = { circle(0, 0, 10, 400), circle(0, 0, 9.7, 400, true) };
-  EXPECT_TRUE(contourCrossings(resampleContours(ring, 8.0, /*keepArea=*/true)).empty());
+  EXPECT_TRUE(contourCrossings(resampleContours(ring, 8.0, ResampledShape::KeepingArea)).empty());
+}
+
+TEST(ContourResampling, KeepingTheCornersKeepsASquareAndASlot)
+{
+  // A drawn 40 x 40 square with points at irregular steps along its sides, and a 2 mm slot cut 20 mm
+  // into it: resampled at 2.5 mm, every corner is a point of the result and every point lies on the
+  // drawn polyline, so the area is the drawn one. Without the corners the chords cut them.
+  auto onPolyline = [](const Point2& p, const Polygon2& polyline)
+  {
+    double nearest = 1e9;
+    for (std::size_t i = 0; i < polyline.size(); ++i)
+      nearest = std::min(nearest, distanceToSegment(p, polyline[i], polyline[(i + 1) % polyline.size()]));
+    return nearest;
+  };
+  const Polygon2 square = { { -20, -20 }, { -7.3, -20 }, { 20, -20 }, { 20, 3.1 }, { 20, 20 },
+                            { 11.9, 20 }, { -20, 20 }, { -20, -4.4 } };
+  const Polygon2 slot = { { -20, -20 }, { 20, -20 }, { 20, -1 }, { 0, -1 }, { 0, 1 }, { 20, 1 }, { 20, 20 }, { -20, 20 } };
+  const Polygon2 squareCorners = { { -20, -20 }, { 20, -20 }, { 20, 20 }, { -20, 20 } };
+  for (const auto& [drawn, corners] : { std::pair{ square, squareCorners }, std::pair{ slot, slot } })
+  {
+    const Polygon2 resampled = resampleContourKeepingCorners(drawn, 2.5);
+    for (const Point2& corner : corners)
+      EXPECT_TRUE(std::any_of(resampled.begin(), resampled.end(),
+                              [&](const Point2& p) { return p.x == corner.x && p.y == corner.y; }))
+        << "corner " << corner.x << ", " << corner.y << " lost";
+    for (const Point2& p : resampled)
+      EXPECT_LT(onPolyline(p, drawn), 1e-9);
+    EXPECT_NEAR(polygonArea(resampled), polygonArea(drawn), 1e-9);
+    for (std::size_t i = 0; i < resampled.size(); ++i) // even steps between the corners
+      EXPECT_LT(distance(resampled[i], resampled[(i + 1) % resampled.size()]), 1.5 * 2.5);
+  }
+  EXPECT_EQ(contourCorners(slot, 2.5).size(), 8u);
+  EXPECT_LT(polygonArea(resampleContour(square, 2.5 * 1.3)), polygonArea(square) - 1.0); // chords cut corners
+  // A circle drawn with 64 points turns by 5.6 degrees at each: no corners, evenly resampled.
+  EXPECT_TRUE(contourCorners(circle(0, 0, 10, 64), 2.5).empty());
+  EXPECT_EQ(resampleContourKeepingCorners(circle(0, 0, 10, 64), 2.5).size(), 25u);
 }
 
 TEST(ContourPreparation, TracedContoursLoseOnlyThePointsOnAStraightRun)
