@@ -164,6 +164,7 @@ PipelineSettings settingsFrom(const ParsedArguments& arguments)
   settings.contourSmoothingSigma = arguments.number("contourSmoothingSigma");
   settings.meshing.contours.simplificationTolerance = arguments.number("contourSimplification");
   settings.meshing.contours.pointSpacing = arguments.number("contourPointSpacing");
+  settings.meshing.holdContours = arguments.flag("holdContours");
   const std::string& preparation = arguments.text("contourPreparation");
   settings.meshing.contours.mode = preparation == "Smoothed" ? ContourPreparation::Smoothed
                                    : preparation == "Traced" ? ContourPreparation::Traced

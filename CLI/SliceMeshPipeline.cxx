@@ -318,18 +318,21 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
                 {
                   if (s.mask)
                   {
-                    s.meshing = startMaskMeshing(s.mask, settings.meshing, settings.contourSmoothingSigma);
+                    MeshingOptions options = settings.meshing;
+                    options.holdContours = false; // traced: a staircase, smoothed away
+                    s.meshing = startMaskMeshing(s.mask, options, settings.contourSmoothingSigma);
                     // Traced: the mask's voxels go, its frame stays to place the mesh.
                     s.contours.frame = sliceFrameOf(s.mask);
                     s.mask = nullptr;
                   }
                   else
                   {
-                    // Planning-system contours are irregularly spaced: resampled keeping their
-                    // corners, to the ROI's point spacing (resolvedMeshingOptions) unless one was
-                    // asked for.
+                    // Planning-system contours are irregularly spaced: resampled to the ROI's point
+                    // spacing unless one was asked for (held: a target edge apart, keeping their
+                    // corners; resolvedMeshingOptions).
                     MeshingOptions options = settings.meshing;
-                    options.drawnContours = true;
+                    if (!options.holdContours && !(options.contours.pointSpacing > 0.0))
+                      options.contours.pointSpacing = s.contours.spacing[0];
                     s.meshing = startMeshing(s.contours.stack, options, s.contours.spacing);
                   }
                   runMeshingStage(MeshingStage::Preparation, s.meshing);

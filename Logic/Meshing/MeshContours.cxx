@@ -99,7 +99,7 @@ void runMeshingStage(MeshingStage stage, MeshedContours& meshing, const std::fun
       // Drawn contours are the anatomy: the finished surface passes through the contours it was tiled
       // from (held for the finishing only: the stack outlives it).
       SurfaceFinishingOptions finishing = meshing.options.finishing;
-      if (meshing.options.drawnContours)
+      if (meshing.options.holdContours)
         finishing.heldContours = std::shared_ptr<const ContourStack>(std::shared_ptr<void>(), &meshing.stack);
       meshing.surface =
         finishSurface(meshing.tiling, meshing.tilingValidation, finishing, meshing.options.threads,

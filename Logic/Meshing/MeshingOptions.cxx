@@ -9,7 +9,7 @@ MeshingOptions resolvedMeshingOptions(const MeshingOptions& options, const std::
 {
   MeshingOptions resolved = options;
   resolved.contours = resolvedContourPreparation(options.contours, spacing);
-  resolved.contours.keepCorners = resolved.contours.keepCorners || options.drawnContours;
+  resolved.contours.keepCorners = resolved.contours.keepCorners || options.holdContours;
   // The library's finishing for this grid (the automatic edge length, smoothing that moves no vertex
   // farther than a fraction of a voxel), with the given choices on top.
   SurfaceFinishingOptions& finishing = resolved.finishing;
@@ -36,7 +36,7 @@ MeshingOptions resolvedMeshingOptions(const MeshingOptions& options, const std::
   // Drawn contours keep their points through the finishing: spaced a target edge apart, so that the
   // remesh around their edges (which it does not touch) makes no narrow triangles. Their own
   // spacing (x, y) is the pixel side, shorter than the edge between thicker slices.
-  if (options.drawnContours && !(resolved.contours.pointSpacing > 0.0))
+  if (options.holdContours && !(resolved.contours.pointSpacing > 0.0))
     resolved.contours.pointSpacing =
       finishing.finish == SurfaceFinish::Remeshed ? std::max(pixel, finishing.remeshing.targetEdgeLength) : pixel;
   if (finishing.finish == SurfaceFinish::Remeshed && !(resolved.contours.pointSpacing > 0.0) &&

@@ -26,10 +26,11 @@ struct MeshingOptions
   /** Threads for the work inside one structure (its connected pieces, the self-intersection check);
    *  0: every core. The mesh does not depend on it. */
   unsigned int threads = 0;
-  /** The contours are drawn (a structure set's), not traced from a mask: they are the anatomy as
-   *  drawn, so they are resampled keeping their corners (ContourPreparationOptions::keepCorners) and
-   *  the finished surface passes through them (SurfaceFinishingOptions::heldContours). */
-  bool drawnContours = false;
+  /** For drawn contours (a structure set's; --holdContours): the finished surface passes through
+   *  them. They are resampled keeping their corners (ContourPreparationOptions::keepCorners) and the
+   *  finishing leaves their edges as tiled (SurfaceFinishingOptions::heldContours). Not for contours
+   *  traced from a mask, a staircase whose corners are not the anatomy's. */
+  bool holdContours = false;
 };
 
 /** The contour point spacing of a remeshed surface, in target edge lengths, when none is given and

@@ -12,6 +12,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include <fstream>
 
 namespace fs = std::filesystem;
@@ -188,6 +191,32 @@ TEST(StructureSet, CapsAtTheSliceCountTheVolumeFromTheFirstToTheLastContour)
   const double expected = (polygonArea(20.0) - polygonArea(10.0)) * 9 * Spacing;
   EXPECT_NEAR(v.volume, expected, 0.015 * expected);
   EXPECT_TRUE(hasLine(run.result.out, "end at the first and last contours")) << run.result.out;
+}
+
+TEST(StructureSet, HeldContoursKeepASquaresCornersOnTheSurface)
+{
+  // A 20 mm square on 7 slices: remeshed and smoothed as a whole, its corners are rounded; with
+  // --holdContours every corner of the slices between the first and last is a vertex of the mesh.
+  PlanarStructure square = roi(1, "Square", { 200, 0, 0 });
+  for (int k = 0; k < 7; ++k)
+    square.contours.push_back({ { -10, -10, Spacing * k }, { 10, -10, Spacing * k }, { 10, 10, Spacing * k }, { -10, 10, Spacing * k } });
+  auto cornersOnTheMesh = [&](const std::string& options)
+  {
+    const SetRun run = meshSet(options.empty() ? "SquareRemeshed" : "SquareHeld", { square }, options);
+    EXPECT_EQ(run.result.exitCode, cli::Success) << run.result.err;
+    const fs::path file = run.folder / "rois" / "001_Square.vtp";
+    expectValid(file);
+    const TriangleMesh mesh = readMesh(file.string()).mesh;
+    std::size_t found = 0;
+    for (std::size_t k = 1; k + 1 < square.contours.size(); ++k)
+      for (const Point3& corner : square.contours[k])
+        found += std::any_of(mesh.points.begin(), mesh.points.end(),
+                             [&](const Point3& p)
+                             { return std::abs(p.x - corner.x) + std::abs(p.y - corner.y) + std::abs(p.z - corner.z) < 1e-6; });
+    return found;
+  };
+  EXPECT_EQ(cornersOnTheMesh("--holdContours"), 20u);
+  EXPECT_LT(cornersOnTheMesh(""), 20u) << "the default finish moves the corners";
 }
 
 TEST(StructureSet, SeveralContoursPerSliceBranchingAndDriftingContours)

@@ -9,7 +9,8 @@
 namespace slicemesh::testing
 {
 
-TriangleMesh meshAsStructureSet(const std::vector<std::vector<Point3>>& contours, const std::string& folder)
+TriangleMesh meshAsStructureSet(const std::vector<std::vector<Point3>>& contours, const std::string& folder,
+                                bool holdContours)
 {
   const std::filesystem::path path(folder);
   PlanarStructure roi;
@@ -21,6 +22,7 @@ TriangleMesh meshAsStructureSet(const std::vector<std::vector<Point3>>& contours
   cli::PipelineSettings settings;
   settings.contours.path = (path / "RS.dcm").string();
   settings.outputModel = (path / "mesh.vtp").string();
+  settings.meshing.holdContours = holdContours;
   cli::ProgressReporter silent(cli::pipelineStages(), nullptr, nullptr);
   std::vector<cli::LabelReport> rois;
   cli::runPipeline(settings, silent, &rois);

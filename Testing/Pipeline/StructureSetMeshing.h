@@ -15,9 +15,10 @@ namespace slicemesh::testing
 
 /** The contours (LPS mm, each a closed polygon of one slice) written as the one ROI of
  *  `folder`/RS.dcm, meshed as `SliceMesh RS.dcm mesh.vtp` meshes them (cli::runPipeline with the
- *  default settings) into `folder`/mesh.vtp, and that mesh (LPS mm). Throws when the run fails or
- *  the ROI is not meshed. */
-TriangleMesh meshAsStructureSet(const std::vector<std::vector<Point3>>& contours, const std::string& folder);
+ *  default settings, or with --holdContours) into `folder`/mesh.vtp, and that mesh (LPS mm). Throws
+ *  when the run fails or the ROI is not meshed. */
+TriangleMesh meshAsStructureSet(const std::vector<std::vector<Point3>>& contours, const std::string& folder,
+                                bool holdContours = false);
 
 } // namespace slicemesh::testing
 
