@@ -341,6 +341,22 @@ bool flipAllowed(const Mesh& mesh, const ConstrainedEdges& constrained, Edge e)
   return true;
 }
 
+/** Flips h (it then runs between the two vertices opposite it), and flips it back when that folds
+ *  the two triangles onto each other or leaves a degenerate or folded triangle around its ends.
+ *  Whether the flip stayed. */
+bool flipKeepingShape(Mesh& mesh, Halfedge h)
+{
+  CGAL::Euler::flip_edge(h, mesh);
+  if (!(areaNormal(mesh, h) * areaNormal(mesh, mesh.opposite(h)) > 0.0) || degenerateAround(mesh, mesh.target(h)) ||
+      degenerateAround(mesh, mesh.source(h)) || !unfoldedAround(mesh, mesh.target(h)) ||
+      !unfoldedAround(mesh, mesh.source(h)))
+  {
+    CGAL::Euler::flip_edge(h, mesh);
+    return false;
+  }
+  return true;
+}
+
 /** Whether the other diagonal of the quad around h is an edge already (a flip would double it).
  *  A walk around a vertex: asked last, of the edges every other test let through. */
 bool otherDiagonalExists(const Mesh& mesh, Halfedge h)
@@ -372,14 +388,8 @@ void flipForValence(Mesh& mesh, const ConstrainedEdges& constrained, const Conto
       continue;
     if (flatOnContour(mesh, contour, c, d, a) || flatOnContour(mesh, contour, c, d, b) || otherDiagonalExists(mesh, h))
       continue;
-    CGAL::Euler::flip_edge(h, mesh); // h now runs between c and d
-    if (!(areaNormal(mesh, h) * areaNormal(mesh, mesh.opposite(h)) > 0.0) || degenerateAround(mesh, mesh.target(h)) ||
-        degenerateAround(mesh, mesh.source(h)) || !unfoldedAround(mesh, mesh.target(h)) ||
-        !unfoldedAround(mesh, mesh.source(h)))
-    {
-      CGAL::Euler::flip_edge(h, mesh);
+    if (!flipKeepingShape(mesh, h))
       continue;
-    }
     --va;
     --vb;
     ++vc;
@@ -425,14 +435,8 @@ void flipToDelaunay(Mesh& mesh, const ConstrainedEdges& constrained, const Conto
           flatOnContour(mesh, contour, vc, vd, mesh.source(h)) || flatOnContour(mesh, contour, vc, vd, mesh.target(h)) ||
           otherDiagonalExists(mesh, h))
         continue;
-      CGAL::Euler::flip_edge(h, mesh); // h now runs between c and d
-      if (!(areaNormal(mesh, h) * areaNormal(mesh, mesh.opposite(h)) > 0.0) || degenerateAround(mesh, mesh.target(h)) ||
-          degenerateAround(mesh, mesh.source(h)) || !unfoldedAround(mesh, mesh.target(h)) ||
-          !unfoldedAround(mesh, mesh.source(h)))
-      {
-        CGAL::Euler::flip_edge(h, mesh);
+      if (!flipKeepingShape(mesh, h))
         continue;
-      }
       flipped = true;
     }
     if (!flipped)
