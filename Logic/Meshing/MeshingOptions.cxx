@@ -10,6 +10,10 @@ MeshingOptions resolvedMeshingOptions(const MeshingOptions& options, const std::
   MeshingOptions resolved = options;
   resolved.contours = resolvedContourPreparation(options.contours, spacing);
   resolved.contours.keepCorners = resolved.contours.keepCorners || options.holdContours;
+  // Held contours keep every point as drawn: a point next to a crossing point is not removed (it may
+  // be a corner); the crossing point, on a straight drawn edge, merges into it in the remesh instead.
+  if (options.holdContours)
+    resolved.reconstruction.shortEdgeFraction = 0.0;
   // The library's finishing for this grid (the automatic edge length, smoothing that moves no vertex
   // farther than a fraction of a voxel), with the given choices on top.
   SurfaceFinishingOptions& finishing = resolved.finishing;
