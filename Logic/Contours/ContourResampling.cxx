@@ -11,6 +11,36 @@
 namespace slicemesh
 {
 
+namespace
+{
+
+/** Appends to `out` the points at arc lengths step, 2 step, ... (count - 1) step along the `edges`
+ *  edges of the closed contour that follow its point `from` (round past its last point). */
+void appendEvenSteps(const Polygon2& contour, std::size_t from, std::size_t edges, double step, std::size_t count,
+                     Polygon2& out)
+{
+  const std::size_t n = contour.size();
+  std::size_t edge = 0;   // current edge: contour[from + edge] -> contour[from + edge + 1]
+  double edgeStart = 0.0; // arc length at its start
+  double edgeLength = distance(contour[from], contour[(from + 1) % n]);
+  for (std::size_t k = 1; k < count; ++k)
+  {
+    const double s = static_cast<double>(k) * step;
+    while (edgeStart + edgeLength < s && edge + 1 < edges)
+    {
+      edgeStart += edgeLength;
+      ++edge;
+      edgeLength = distance(contour[(from + edge) % n], contour[(from + edge + 1) % n]);
+    }
+    const Point2& a = contour[(from + edge) % n];
+    const Point2& b = contour[(from + edge + 1) % n];
+    const double t = edgeLength > 0.0 ? std::clamp((s - edgeStart) / edgeLength, 0.0, 1.0) : 0.0;
+    out.push_back({ a.x + t * (b.x - a.x), a.y + t * (b.y - a.y) });
+  }
+}
+
+} // namespace
+
 Polygon2 resampleContour(const Polygon2& contour, double spacing)
 {
   const double length = perimeter(contour);
@@ -25,23 +55,7 @@ Polygon2 resampleContour(const Polygon2& contour, double spacing)
   Polygon2 resampled;
   resampled.reserve(count);
   resampled.push_back(contour.front());
-  std::size_t edge = 0;          // current edge: contour[edge] -> contour[edge + 1]
-  double edgeStart = 0.0;        // arc length at contour[edge]
-  double edgeLength = distance(contour[0], contour[1 % contour.size()]);
-  for (std::size_t k = 1; k < count; ++k)
-  {
-    const double s = k * step;
-    while (edgeStart + edgeLength < s && edge + 1 < contour.size())
-    {
-      edgeStart += edgeLength;
-      ++edge;
-      edgeLength = distance(contour[edge], contour[(edge + 1) % contour.size()]);
-    }
-    const Point2& a = contour[edge];
-    const Point2& b = contour[(edge + 1) % contour.size()];
-    const double t = edgeLength > 0.0 ? std::clamp((s - edgeStart) / edgeLength, 0.0, 1.0) : 0.0;
-    resampled.push_back({ a.x + t * (b.x - a.x), a.y + t * (b.y - a.y) });
-  }
+  appendEvenSteps(contour, 0, contour.size(), step, count, resampled);
   return resampled;
 }
 
@@ -109,23 +123,7 @@ Polygon2 resampleContourKeepingCorners(const Polygon2& contour, double spacing)
     const std::size_t steps = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(length / spacing)));
     const double step = length / static_cast<double>(steps);
     resampled.push_back(contour[from]);
-    std::size_t edge = 0;
-    double edgeStart = 0.0;
-    double edgeLength = distance(contour[from], contour[(from + 1) % n]);
-    for (std::size_t j = 1; j < steps; ++j)
-    {
-      const double s = static_cast<double>(j) * step;
-      while (edgeStart + edgeLength < s && edge + 1 < points)
-      {
-        edgeStart += edgeLength;
-        ++edge;
-        edgeLength = distance(contour[(from + edge) % n], contour[(from + edge + 1) % n]);
-      }
-      const Point2& a = contour[(from + edge) % n];
-      const Point2& b = contour[(from + edge + 1) % n];
-      const double t = edgeLength > 0.0 ? std::clamp((s - edgeStart) / edgeLength, 0.0, 1.0) : 0.0;
-      resampled.push_back({ a.x + t * (b.x - a.x), a.y + t * (b.y - a.y) });
-    }
+    appendEvenSteps(contour, from, points, step, steps, resampled);
   }
   // A small contour keeps enough points for its shape, as resampleContour leaves it.
   const std::size_t fewest = std::max<std::size_t>(3, std::min(contour.size(), fewestResampledPoints));

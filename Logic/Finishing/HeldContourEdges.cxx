@@ -1,5 +1,6 @@
 #include "Finishing/HeldContourEdges.h"
 
+#include "Contours/ContourResampling.h"
 #include "Core/PlanarGeometry.h"
 #include "Core/SpatialHash.h"
 
@@ -46,21 +47,6 @@ struct SliceSegments
   std::vector<std::pair<Point2, Point2>> segments;
 };
 
-/** The mean contour edge length of the stack: the hash's cell. */
-double meanEdge(const ContourStack& contours)
-{
-  double length = 0.0;
-  std::size_t edges = 0;
-  for (const Slice& slice : contours.slices)
-    for (const Polygon2& contour : slice.contours)
-      for (std::size_t i = 0; i < contour.size(); ++i)
-      {
-        length += distance(contour[i], contour[(i + 1) % contour.size()]);
-        ++edges;
-      }
-  return edges > 0 && length > 0.0 ? length / static_cast<double>(edges) : 1.0;
-}
-
 } // namespace
 
 HeldContourEdges heldContourEdges(const TriangleMesh& mesh, const ContourStack& contours)
@@ -69,7 +55,9 @@ HeldContourEdges heldContourEdges(const TriangleMesh& mesh, const ContourStack& 
   held.vertices.assign(mesh.points.size(), 0);
   if (contours.slices.empty())
     return held;
-  const double cell = meanEdge(contours);
+  // The hash's cell: the mean contour edge (any positive size finds the same segments).
+  const double meanEdge = meanPointSpacing(contours);
+  const double cell = meanEdge > 0.0 ? meanEdge : 1.0;
   std::vector<SliceSegments> slices;
   std::vector<double> heights;
   for (const Slice& slice : contours.slices)

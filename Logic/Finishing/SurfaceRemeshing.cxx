@@ -430,9 +430,10 @@ MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions&
   {
     splitCollapseFlip(surface, constrained, options.targetEdgeLength, heldContours ? &contourVertices : nullptr);
     surface.collect_garbage(); // the next round's face index map must be dense
-    relaxTangentially(surface, threads, freeVertices());
+    const std::vector<char>* free = freeVertices(); // the round's vertices, after its garbage went
+    relaxTangentially(surface, threads, free);
     if (options.projectEachRound || round + 1 == options.iterations)
-      projectOntoInput(surface, onInput, tree, threads, freeVertices());
+      projectOntoInput(surface, onInput, tree, threads, free);
   }
   remeshAroundNarrowTriangles(surface, constrained, options.targetEdgeLength, onInput, heldOnContour, tree, threads);
   MeshRegion result;

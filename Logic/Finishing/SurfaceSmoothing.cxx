@@ -524,7 +524,8 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
   std::vector<Point3> points = start, scratch(order.size());
   const DisplacementBound free(start, {}, false);
   DisplacementBound bound(start, options.maxDisplacement, bounded);
-  // Vertices held where they are (drawn contours' own), by row; put back after every step.
+  // Vertices held where they are (drawn contours' own), by row: they take each pair's steps, as a
+  // sharp feature's do (below), and are put back after the pair and after each relaxation.
   std::vector<char> heldRow(held.empty() ? 0 : order.size(), 0);
   std::vector<std::size_t> heldRows;
   for (std::size_t r = 0; r < heldRow.size(); ++r)
