@@ -101,12 +101,15 @@ StructureSet readWithDcmtk(const std::string& path)
   // Every value read in the one pass: values over DCMTK's default 4 KB are otherwise read when first
   // asked for, each by opening the file again (a 50,000-point set: 240 opens; cheap from a local
   // disk, not from a network share). Not for a file larger than any structure set: an image given
-  // by mistake is refused below before its pixels are read.
+  // by mistake is refused below before its pixels are read. No value is longer than the file: a
+  // damaged length (4 GB in a 200-byte file) is left unread instead of allocated.
   std::error_code sizeError;
   const auto bytes = std::filesystem::file_size(path, sizeError);
   const Uint32 maxReadLength =
-    !sizeError && bytes <= largestStructureSetBytes ? std::numeric_limits<Uint32>::max() : DCM_MaxReadLength;
+    !sizeError && bytes <= largestStructureSetBytes ? static_cast<Uint32>(bytes) : DCM_MaxReadLength;
   const OFCondition loaded = file.loadFile(path.c_str(), EXS_Unknown, EGL_noChange, maxReadLength);
+  if (loaded == EC_StreamNotifyClient)
+    throw Error("cannot read '" + path + "' as DICOM: the file ends inside an element (cut short, or a length damaged)");
   if (loaded.bad())
     throw Error("cannot read '" + path + "' as DICOM: " + loaded.text());
   DcmDataset& dataset = *file.getDataset();

@@ -2,7 +2,7 @@
 // reads as structures - an RT Structure Set (with a hole, a keyhole and a POINT item), SliceMesh's
 // JSON contours, 3D Slicer's planar contours as legacy and XML VTK polydata, a two-layer .seg.nrrd,
 // a fractional one and a binary DICOM SEG - so that the fuzzer starts inside each reader rather than
-// at its magic.
+// at its magic; and a structure set with a damaged length, a past finding.
 //   MakeStructureFuzzSeeds <folder>
 #include "SegmentationFileWriters.h"
 #include "StructureSetWriter.h"
@@ -43,6 +43,20 @@ void writeStructureSet(const fs::path& path)
                                  { 24, 2, 2.0 * k }, { 22, 2, 2.0 * k }, { 22, 3, 2.0 * k }, { 20, 3, 2.0 * k } });
   }
   writeRTStructureSet(path.string(), { ring, keyhole }, { { 2, "POINT", { { 23, 3, 0 } } } });
+}
+
+/** The structure set with its meta header's first element claiming about 4 GB: DCMTK allocated such
+ *  a value before finding the file too short (an out-of-memory the fuzzer found), so every run
+ *  starts from it. */
+void writeStructureSetWithDamagedLength(const fs::path& whole, const fs::path& path)
+{
+  std::ifstream in(whole, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string version("\x02\x00\x01\x00OB\x00\x00\x02\x00\x00\x00", 12);
+  const std::size_t at = bytes.find(version);
+  if (at != std::string::npos)
+    bytes.replace(at + 10, 2, "\xff\xff");
+  std::ofstream(path, std::ios::binary) << bytes;
 }
 
 /** Appends the value's bytes, most significant first, as the legacy binary format stores them. */
@@ -127,6 +141,7 @@ int main(int argc, char** argv)
   const fs::path folder(argv[1]);
   fs::create_directories(folder);
   writeStructureSet(folder / "structure-set.dcm");
+  writeStructureSetWithDamagedLength(folder / "structure-set.dcm", folder / "structure-set-damaged-length.dcm");
   writePolyData(folder);
   writeJson(folder / "contours.json");
   writeSegmentations(folder / "segmentation.seg.nrrd", folder / "fractional.seg.nrrd", folder / "segmentation-seg.dcm");

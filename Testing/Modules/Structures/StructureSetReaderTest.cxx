@@ -27,6 +27,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 namespace fs = std::filesystem;
 
 namespace slicemesh::testing
@@ -234,6 +237,62 @@ TEST(StructureSetReader, ATruncatedStructureSetFailsWithOneLine)
     const std::string message = e.what();
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
     EXPECT_NE(message.find("RS-cut.dcm"), std::string::npos) << message;
+  }
+}
+
+/** The file's bytes with the first run of `find` replaced by `replace`. */
+std::string withBytesReplaced(const fs::path& path, const std::string& find, const std::string& replace)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t at = bytes.find(find);
+  EXPECT_NE(at, std::string::npos);
+  return at == std::string::npos ? bytes : bytes.replace(at, find.size(), replace);
+}
+
+/** Reads the structure set with `spare` bytes of address space beyond what the process holds, then
+ *  exits: 0 if it read, 3 with the error on stderr if it failed (for a death test's child). */
+[[noreturn]] void readUnderAddressLimit(const fs::path& path, rlim_t spare)
+{
+  std::ifstream statm("/proc/self/statm");
+  unsigned long pages = 0;
+  statm >> pages;
+  const rlim_t held = static_cast<rlim_t>(pages) * static_cast<rlim_t>(::sysconf(_SC_PAGESIZE));
+  const rlimit limit{ held + spare, held + spare };
+  ::setrlimit(RLIMIT_AS, &limit);
+  try
+  {
+    readStructureSet(path.string());
+  }
+  catch (const Error& e)
+  {
+    std::cerr << e.what() << std::endl;
+    std::exit(3);
+  }
+  std::exit(0);
+}
+
+TEST(StructureSetReader, ADamagedLengthIsNotAllocated)
+{
+  // An element claiming about 4 GB in a file of a few kilobytes: DCMTK allocated the value before
+  // finding the file too short (the fuzzer's out-of-memory). Under an address-space limit 1 GB above
+  // what the process holds, the read must fail on the damage, not on memory.
+  const fs::path dir = folder("damaged-length");
+  const fs::path whole = dir / "RS.dcm";
+  writeRTStructureSet(whole.string(), twoStructures());
+  // (0002,0001) OB, the meta header's version; and the first ContourData (3006,0050), its VR made
+  // OB so that its length takes four bytes.
+  const std::string metaHuge = withBytesReplaced(whole, std::string("\x02\x00\x01\x00OB\x00\x00\x02\x00\x00\x00", 12),
+                                                 std::string("\x02\x00\x01\x00OB\x00\x00\x02\x00\xff\xff", 12));
+  const std::string dataHuge = withBytesReplaced(whole, std::string("\x06\x30\x50\x00" "DS", 6),
+                                                 std::string("\x06\x30\x50\x00" "OB\x00\x00\x00\x00\xf0\xff", 12));
+  for (const auto& [name, bytes] : { std::pair{ "meta.dcm", metaHuge }, std::pair{ "data.dcm", dataHuge } })
+  {
+    const fs::path path = dir / name;
+    std::ofstream(path, std::ios::binary) << bytes;
+    ASSERT_LT(fs::file_size(path), 1u << 20);
+    EXPECT_EXIT(readUnderAddressLimit(path, 1ull << 30), ::testing::ExitedWithCode(3), "the file ends inside an element")
+      << name;
   }
 }
 
