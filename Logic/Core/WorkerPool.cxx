@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <atomic>
 #include <condition_variable>
-#include <deque>
 #include <mutex>
 #include <system_error>
 #include <thread>
@@ -19,17 +18,16 @@ namespace
 /** One call of runOnPool: the work its helpers run and how many of them are running it now. */
 struct Job
 {
-  const std::function<void()>* work = nullptr;
+  PoolWork work;
   std::size_t running = 0;
 };
 
 class WorkerPool
 {
 public:
-  void run(std::size_t helpers, const std::function<void()>& work)
+  void run(std::size_t helpers, PoolWork work)
   {
-    Job job;
-    job.work = &work;
+    Job job{ work };
     // Whichever way this call ends, no request for the job is left queued and no helper is still
     // running it once the job (on this stack) is gone.
     struct Withdraw
@@ -81,10 +79,10 @@ private:
     {
       m_Requested.wait(lock, [this] { return !m_Requests.empty(); });
       Job* job = m_Requests.front();
-      m_Requests.pop_front();
+      m_Requests.erase(m_Requests.begin()); // a few entries: no more than the pool's threads per call
       ++job->running;
       lock.unlock();
-      (*job->work)();
+      job->work();
       lock.lock();
       if (--job->running == 0)
         m_Finished.notify_all();
@@ -94,7 +92,7 @@ private:
   std::mutex m_Lock;
   std::condition_variable m_Requested; // a request was queued
   std::condition_variable m_Finished;  // a job's last running helper returned
-  std::deque<Job*> m_Requests;         // one entry per helper a job asked for
+  std::vector<Job*> m_Requests;        // one entry per helper a job asked for; keeps its capacity
   std::vector<std::thread> m_Threads;
 };
 
@@ -119,7 +117,7 @@ WorkerPool& pool()
 
 } // namespace
 
-void runOnPool(std::size_t helpers, const std::function<void()>& work)
+void runOnPool(std::size_t helpers, PoolWork work)
 {
   pool().run(helpers, work);
 }

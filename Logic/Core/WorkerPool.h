@@ -3,10 +3,29 @@
 #define WorkerPool_h
 
 #include <cstddef>
-#include <functional>
 
 namespace slicemesh
 {
+
+/** A callable of the caller's, borrowed for a call of runOnPool (which returns only once no thread
+ *  runs it any more): unlike std::function it never allocates, so a call of the pool allocates
+ *  nothing once the pool has grown. A process that forks while another thread is inside the
+ *  allocator may leave the child's allocator locked (AddressSanitizer's runtime does); the pool's
+ *  own calls are then never the cause. */
+class PoolWork
+{
+public:
+  template <typename Work>
+  PoolWork(Work& work) // implicit: parallelFor passes its lambda as it is
+    : m_Work(&work), m_Call([](void* w) { (*static_cast<Work*>(w))(); })
+  {
+  }
+  void operator()() const { m_Call(m_Work); }
+
+private:
+  void* m_Work;
+  void (*m_Call)(void*);
+};
 
 /** Runs `work` on the calling thread and on up to `helpers` threads of the process's pool at once,
  *  and returns once every call of it has returned. `work` must not throw, and must be safe to run
@@ -22,7 +41,7 @@ namespace slicemesh
  *  helpers already running `work`, which never wait for anything queued. The pool grows to the most
  *  helpers any call asked for, and its threads last until the process ends. A child process (fork)
  *  starts a pool of its own the first time it asks. */
-void runOnPool(std::size_t helpers, const std::function<void()>& work);
+void runOnPool(std::size_t helpers, PoolWork work);
 
 } // namespace slicemesh
 

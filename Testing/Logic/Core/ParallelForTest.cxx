@@ -1,5 +1,6 @@
 // parallelFor on the worker pool: every index once, nested calls, failures, the pool's threads lent
-// again rather than new ones started for each call, and a forked child's own pool.
+// again rather than new ones started for each call, and a forked child's own pool (no allocation
+// once the pool has grown: PoolAllocationTest.cxx).
 #include "Core/ParallelFor.h"
 
 #include <gtest/gtest.h>
