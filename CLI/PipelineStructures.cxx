@@ -220,6 +220,18 @@ std::vector<Structure> labelStructures(std::vector<LabelSource> sources, const s
   return structures;
 }
 
+std::optional<std::string> frameOfReferenceWarning(const StructureSet& set, const VolumeGeometry& reference,
+                                                   const ContourInputSettings& contours)
+{
+  const std::vector<std::string>& frames = set.framesOfReference;
+  if (frames.empty() || reference.frameOfReference.empty() ||
+      std::find(frames.begin(), frames.end(), reference.frameOfReference) != frames.end())
+    return std::nullopt;
+  return "'" + contours.path + "' names Frame of Reference " + frames.front() + (frames.size() > 1 ? " (and others)" : "") +
+         ", '" + contours.referenceImage + "' is in " + reference.frameOfReference +
+         ": the contours may have been drawn on another image; they are meshed where the structure set puts them";
+}
+
 std::vector<Structure> roiStructures(const StructureSet& set, const std::optional<VolumeGeometry>& reference,
                                      const PipelineSettings& settings)
 {

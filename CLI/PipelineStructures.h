@@ -69,6 +69,12 @@ std::vector<Structure> labelStructures(std::vector<LabelSource> sources, const s
                                        const std::vector<std::string>& names, bool segments,
                                        const PipelineSettings& settings);
 
+/** The warning to give when the structure set names Frames of Reference and the reference image's
+ *  (a DICOM image's) is not among them: the contours may have been drawn on another image, whose
+ *  slices and spacing would then stack them wrongly. Nothing when either does not say. */
+std::optional<std::string> frameOfReferenceWarning(const StructureSet& set, const VolumeGeometry& reference,
+                                                   const ContourInputSettings& contours);
+
 /** One structure per ROI asked for (every ROI by default), in the file's order: its contours as a
  *  stack along the reference image's slice direction and spacing when they lie on its slices (else
  *  along their own normal, with one warning for the set), crossings and keyholes repaired.

@@ -207,7 +207,11 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   {
     structureSet = guarded(UnreadableInput, [&] { return readStructureSet(settings.contours.path, settings.contours.kind); });
     if (!settings.contours.referenceImage.empty())
+    {
       referenceImage = guarded(UnreadableInput, [&] { return readVolumeGeometry(settings.contours.referenceImage); });
+      if (const auto warning = frameOfReferenceWarning(structureSet, *referenceImage, settings.contours))
+        std::cerr << "SliceMesh: warning: " << *warning << std::endl;
+    }
   }
   else if (segmentationInput)
   {

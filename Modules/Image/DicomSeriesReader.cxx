@@ -135,7 +135,8 @@ void requireEvenlySpacedSlices(const std::string& folder, const std::vector<std:
 ScalarVolume::Pointer readDicomSeriesIn(const std::string& folder, bool voxels)
 {
   auto reader = itk::ImageSeriesReader<ScalarVolume>::New();
-  reader->SetImageIO(itk::GDCMImageIO::New());
+  auto io = itk::GDCMImageIO::New();
+  reader->SetImageIO(io);
   const std::vector<std::string> files = dicomSeriesFiles(folder);
   requireEvenlySpacedSlices(folder, files);
   reader->SetFileNames(files);
@@ -146,6 +147,9 @@ ScalarVolume::Pointer readDicomSeriesIn(const std::string& folder, bool voxels)
     reader->UpdateOutputInformation();
   ScalarVolume::Pointer volume = reader->GetOutput();
   volume->DisconnectPipeline();
+  // The series' header as one of its files states it: what a slice does not vary (the Frame of
+  // Reference) is then known without opening a file again.
+  volume->SetMetaDataDictionary(io->GetMetaDataDictionary());
   return volume;
 }
 

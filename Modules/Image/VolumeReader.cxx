@@ -10,6 +10,7 @@
 
 #include "itkImageFileReader.h"
 #include "itkImageIOFactory.h"
+#include "itkMetaDataObject.h"
 
 #include <zlib.h>
 
@@ -72,6 +73,17 @@ void checkGeometry(const std::string& path, const double spacing[3], const doubl
 }
 
 /** The first three axes' spacing and direction as the header states them, checked. */
+/** The Frame of Reference UID a DICOM header holds (GDCM's key), without its padding; empty if none. */
+std::string frameOfReferenceIn(const itk::MetaDataDictionary& header)
+{
+  std::string uid;
+  if (!itk::ExposeMetaData<std::string>(header, "0020|0052", uid))
+    return {};
+  const auto first = uid.find_first_not_of(' ');
+  const auto last = uid.find_last_not_of(std::string(" \0", 2));
+  return first == std::string::npos || last < first ? std::string() : uid.substr(first, last - first + 1);
+}
+
 VolumeGeometry checkHeaderGeometry(const std::string& path, const itk::ImageIOBase* io)
 {
   VolumeGeometry geometry;
@@ -460,10 +472,13 @@ VolumeGeometry readVolumeGeometry(const std::string& path)
     itk::ImageIOBase::Pointer io = readImageHeader(path);
     if (io->GetNumberOfDimensions() < 3)
       throw Error(path + ": a 2-D image; its slice direction is unknown");
-    return checkHeaderGeometry(path, io);
+    VolumeGeometry geometry = checkHeaderGeometry(path, io);
+    geometry.frameOfReference = frameOfReferenceIn(io->GetMetaDataDictionary());
+    return geometry;
   }
   const ScalarVolume::Pointer volume = readDicomSeries(path, /*voxels=*/false);
   VolumeGeometry geometry;
+  geometry.frameOfReference = frameOfReferenceIn(volume->GetMetaDataDictionary());
   for (int i = 0; i < 3; ++i)
   {
     geometry.spacing[i] = volume->GetSpacing()[i];

@@ -38,6 +38,8 @@ struct VolumeGeometry
   /** Columns: the directions of the voxel axes in LPS; the third is the slice direction. */
   std::array<std::array<double, 3>, 3> direction{ { { 1.0, 0.0, 0.0 }, { 0.0, 1.0, 0.0 }, { 0.0, 0.0, 1.0 } } };
   std::array<double, 3> sliceDirection() const { return { direction[0][2], direction[1][2], direction[2][2] }; }
+  /** A DICOM image's Frame of Reference UID (0020,0052); empty for other formats or when absent. */
+  std::string frameOfReference;
 };
 
 /** The geometry of the volume at `path` (a file, or a DICOM series directory) without reading its

@@ -127,6 +127,21 @@ StructureSet readWithDcmtk(const std::string& path)
     throw Error("cannot read the RT Structure Set '" + path + "': " + read.text());
 
   StructureSet set;
+  auto addFrameOfReference = [&set](const OFString& uid)
+  {
+    const std::string frame = trimmed(uid);
+    if (!frame.empty() && std::find(set.framesOfReference.begin(), set.framesOfReference.end(), frame) ==
+                            set.framesOfReference.end())
+      set.framesOfReference.push_back(frame);
+  };
+  DcmSequenceOfItems* frames = nullptr;
+  dataset.findAndGetSequence(DCM_ReferencedFrameOfReferenceSequence, frames);
+  for (unsigned long n = 0; frames && n < frames->card(); ++n)
+  {
+    OFString uid;
+    if (frames->getItem(n)->findAndGetOFString(DCM_FrameOfReferenceUID, uid).good())
+      addFrameOfReference(uid);
+  }
   std::map<Sint32, std::size_t> byNumber;
   forEachItem(roiSequence,
               [&](DRTStructureSetROISequence::Item& item)
@@ -135,8 +150,10 @@ StructureSet readWithDcmtk(const std::string& path)
                 Sint32 number = 0;
                 if (item.getROINumber(number).bad())
                   return;
-                OFString name;
+                OFString name, frame;
                 item.getROIName(name);
+                if (item.getReferencedFrameOfReferenceUID(frame).good())
+                  addFrameOfReference(frame);
                 roi.number = number;
                 roi.name = trimmed(name);
                 if (roi.name.empty())

@@ -29,6 +29,9 @@ struct StructureSet
   std::vector<PlanarStructure> structures;
   /** The slice normal the file states (the referenced image series' orientation), when it does. */
   std::optional<Vector3> sliceNormal;
+  /** The Frames of Reference (UIDs) the file says its contours are in: an RT Structure Set's
+   *  referenced frames and its ROIs'; empty when it names none. */
+  std::vector<std::string> framesOfReference;
 };
 
 /** What a contour file holds, by its content. */

@@ -56,12 +56,13 @@ void addContour(DcmItem& roiContour, const ContourItem& contour, int contourNumb
 } // namespace
 
 void writeRTStructureSet(const std::string& path, const std::vector<PlanarStructure>& structures,
-                         const std::vector<ContourItem>& extraItems)
+                         const std::vector<ContourItem>& extraItems, const std::string& frameOfReferenceUid)
 {
   DcmFileFormat file;
   DcmDataset& data = *file.getDataset();
   char uid[100];
-  const std::string frameOfReference = dcmGenerateUniqueIdentifier(uid, SITE_INSTANCE_UID_ROOT);
+  const std::string frameOfReference =
+    frameOfReferenceUid.empty() ? std::string(dcmGenerateUniqueIdentifier(uid, SITE_INSTANCE_UID_ROOT)) : frameOfReferenceUid;
   put(data, DCM_SOPClassUID, UID_RTStructureSetStorage);
   put(data, DCM_SOPInstanceUID, dcmGenerateUniqueIdentifier(uid, SITE_INSTANCE_UID_ROOT));
   put(data, DCM_StudyInstanceUID, dcmGenerateUniqueIdentifier(uid, SITE_STUDY_UID_ROOT));

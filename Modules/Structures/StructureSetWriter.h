@@ -17,9 +17,10 @@ struct ContourItem
 };
 
 /** Writes the structures (each ROI's number, name, colour, contours as CLOSED_PLANAR items), then
- *  `extraItems`, as an RTSTRUCT file. Throws slicemesh::Error when it cannot. */
+ *  `extraItems`, as an RTSTRUCT file whose ROIs are in Frame of Reference `frameOfReference` (empty:
+ *  a new UID). Throws slicemesh::Error when it cannot. */
 void writeRTStructureSet(const std::string& path, const std::vector<PlanarStructure>& structures,
-                         const std::vector<ContourItem>& extraItems = {});
+                         const std::vector<ContourItem>& extraItems = {}, const std::string& frameOfReference = {});
 
 } // namespace slicemesh
 

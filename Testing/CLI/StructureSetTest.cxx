@@ -9,6 +9,7 @@
 #include "Measures/MeshValidation.h"
 #include "StructureSetWriter.h"
 #include "TestContours.h"
+#include "VolumeReader.h"
 
 #include <gtest/gtest.h>
 
@@ -545,18 +546,36 @@ TEST(StructureSet, ADicomFolderOfACTSeriesAndItsStructureSetMeshesTheROIsOnTheSe
   ct->SetDirection(direction);
   ct->SetOrigin(origin);
   testing::writeCTSeries(ct, folder / "CT");
-  writeRTStructureSet((folder / "CT" / "RS.dcm").string(), { obliqueCylinder(1, "Oblique", centre, r, { 0, 1, 3, 5, 7, 9 }) });
+  // The structure set in the series' Frame of Reference (the UID the DICOM writer gave the slices).
+  const std::string frame = readVolumeGeometry((folder / "CT").string()).frameOfReference;
+  ASSERT_FALSE(frame.empty());
+  writeRTStructureSet((folder / "CT" / "RS.dcm").string(), { obliqueCylinder(1, "Oblique", centre, r, { 0, 1, 3, 5, 7, 9 }) },
+                      {}, frame);
 
   const RunResult run = runSliceMesh(quoted((folder / "CT").string()) + " " + quoted((folder / "mesh.vtp").string()));
   ASSERT_EQ(run.exitCode, cli::Success) << run.err;
   EXPECT_TRUE(hasLine(run.err, "holds a structure set, RS.dcm: its ROIs are meshed, stacked on the folder's image series"))
     << run.err;
+  EXPECT_FALSE(hasLine(run.err, "Frame of Reference")) << run.err; // the plan's own CT
   EXPECT_FALSE(hasLine(run.err, "not on the slices")) << run.err;
   EXPECT_TRUE(hasLine(run.err, "one slice missing, tiled across it")) << run.err;
   const MeshValidation v = expectValid(folder / "mesh.vtp");
   EXPECT_EQ(v.components, 1u);
   const double expected = polygonArea(r) * 10 * Spacing; // half a slice beyond each end contour
   EXPECT_NEAR(v.volume, expected, 0.02 * expected);
+
+  // A structure set of another Frame of Reference (drawn on another scan, or not registered to this
+  // one): still meshed where it says, with a warning naming both frames.
+  const fs::path other = freshFolder("StructureSetOtherFrame");
+  writeRTStructureSet((other / "RS.dcm").string(), { obliqueCylinder(1, "Oblique", centre, r, { 0, 1, 3, 5, 7, 9 }) }, {},
+                      "1.2.826.0.1.3680043.2.1125.9.9");
+  const RunResult elsewhere = runSliceMesh("--inputContours " + quoted((other / "RS.dcm").string()) + " " +
+                                           quoted((folder / "CT").string()) + " " + quoted((other / "mesh.vtp").string()));
+  ASSERT_EQ(elsewhere.exitCode, cli::Success) << elsewhere.err;
+  EXPECT_TRUE(hasLine(elsewhere.err, std::string("names Frame of Reference 1.2.826.0.1.3680043.2.1125.9.9, '") +
+                                       (folder / "CT").string() + "' is in " + frame))
+    << elsewhere.err;
+  EXPECT_NEAR(expectValid(other / "mesh.vtp").volume, v.volume, 1e-6 * v.volume);
 
   // Two structure sets in the folder: which one is for the user to say. One line, nothing written.
   writeRTStructureSet((folder / "CT" / "RS2.dcm").string(), { obliqueCylinder(2, "Other", centre, r) });

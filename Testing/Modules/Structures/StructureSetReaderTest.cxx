@@ -218,6 +218,14 @@ TEST(StructureSetReader, ADicomFileOfAnotherModalityIsNotAStructureSet)
   }
 }
 
+TEST(StructureSetReader, ReadsTheFrameOfReferenceTheROIsAreIn)
+{
+  const fs::path path = folder("frame-of-reference") / "RS.dcm";
+  writeRTStructureSet(path.string(), twoStructures(), {}, "1.2.826.0.1.3680043.2.1125.7.7");
+  const StructureSet set = readStructureSet(path.string());
+  EXPECT_EQ(set.framesOfReference, std::vector<std::string>{ "1.2.826.0.1.3680043.2.1125.7.7" }) << "once for both ROIs";
+}
+
 TEST(StructureSetReader, ATruncatedStructureSetFailsWithOneLine)
 {
   const fs::path dir = folder("truncated");
