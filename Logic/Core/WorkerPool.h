@@ -3,6 +3,7 @@
 #define WorkerPool_h
 
 #include <cstddef>
+#include <type_traits>
 
 namespace slicemesh
 {
@@ -15,7 +16,9 @@ namespace slicemesh
 class PoolWork
 {
 public:
-  template <typename Work>
+  /** Not for a PoolWork itself: that is copied (a template taking any lvalue would otherwise wrap
+   *  the copy's source instead). */
+  template <typename Work, typename = std::enable_if_t<!std::is_same_v<std::remove_cv_t<Work>, PoolWork>>>
   PoolWork(Work& work) // implicit: parallelFor passes its lambda as it is
     : m_Work(&work), m_Call([](void* w) { (*static_cast<Work*>(w))(); })
   {
