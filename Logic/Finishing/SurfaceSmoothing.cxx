@@ -65,12 +65,13 @@ VertexNeighbours neighboursOf(const TriangleMesh& mesh, const std::vector<std::i
                     });
   VertexNeighbours neighbours;
   neighbours.first.assign(vertices + 1, 0);
-  for (std::size_t v = 0; v < vertices; ++v)
-    neighbours.first[v + 1] = neighbours.first[v] + distinct[v];
-  neighbours.ids.resize(neighbours.first[vertices]);
   neighbours.inverseCount.resize(vertices);
   for (std::size_t v = 0; v < vertices; ++v)
+  {
+    neighbours.first[v + 1] = neighbours.first[v] + distinct[v];
     neighbours.inverseCount[v] = distinct[v] > 0 ? 1.0 / static_cast<double>(distinct[v]) : 0.0;
+  }
+  neighbours.ids.resize(neighbours.first[vertices]);
   parallelForRanges(vertices, threads,
                     [&](std::size_t first, std::size_t last)
                     {

@@ -72,18 +72,21 @@ void checkGeometry(const std::string& path, const double spacing[3], const doubl
   }
 }
 
-/** The first three axes' spacing and direction as the header states them, checked. */
-/** The Frame of Reference UID a DICOM header holds (GDCM's key), without its padding; empty if none. */
+/** The Frame of Reference UID a DICOM header holds (GDCM's key), without its padding (spaces, a
+ *  NUL); empty if none. */
 std::string frameOfReferenceIn(const itk::MetaDataDictionary& header)
 {
   std::string uid;
   if (!itk::ExposeMetaData<std::string>(header, "0020|0052", uid))
     return {};
-  const auto first = uid.find_first_not_of(' ');
-  const auto last = uid.find_last_not_of(std::string(" \0", 2));
-  return first == std::string::npos || last < first ? std::string() : uid.substr(first, last - first + 1);
+  const std::string padding(" \0", 2);
+  const auto first = uid.find_first_not_of(padding);
+  if (first == std::string::npos)
+    return {};
+  return uid.substr(first, uid.find_last_not_of(padding) - first + 1);
 }
 
+/** The first three axes' spacing and direction as the header states them, checked. */
 VolumeGeometry checkHeaderGeometry(const std::string& path, const itk::ImageIOBase* io)
 {
   VolumeGeometry geometry;
