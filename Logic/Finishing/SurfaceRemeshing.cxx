@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <deque>
+#include <future>
 #include <limits>
 #include <optional>
 #include <string>
@@ -357,6 +358,53 @@ void remeshAroundNarrowTriangles(SurfaceMesh& surface,
   projectOntoInput(surface, onInput, tree, threads, &moving);
 }
 
+/** The tree a piece's remesh projects onto, built on the piece itself. (Whether the piece fits a
+ *  manifold surface is found where each region of it is turned into CGAL's surface to be remeshed:
+ *  a whole copy of the piece made only to check that first was a tiling's worth of memory.) */
+void buildTreeOf(const TriangleMesh& mesh, Tree& tree)
+{
+  insertTriangles(tree, mesh);
+  // No k-d tree of hints: every query brings its own (projectOntoInput).
+  tree.do_not_accelerate_distance_queries();
+  tree.build(); // before the queries run side by side
+}
+
+/** The projection tree of a piece (buildTreeOf), built on a thread of its own beside the remesh's
+ *  rounds when `alongside`: the rounds need it only for their projection, after the last one, and
+ *  built first on one thread it left the other cores idle (a quarter of a second on the large
+ *  scaling volume). get() waits for it and passes on what the build threw. */
+class ProjectionTree
+{
+public:
+  ProjectionTree(const TriangleMesh& mesh, bool alongside)
+  {
+    if (alongside)
+      m_Built = std::async(std::launch::async, [this, &mesh] { buildTreeOf(mesh, m_Tree); }).share();
+    else
+      buildTreeOf(mesh, m_Tree);
+  }
+
+  ProjectionTree(const ProjectionTree&) = delete;
+  ProjectionTree& operator=(const ProjectionTree&) = delete;
+
+  ~ProjectionTree()
+  {
+    if (m_Built.valid())
+      m_Built.wait(); // the build reads the mesh and writes the tree
+  }
+
+  const Tree& get() const
+  {
+    if (m_Built.valid())
+      m_Built.get();
+    return m_Tree;
+  }
+
+private:
+  Tree m_Tree;
+  std::shared_future<void> m_Built;
+};
+
 /** Remeshes one region of the input piece (all of it, or a slab or band of it): per round, a split,
  *  collapse and flip (splitCollapseFlip), then a relaxation sweep; after the last round, the projection
  *  onto the input piece (`tree`). A round's relaxation moves a vertex within its tangent plane by a
@@ -366,7 +414,7 @@ void remeshAroundNarrowTriangles(SurfaceMesh& surface,
  *  triangles still under 30 degrees are remeshed around (remeshAroundNarrowTriangles). The region's
  *  border, where it meets the rest of the piece, is kept exactly: its edges are neither split nor
  *  collapsed, its vertices not moved. Throws Error if the region does not fit a manifold surface. */
-MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions& options, const Tree& tree,
+MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions& options, const ProjectionTree& tree,
                         unsigned int threads, const ContourStack* heldContours)
 {
   SurfaceMesh surface = surfaceOf(region.mesh);
@@ -433,9 +481,9 @@ MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions&
     const std::vector<char>* free = freeVertices(); // the round's vertices, after its garbage went
     relaxTangentially(surface, threads, free);
     if (options.projectEachRound || round + 1 == options.iterations)
-      projectOntoInput(surface, onInput, tree, threads, free);
+      projectOntoInput(surface, onInput, tree.get(), threads, free);
   }
-  remeshAroundNarrowTriangles(surface, constrained, options.targetEdgeLength, onInput, heldOnContour, tree, threads);
+  remeshAroundNarrowTriangles(surface, constrained, options.targetEdgeLength, onInput, heldOnContour, tree.get(), threads);
   MeshRegion result;
   result.mesh = toTriangleMesh(surface);
   for (Vertex v : surface.vertices())
@@ -446,7 +494,7 @@ MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions&
 /** Remeshes the regions of `mesh` (regionOf, -1: left alone) side by side; a region that cannot be
  *  remeshed is kept as it was when `keepFailed`, else the whole call throws. */
 TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& regionOf, int count,
-                           const SurfaceRemeshingOptions& options, const Tree& tree, unsigned int threads,
+                           const SurfaceRemeshingOptions& options, const ProjectionTree& tree, unsigned int threads,
                            bool keepFailed, const ContourStack* heldContours)
 {
   std::vector<MeshRegion> regions(static_cast<std::size_t>(count));
@@ -468,16 +516,6 @@ TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& reg
   return reassembleRegions(mesh, regionOf, regions);
 }
 
-/** The tree a piece's remesh projects onto, built on the piece itself. (Whether the piece fits a
- *  manifold surface is found where each region of it is turned into CGAL's surface to be remeshed:
- *  a whole copy of the piece made only to check that first was a tiling's worth of memory.) */
-void buildTreeOf(const TriangleMesh& mesh, Tree& tree)
-{
-  insertTriangles(tree, mesh);
-  // No k-d tree of hints: every query brings its own (projectOntoInput).
-  tree.do_not_accelerate_distance_queries();
-  tree.build(); // before the queries run side by side
-}
 
 /** Rings each side of a seam between slabs remeshed again as a band: the band's own border then
  *  lies among remeshed triangles. */
@@ -497,8 +535,7 @@ constexpr double slabEdges = 2.0 * bandRings * 4.0 / 3.0 + 2.0;
 TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads,
                          const ContourStack* heldContours)
 {
-  Tree tree;
-  buildTreeOf(mesh, tree);
+  const ProjectionTree tree(mesh, threadCount(threads) > 1);
   const std::size_t perRegion = options.trianglesPerRegion;
   int slabs = 1;
   const std::vector<int> slabOf = perRegion == 0 || mesh.triangles.size() < 2 * perRegion
@@ -573,8 +610,7 @@ TriangleMesh remeshSurfaceAround(const TriangleMesh& mesh, const std::vector<cha
     throw Error("surface remeshing: one keep flag per triangle is needed");
   if (!remeshingAsked(mesh, options))
     return mesh;
-  Tree tree;
-  buildTreeOf(mesh, tree);
+  const ProjectionTree tree(mesh, false);
   std::vector<int> regionOf(mesh.triangles.size());
   for (std::size_t t = 0; t < keep.size(); ++t)
     regionOf[t] = keep[t] ? -1 : 0;
