@@ -25,8 +25,9 @@ struct MeshQuality
   double maxAspectRatio = 0.0;
 };
 
-/** Angles and aspect ratios of the mesh's 3D triangles. */
-MeshQuality measureMeshQuality(const TriangleMesh& mesh);
+/** Angles and aspect ratios of the mesh's 3D triangles, measured on `threads` threads (the same
+ *  result on any number). */
+MeshQuality measureMeshQuality(const TriangleMesh& mesh, unsigned int threads = 1);
 
 /** The smallest angle of each triangle, in degrees (0 for a degenerate one). */
 std::vector<double> triangleMinAngles(const TriangleMesh& mesh);

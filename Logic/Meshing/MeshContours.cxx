@@ -18,7 +18,7 @@ void measure(MeshedContours& meshing, DirichletEnergy tilingEnergy)
 {
   MeshMeasures& m = meshing.measures;
   const ContourStack& stack = meshing.stack;
-  m.shape = measureMeshQuality(meshing.surface.mesh);
+  m.shape = measureMeshQuality(meshing.surface.mesh, meshing.options.threads);
   m.dirichlet = tilingEnergy;
   m.genus = genusOf(meshing.surface.validation);
   m.pointSpacing = meanPointSpacing(stack);

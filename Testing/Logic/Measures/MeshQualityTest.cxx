@@ -66,3 +66,40 @@ TEST(MeshQuality, GenusFromEulerCharacteristic)
   v.boundaryEdges = 3; // open: undefined
   EXPECT_EQ(genusOf(v), -1);
 }
+
+TEST(MeshQuality, TheSameOnAnyNumberOfThreads)
+{
+  // A grid of 300 x 300 squares, each cut into two triangles, the points jittered so that every
+  // triangle differs: 180,000 triangles, many ranges of the measure's work.
+  TriangleMesh mesh;
+  const int n = 300;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      mesh.points.push_back({ i + 0.3 * std::sin(7.0 * i + 3.0 * j), j + 0.3 * std::cos(5.0 * i - 11.0 * j),
+                              0.2 * std::sin(0.1 * i * j) });
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+    {
+      const std::int32_t a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+      mesh.triangles.push_back({ a, b, d });
+      mesh.triangles.push_back({ a, d, c });
+    }
+  const MeshQuality one = measureMeshQuality(mesh, 1);
+  EXPECT_EQ(one.triangles, 180000u);
+  EXPECT_GT(one.fractionBelow30, 0.0);
+  EXPECT_LT(one.fractionBelow30, 1.0);
+  EXPECT_GT(one.maxAspectRatio, one.p95AspectRatio);
+  EXPECT_GT(one.p95AspectRatio, one.medianAspectRatio);
+  for (unsigned int threads : { 2u, 8u })
+  {
+    const MeshQuality many = measureMeshQuality(mesh, threads);
+    EXPECT_EQ(many.minAngleDegrees, one.minAngleDegrees) << threads;
+    EXPECT_EQ(many.maxAngleDegrees, one.maxAngleDegrees) << threads;
+    EXPECT_EQ(many.fractionBelow30, one.fractionBelow30) << threads;
+    EXPECT_EQ(many.fractionBelow10, one.fractionBelow10) << threads;
+    EXPECT_EQ(many.meanAspectRatio, one.meanAspectRatio) << threads;
+    EXPECT_EQ(many.medianAspectRatio, one.medianAspectRatio) << threads;
+    EXPECT_EQ(many.p95AspectRatio, one.p95AspectRatio) << threads;
+    EXPECT_EQ(many.maxAspectRatio, one.maxAspectRatio) << threads;
+  }
+}
