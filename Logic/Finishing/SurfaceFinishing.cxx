@@ -311,7 +311,7 @@ FinishedPiece smoothedRemesh(TriangleMesh remeshed, const SurfaceFinishingOption
   smoothSurface(remeshed, options.smoothing, threads, held);
   // The remesh's chords cut the corners of structures a few edges across: the piece gets its volume
   // back (on drawn contours, as far as heldOffset lets it).
-  offsetToVolume(remeshed, volume, held, heldOffset(options));
+  offsetToVolume(remeshed, volume, held, heldOffset(options), threads);
   // After the offset, which would move them too (outwards: towards the other piece).
   std::size_t unsmoothedVertices = leftAsTiled.empty() ? 0 : unsmooth(remeshed, unsmoothed, leftAsTiled);
   std::vector<std::pair<std::size_t, std::size_t>> crossings;
@@ -467,7 +467,7 @@ FinishedPiece finishPiece(const TriangleMesh& tiled, const MeshValidation& refer
   const std::vector<char> held = heldVertices(tiled, options);
   smoothSurface(smoothed, options.smoothing, threads, held);
   if (volumeScale != 1.0 && options.smoothing.iterations > 0) // no iterations asked: the tiling itself
-    offsetToVolume(smoothed, volumeScale * reference.volume, held, heldOffset(options));
+    offsetToVolume(smoothed, volumeScale * reference.volume, held, heldOffset(options), threads);
   std::vector<std::pair<std::size_t, std::size_t>> crossings;
   MeshValidation validation = validateMesh(smoothed, crossings);
   const std::size_t unsmoothedVertices = unsmoothCrossings(smoothed, tiled.points, validation, crossings);

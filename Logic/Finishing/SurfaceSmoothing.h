@@ -88,8 +88,9 @@ bool relaxNarrowTriangles(TriangleMesh& mesh, const std::vector<Point3>& start, 
  *  area per unit of offset). For one connected piece; offsets large against the mesh's features fold
  *  it. The vertices flagged in `held` (empty: none) stay; the others move by the distance that gives
  *  the volume with them held, but no farther than `maxOffset` (mm; 0: unbounded): where few vertices
- *  are free the volume is then not reached. */
-void offsetToVolume(TriangleMesh& mesh, double volume, const std::vector<char>& held = {}, double maxOffset = 0.0);
+ *  are free the volume is then not reached. On `threads` threads, with the same result on any number. */
+void offsetToVolume(TriangleMesh& mesh, double volume, const std::vector<char>& held = {}, double maxOffset = 0.0,
+                    unsigned int threads = 1);
 
 } // namespace slicemesh
 
