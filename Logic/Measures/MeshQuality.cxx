@@ -84,7 +84,7 @@ MeshQuality measureMeshQuality(const TriangleMesh& mesh, unsigned int threads)
   parallelForFixedRanges(mesh.triangles.size(), trianglesPerRange, threads,
                          [&](std::size_t r, std::size_t first, std::size_t last)
                          {
-                           RangeShapes& range = ranges[r];
+                           RangeShapes range; // apart from the other ranges' sums, which share cache lines
                            for (std::size_t f = first; f < last; ++f)
                            {
                              const Triangle& t = mesh.triangles[f];
@@ -96,6 +96,7 @@ MeshQuality measureMeshQuality(const TriangleMesh& mesh, unsigned int threads)
                              aspects[f] = shape.aspect;
                              range.aspectSum += shape.aspect;
                            }
+                           ranges[r] = range;
                          });
   double smallest = M_PI, largest = 0.0, aspectSum = 0.0;
   std::size_t below30 = 0, below10 = 0;

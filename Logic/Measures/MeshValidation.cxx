@@ -77,7 +77,8 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
   parallelForFixedRanges(nTriangles, rangeSize, 0,
                          [&](std::size_t r, std::size_t firstTriangle, std::size_t lastTriangle)
                          {
-                           TriangleSums& sums = triangleSums[r];
+                           // Kept apart from the other ranges' sums, which share cache lines, until the end.
+                           TriangleSums sums;
                            for (std::size_t f = firstTriangle; f < lastTriangle; ++f)
                            {
                              const Triangle& t = mesh.triangles[f];
@@ -94,6 +95,7 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
                              sums.largestCosine = std::max(sums.largestCosine, cosine);
                              sums.below30 += cosine > cos30;
                            }
+                           triangleSums[r] = sums;
                          });
   double largestCosine = -1.0;
   std::size_t below30 = 0;
@@ -119,7 +121,7 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
     parallelForFixedRanges(nPoints, rangeSize, 0,
                            [&](std::size_t r, std::size_t firstPoint, std::size_t lastPoint)
                            {
-                             EdgeCounts& counts = edgeCounts[r];
+                             EdgeCounts counts; // as the triangles' sums above
                              for (std::size_t p = firstPoint; p < lastPoint; ++p)
                                edgeUses.forEachEdgeOf(
                                  p,
@@ -144,6 +146,7 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
                                    else if (count > 2)
                                      ++counts.nonManifold;
                                  });
+                             edgeCounts[r] = counts;
                            });
   }
   std::size_t edges = 0;
