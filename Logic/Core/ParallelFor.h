@@ -13,6 +13,8 @@
 #include <exception>
 #include <mutex>
 #include <thread>
+#include <utility>
+#include <vector>
 
 namespace slicemesh
 {
@@ -112,6 +114,24 @@ void parallelForFixedRanges(std::size_t count, std::size_t rangeSize, unsigned i
 {
   parallelFor(fixedRangeCount(count, rangeSize), threads,
               [&](std::size_t r) { body(r, r * rangeSize, std::min(count, (r + 1) * rangeSize)); });
+}
+
+/** parallelForFixedRanges for sums: body(result, first, last) fills a Result of the range's own
+ *  (value-initialized), held by its thread until the range ends; the results come back in range
+ *  order. (Ranges that add into neighbouring elements of one shared array as they go keep passing
+ *  cache lines between the cores: a smoothing's volume sums took a third longer so.) */
+template <typename Result, typename Body>
+std::vector<Result> fixedRangeResults(std::size_t count, std::size_t rangeSize, unsigned int threads, Body&& body)
+{
+  std::vector<Result> results(fixedRangeCount(count, rangeSize));
+  parallelForFixedRanges(count, rangeSize, threads,
+                         [&](std::size_t r, std::size_t first, std::size_t last)
+                         {
+                           Result result{};
+                           body(result, first, last);
+                           results[r] = std::move(result);
+                         });
+  return results;
 }
 
 } // namespace slicemesh

@@ -516,7 +516,6 @@ TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& reg
   return reassembleRegions(mesh, regionOf, regions);
 }
 
-
 /** Rings each side of a seam between slabs remeshed again as a band: the band's own border then
  *  lies among remeshed triangles. */
 constexpr int bandRings = 3;

@@ -218,38 +218,39 @@ void measureComponents(const TriangleMesh& mesh, const std::vector<std::size_t>&
 {
   constexpr std::size_t trianglesPerRange = 16384;
   const std::size_t components = volume.size();
-  const std::size_t ranges = fixedRangeCount(mesh.triangles.size(), trianglesPerRange);
-  std::vector<double> rangeVolume(ranges * components, 0.0), rangeArea(ranges * components, 0.0);
-  parallelForFixedRanges(mesh.triangles.size(), trianglesPerRange, threads,
-                         [&](std::size_t r, std::size_t first, std::size_t last)
-                         {
-                           // Summed apart from the other ranges' sums, which share their cache lines.
-                           std::vector<double> rv(components, 0.0), ra(components, 0.0);
-                           for (std::size_t f = first; f < last; ++f)
-                           {
-                             const Triangle& t = mesh.triangles[f];
-                             const Point3 n = areaNormal(mesh, t);
-                             const Point3& a = mesh.points[t[0]];
-                             const std::size_t k = component[static_cast<std::size_t>(t[0])];
-                             rv[k] += (a.x * n.x + a.y * n.y + a.z * n.z) / 6.0;
-                             double share = 1.0;
-                             if (!held.empty())
-                               share = static_cast<double>(3 - (held[static_cast<std::size_t>(t[0])] != 0) -
-                                                           (held[static_cast<std::size_t>(t[1])] != 0) -
-                                                           (held[static_cast<std::size_t>(t[2])] != 0)) /
-                                       3.0;
-                             ra[k] += share * 0.5 * std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-                           }
-                           std::copy(rv.begin(), rv.end(), rangeVolume.begin() + static_cast<std::ptrdiff_t>(r * components));
-                           std::copy(ra.begin(), ra.end(), rangeArea.begin() + static_cast<std::ptrdiff_t>(r * components));
-                         });
+  struct RangeSums
+  {
+    std::vector<double> volume, area; // by component
+  };
+  const std::vector<RangeSums> ranges = fixedRangeResults<RangeSums>(
+    mesh.triangles.size(), trianglesPerRange, threads,
+    [&](RangeSums& sums, std::size_t first, std::size_t last)
+    {
+      sums.volume.assign(components, 0.0);
+      sums.area.assign(components, 0.0);
+      for (std::size_t f = first; f < last; ++f)
+      {
+        const Triangle& t = mesh.triangles[f];
+        const Point3 n = areaNormal(mesh, t);
+        const Point3& a = mesh.points[t[0]];
+        const std::size_t k = component[static_cast<std::size_t>(t[0])];
+        sums.volume[k] += (a.x * n.x + a.y * n.y + a.z * n.z) / 6.0;
+        double share = 1.0;
+        if (!held.empty())
+          share = static_cast<double>(3 - (held[static_cast<std::size_t>(t[0])] != 0) -
+                                      (held[static_cast<std::size_t>(t[1])] != 0) -
+                                      (held[static_cast<std::size_t>(t[2])] != 0)) /
+                  3.0;
+        sums.area[k] += share * 0.5 * std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+      }
+    });
   std::fill(volume.begin(), volume.end(), 0.0);
   std::fill(area.begin(), area.end(), 0.0);
-  for (std::size_t r = 0; r < ranges; ++r)
+  for (const RangeSums& sums : ranges)
     for (std::size_t k = 0; k < components; ++k)
     {
-      volume[k] += rangeVolume[r * components + k];
-      area[k] += rangeArea[r * components + k];
+      volume[k] += sums.volume[k];
+      area[k] += sums.area[k];
     }
 }
 

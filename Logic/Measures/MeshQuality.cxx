@@ -79,25 +79,23 @@ MeshQuality measureMeshQuality(const TriangleMesh& mesh, unsigned int threads)
     std::size_t below30 = 0, below10 = 0;
   };
   constexpr std::size_t trianglesPerRange = 16384;
-  std::vector<RangeShapes> ranges(fixedRangeCount(mesh.triangles.size(), trianglesPerRange));
   std::vector<double> aspects(mesh.triangles.size());
-  parallelForFixedRanges(mesh.triangles.size(), trianglesPerRange, threads,
-                         [&](std::size_t r, std::size_t first, std::size_t last)
-                         {
-                           RangeShapes range; // apart from the other ranges' sums, which share cache lines
-                           for (std::size_t f = first; f < last; ++f)
-                           {
-                             const Triangle& t = mesh.triangles[f];
-                             const Shape shape = shapeOf(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
-                             range.smallest = std::min(range.smallest, shape.smallest);
-                             range.largest = std::max(range.largest, shape.largest);
-                             range.below30 += angleUnder(shape.smallest, 30.0);
-                             range.below10 += angleUnder(shape.smallest, 10.0);
-                             aspects[f] = shape.aspect;
-                             range.aspectSum += shape.aspect;
-                           }
-                           ranges[r] = range;
-                         });
+  const std::vector<RangeShapes> ranges = fixedRangeResults<RangeShapes>(
+    mesh.triangles.size(), trianglesPerRange, threads,
+    [&](RangeShapes& range, std::size_t first, std::size_t last)
+    {
+      for (std::size_t f = first; f < last; ++f)
+      {
+        const Triangle& t = mesh.triangles[f];
+        const Shape shape = shapeOf(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+        range.smallest = std::min(range.smallest, shape.smallest);
+        range.largest = std::max(range.largest, shape.largest);
+        range.below30 += angleUnder(shape.smallest, 30.0);
+        range.below10 += angleUnder(shape.smallest, 10.0);
+        aspects[f] = shape.aspect;
+        range.aspectSum += shape.aspect;
+      }
+    });
   double smallest = M_PI, largest = 0.0, aspectSum = 0.0;
   std::size_t below30 = 0, below10 = 0;
   for (const RangeShapes& range : ranges)

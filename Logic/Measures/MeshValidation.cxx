@@ -73,30 +73,27 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
     std::size_t degenerate = 0, below30 = 0;
     double area = 0.0, largestCosine = -1.0; // of the smallest angle of any triangle
   };
-  std::vector<TriangleSums> triangleSums(fixedRangeCount(nTriangles, rangeSize));
-  parallelForFixedRanges(nTriangles, rangeSize, 0,
-                         [&](std::size_t r, std::size_t firstTriangle, std::size_t lastTriangle)
-                         {
-                           // Kept apart from the other ranges' sums, which share cache lines, until the end.
-                           TriangleSums sums;
-                           for (std::size_t f = firstTriangle; f < lastTriangle; ++f)
-                           {
-                             const Triangle& t = mesh.triangles[f];
-                             const Point3* p[3] = { &mesh.points[t[0]], &mesh.points[t[1]], &mesh.points[t[2]] };
-                             const Point3 n = areaNormal(*p[0], *p[1], *p[2]);
-                             const double twiceArea = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-                             if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || twiceArea == 0.0)
-                               ++sums.degenerate;
-                             normals[f] = twiceArea > 0.0
-                                            ? std::array<double, 3>{ n.x / twiceArea, n.y / twiceArea, n.z / twiceArea }
-                                            : std::array<double, 3>{ 0.0, 0.0, 0.0 };
-                             sums.area += 0.5 * twiceArea;
-                             const double cosine = smallestAngleCosine(*p[0], *p[1], *p[2]);
-                             sums.largestCosine = std::max(sums.largestCosine, cosine);
-                             sums.below30 += cosine > cos30;
-                           }
-                           triangleSums[r] = sums;
-                         });
+  const std::vector<TriangleSums> triangleSums = fixedRangeResults<TriangleSums>(
+    nTriangles, rangeSize, 0,
+    [&](TriangleSums& sums, std::size_t firstTriangle, std::size_t lastTriangle)
+    {
+      for (std::size_t f = firstTriangle; f < lastTriangle; ++f)
+      {
+        const Triangle& t = mesh.triangles[f];
+        const Point3* p[3] = { &mesh.points[t[0]], &mesh.points[t[1]], &mesh.points[t[2]] };
+        const Point3 n = areaNormal(*p[0], *p[1], *p[2]);
+        const double twiceArea = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || twiceArea == 0.0)
+          ++sums.degenerate;
+        normals[f] = twiceArea > 0.0
+                       ? std::array<double, 3>{ n.x / twiceArea, n.y / twiceArea, n.z / twiceArea }
+                       : std::array<double, 3>{ 0.0, 0.0, 0.0 };
+        sums.area += 0.5 * twiceArea;
+        const double cosine = smallestAngleCosine(*p[0], *p[1], *p[2]);
+        sums.largestCosine = std::max(sums.largestCosine, cosine);
+        sums.below30 += cosine > cos30;
+      }
+    });
   double largestCosine = -1.0;
   std::size_t below30 = 0;
   for (const TriangleSums& sums : triangleSums)
@@ -115,39 +112,38 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
     std::size_t edges = 0, folded = 0, inconsistent = 0, boundary = 0, nonManifold = 0;
   };
   const std::size_t vertexRanges = fixedRangeCount(nPoints, rangeSize);
-  std::vector<EdgeCounts> edgeCounts(vertexRanges);
+  std::vector<EdgeCounts> edgeCounts;
   {
     const EdgeUses edgeUses(mesh, 0); // released once counted
-    parallelForFixedRanges(nPoints, rangeSize, 0,
-                           [&](std::size_t r, std::size_t firstPoint, std::size_t lastPoint)
-                           {
-                             EdgeCounts counts; // as the triangles' sums above
-                             for (std::size_t p = firstPoint; p < lastPoint; ++p)
-                               edgeUses.forEachEdgeOf(
-                                 p,
-                                 [&](const EdgeUse* first, const EdgeUse* last)
-                                 {
-                                   std::size_t forward = first->forward ? 1 : 0;
-                                   const std::array<double, 3>& m = normals[first->triangle];
-                                   for (const EdgeUse* j = first + 1; j != last; ++j)
-                                   { // unit normals nearly opposite: the triangles lie on top of each other
-                                     forward += j->forward ? 1 : 0;
-                                     const std::array<double, 3>& n = normals[j->triangle];
-                                     if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -foldCosine)
-                                       ++counts.folded;
-                                   }
-                                   const auto count = static_cast<std::size_t>(last - first);
-                                   const std::size_t backward = count - forward;
-                                   counts.inconsistent +=
-                                     (forward > 1 ? forward - 1 : 0) + (backward > 1 ? backward - 1 : 0);
-                                   ++counts.edges;
-                                   if (count == 1)
-                                     ++counts.boundary;
-                                   else if (count > 2)
-                                     ++counts.nonManifold;
-                                 });
-                             edgeCounts[r] = counts;
-                           });
+    edgeCounts = fixedRangeResults<EdgeCounts>(
+      nPoints, rangeSize, 0,
+      [&](EdgeCounts& counts, std::size_t firstPoint, std::size_t lastPoint)
+      {
+        for (std::size_t p = firstPoint; p < lastPoint; ++p)
+          edgeUses.forEachEdgeOf(
+            p,
+            [&](const EdgeUse* first, const EdgeUse* last)
+            {
+              std::size_t forward = first->forward ? 1 : 0;
+              const std::array<double, 3>& m = normals[first->triangle];
+              for (const EdgeUse* j = first + 1; j != last; ++j)
+              { // unit normals nearly opposite: the triangles lie on top of each other
+                forward += j->forward ? 1 : 0;
+                const std::array<double, 3>& n = normals[j->triangle];
+                if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -foldCosine)
+                  ++counts.folded;
+              }
+              const auto count = static_cast<std::size_t>(last - first);
+              const std::size_t backward = count - forward;
+              counts.inconsistent +=
+                (forward > 1 ? forward - 1 : 0) + (backward > 1 ? backward - 1 : 0);
+              ++counts.edges;
+              if (count == 1)
+                ++counts.boundary;
+              else if (count > 2)
+                ++counts.nonManifold;
+            });
+      });
   }
   std::size_t edges = 0;
   for (const EdgeCounts& counts : edgeCounts)

@@ -1,4 +1,4 @@
-// parallelFor on the worker pool: every index once, nested calls, failures, the pool's threads lent
+// parallelFor on the worker pool: every index once, fixed ranges' results in order, nested calls, failures, the pool's threads lent
 // again rather than new ones started for each call, and a forked child's own pool (no allocation
 // once the pool has grown: PoolAllocationTest.cxx).
 #include "Core/ParallelFor.h"
@@ -28,6 +28,35 @@ TEST(ParallelFor, CallsEveryIndexOnceOnAnyNumberOfThreads)
     parallelFor(calls.size(), threads, [&](std::size_t i) { ++calls[i]; });
     for (std::size_t i = 0; i < calls.size(); ++i)
       ASSERT_EQ(calls[i].load(), 1) << "index " << i << " on " << threads << " threads";
+  }
+}
+
+TEST(ParallelFor, FixedRangeResultsComeBackInRangeOrderOnAnyNumberOfThreads)
+{
+  // 10 ranges of 1000 (the last 500) of 9500 indices: each range's result starts value-initialized
+  // and holds what its body put there, whatever the threads.
+  struct Sum
+  {
+    std::size_t first = 0, total = 0, calls = 0;
+  };
+  for (unsigned int threads : { 1u, 2u, 8u })
+  {
+    const std::vector<Sum> sums = fixedRangeResults<Sum>(9500, 1000, threads,
+                                                         [](Sum& sum, std::size_t first, std::size_t last)
+                                                         {
+                                                           ++sum.calls;
+                                                           sum.first = first;
+                                                           for (std::size_t i = first; i < last; ++i)
+                                                             sum.total += i;
+                                                         });
+    ASSERT_EQ(sums.size(), 10u) << threads;
+    for (std::size_t r = 0; r < sums.size(); ++r)
+    {
+      const std::size_t first = 1000 * r, last = std::min<std::size_t>(9500, first + 1000);
+      EXPECT_EQ(sums[r].calls, 1u) << threads << " " << r;
+      EXPECT_EQ(sums[r].first, first) << threads << " " << r;
+      EXPECT_EQ(sums[r].total, (first + last - 1) * (last - first) / 2) << threads << " " << r;
+    }
   }
 }
 
