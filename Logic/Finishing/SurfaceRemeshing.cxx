@@ -13,10 +13,12 @@
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
+#include <chrono>
 #include <cmath>
 #include <deque>
 #include <future>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -393,6 +395,12 @@ public:
       m_Built.wait(); // the build reads the mesh and writes the tree
   }
 
+  /** Whether the tree is built (get() would not wait). */
+  bool built() const
+  {
+    return !m_Built.valid() || m_Built.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+  }
+
   const Tree& get() const
   {
     if (m_Built.valid())
@@ -405,113 +413,184 @@ private:
   std::shared_future<void> m_Built;
 };
 
-/** Remeshes one region of the input piece (all of it, or a slab or band of it): per round, a split,
- *  collapse and flip (splitCollapseFlip), then a relaxation sweep; after the last round, the projection
- *  onto the input piece (`tree`). A round's relaxation moves a vertex within its tangent plane by a
- *  fraction of an edge, so the rounds between stay close to a piece many edges across: projecting
- *  after each (as Botsch and Kobbelt do) gave the same distances and triangles within 0.3% for three
- *  times the projection's cost. A speck is projected after each (projectEachRound). Then the
- *  triangles still under 30 degrees are remeshed around (remeshAroundNarrowTriangles). The region's
- *  border, where it meets the rest of the piece, is kept exactly: its edges are neither split nor
- *  collapsed, its vertices not moved. Throws Error if the region does not fit a manifold surface. */
-MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions& options, const ProjectionTree& tree,
-                        unsigned int threads, const ContourStack* heldContours)
+/** Remeshes one region of the input piece (all of it, or a slab or band of it) in two steps: the
+ *  rounds, then the finish. Per round, a split, collapse and flip (splitCollapseFlip), then a
+ *  relaxation sweep; after the last round, the projection onto the input piece (the tree). A round's
+ *  relaxation moves a vertex within its tangent plane by a fraction of an edge, so the rounds between
+ *  stay close to a piece many edges across: projecting after each (as Botsch and Kobbelt do) gave the
+ *  same distances and triangles within 0.3% for three times the projection's cost. A speck is
+ *  projected after each (projectEachRound). Then the triangles still under 30 degrees are remeshed
+ *  around (remeshAroundNarrowTriangles). The region's border, where it meets the rest of the piece, is
+ *  kept exactly: its edges are neither split nor collapsed, its vertices not moved. The two steps
+ *  apart let a region whose rounds end before the tree is built wait without holding a thread
+ *  (remeshRegions). Throws Error if the region does not fit a manifold surface. */
+class RegionRemesh
 {
-  SurfaceMesh surface = surfaceOf(region.mesh);
-  auto origin = surface.add_property_map<Vertex, std::int32_t>("v:origin", -1).first;
-  for (Vertex v : surface.vertices())
-    origin[v] = region.origin[v.idx()];
-  // Kept: the border and every edge of a triangle that touches it. A flip or collapse next to the
-  // border could otherwise join two border vertices by a new edge, which the neighbouring region may
-  // have too: four triangles on one edge once the regions are put back together.
-  auto constrained = surface.add_property_map<SurfaceMesh::Edge_index, bool>("e:constrained", false).first;
-  for (Vertex v : surface.vertices())
-    if (surface.is_border(v))
-    {
-      for (SurfaceMesh::Face_index f : CGAL::faces_around_target(surface.halfedge(v), surface))
-        if (f != SurfaceMesh::null_face())
-          for (SurfaceMesh::Halfedge_index h : CGAL::halfedges_around_face(surface.halfedge(f), surface))
-            constrained[surface.edge(h)] = true;
-    }
-  // Drawn contours: their edges are constrained and their vertices neither relaxed nor projected
-  // (the passes keep a constrained edge's vertices where they are).
-  auto heldOnContour = surface.add_property_map<Vertex, bool>("v:held_on_contour", false).first;
-  // A point on a straight stretch of a contour (above all a crossing point the tiling put on a
-  // contour edge, a fraction of an edge from its end) may merge into a neighbour along it, away from
-  // the region's border: the contour stays as drawn.
-  auto slidingOnContour = surface.add_property_map<Vertex, bool>("v:sliding_on_contour", false).first;
-  if (heldContours)
+public:
+  RegionRemesh(const MeshRegion& region, const SurfaceRemeshingOptions& options, const ContourStack* heldContours)
+    : m_Surface(surfaceOf(region.mesh))
+    , m_Options(options)
+    , m_HeldContours(heldContours)
   {
-    const HeldContourEdges held = heldContourEdges(region.mesh, *heldContours);
-    for (Vertex v : surface.vertices())
+    m_Origin = m_Surface.add_property_map<Vertex, std::int32_t>("v:origin", -1).first;
+    for (Vertex v : m_Surface.vertices())
+      m_Origin[v] = region.origin[v.idx()];
+    // Kept: the border and every edge of a triangle that touches it. A flip or collapse next to the
+    // border could otherwise join two border vertices by a new edge, which the neighbouring region
+    // may have too: four triangles on one edge once the regions are put back together.
+    m_Constrained = m_Surface.add_property_map<SurfaceMesh::Edge_index, bool>("e:constrained", false).first;
+    for (Vertex v : m_Surface.vertices())
+      if (m_Surface.is_border(v))
+      {
+        for (SurfaceMesh::Face_index f : CGAL::faces_around_target(m_Surface.halfedge(v), m_Surface))
+          if (f != SurfaceMesh::null_face())
+            for (SurfaceMesh::Halfedge_index h : CGAL::halfedges_around_face(m_Surface.halfedge(f), m_Surface))
+              m_Constrained[m_Surface.edge(h)] = true;
+      }
+    // Drawn contours: their edges are constrained and their vertices neither relaxed nor projected
+    // (the passes keep a constrained edge's vertices where they are).
+    m_HeldOnContour = m_Surface.add_property_map<Vertex, bool>("v:held_on_contour", false).first;
+    // A point on a straight stretch of a contour (above all a crossing point the tiling put on a
+    // contour edge, a fraction of an edge from its end) may merge into a neighbour along it, away
+    // from the region's border: the contour stays as drawn.
+    m_SlidingOnContour = m_Surface.add_property_map<Vertex, bool>("v:sliding_on_contour", false).first;
+    if (heldContours)
+      holdContourEdges(region.mesh, *heldContours);
+    // Every vertex starts on the input piece (the tiling, or slabs already projected onto it).
+    m_OnInput = m_Surface.add_property_map<Vertex, Kernel::Point_3>("v:on_input", unknownPoint()).first;
+    for (Vertex v : m_Surface.vertices())
+      m_OnInput[v] = m_Surface.point(v);
+  }
+
+  RegionRemesh(const RegionRemesh&) = delete;
+  RegionRemesh& operator=(const RegionRemesh&) = delete;
+
+  /** The rounds but the last one's projection; `tree` is waited for only with projectEachRound. */
+  void rounds(const ProjectionTree& tree, unsigned int threads)
+  {
+    const ContourVertices contourVertices{ m_HeldOnContour, m_SlidingOnContour };
+    for (int round = 0; round < m_Options.iterations; ++round)
     {
-      heldOnContour[v] = held.vertices[v.idx()] != 0;
+      splitCollapseFlip(m_Surface, m_Constrained, m_Options.targetEdgeLength,
+                        m_HeldContours ? &contourVertices : nullptr);
+      m_Surface.collect_garbage(); // the next round's face index map must be dense
+      relaxTangentially(m_Surface, threads, freeVertices()); // the round's vertices, after its garbage went
+      if (m_Options.projectEachRound && round + 1 < m_Options.iterations)
+        projectOntoInput(m_Surface, m_OnInput, tree.get(), threads, freeVertices());
+    }
+  }
+
+  /** The last projection and the remesh around narrow triangles: the remeshed region. */
+  MeshRegion finish(const Tree& tree, unsigned int threads)
+  {
+    if (m_Options.iterations > 0)
+      projectOntoInput(m_Surface, m_OnInput, tree, threads, freeVertices());
+    remeshAroundNarrowTriangles(m_Surface, m_Constrained, m_Options.targetEdgeLength, m_OnInput, m_HeldOnContour,
+                                tree, threads);
+    MeshRegion result;
+    result.mesh = toTriangleMesh(m_Surface);
+    for (Vertex v : m_Surface.vertices())
+      result.origin.push_back(m_Origin[v]);
+    return result;
+  }
+
+private:
+  void holdContourEdges(const TriangleMesh& mesh, const ContourStack& contours)
+  {
+    const HeldContourEdges held = heldContourEdges(mesh, contours);
+    for (Vertex v : m_Surface.vertices())
+    {
+      m_HeldOnContour[v] = held.vertices[v.idx()] != 0;
       bool nearBorder = false;
-      for (SurfaceMesh::Halfedge_index h : CGAL::halfedges_around_target(v, surface))
-        nearBorder = nearBorder || constrained[surface.edge(h)];
-      slidingOnContour[v] = held.straight[v.idx()] != 0 && !nearBorder;
+      for (SurfaceMesh::Halfedge_index h : CGAL::halfedges_around_target(v, m_Surface))
+        nearBorder = nearBorder || m_Constrained[m_Surface.edge(h)];
+      m_SlidingOnContour[v] = held.straight[v.idx()] != 0 && !nearBorder;
     }
     for (const auto& [a, b] : held.edges)
     {
-      const SurfaceMesh::Halfedge_index h = surface.halfedge(Vertex(static_cast<SurfaceMesh::size_type>(a)),
-                                                             Vertex(static_cast<SurfaceMesh::size_type>(b)));
+      const SurfaceMesh::Halfedge_index h = m_Surface.halfedge(Vertex(static_cast<SurfaceMesh::size_type>(a)),
+                                                               Vertex(static_cast<SurfaceMesh::size_type>(b)));
       if (h != SurfaceMesh::null_halfedge())
-        constrained[surface.edge(h)] = true;
+        m_Constrained[m_Surface.edge(h)] = true;
     }
   }
-  const ContourVertices contourVertices{ heldOnContour, slidingOnContour };
-  std::vector<char> movable;
-  auto freeVertices = [&]() -> const std::vector<char>*
+
+  /** The vertices the relaxation and projection may move (null: all but the border's). */
+  const std::vector<char>* freeVertices()
   {
-    if (!heldContours)
+    if (!m_HeldContours)
       return nullptr;
-    movable.assign(surface.number_of_vertices(), 0);
-    for (Vertex v : surface.vertices())
-      movable[v.idx()] = !heldOnContour[v];
-    return &movable;
-  };
-  // Every vertex starts on the input piece (the tiling, or slabs already projected onto it).
-  auto onInput = surface.add_property_map<Vertex, Kernel::Point_3>("v:on_input", unknownPoint()).first;
-  for (Vertex v : surface.vertices())
-    onInput[v] = surface.point(v);
-  for (int round = 0; round < options.iterations; ++round)
-  {
-    splitCollapseFlip(surface, constrained, options.targetEdgeLength, heldContours ? &contourVertices : nullptr);
-    surface.collect_garbage(); // the next round's face index map must be dense
-    const std::vector<char>* free = freeVertices(); // the round's vertices, after its garbage went
-    relaxTangentially(surface, threads, free);
-    if (options.projectEachRound || round + 1 == options.iterations)
-      projectOntoInput(surface, onInput, tree.get(), threads, free);
+    m_Movable.assign(m_Surface.number_of_vertices(), 0);
+    for (Vertex v : m_Surface.vertices())
+      m_Movable[v.idx()] = !m_HeldOnContour[v];
+    return &m_Movable;
   }
-  remeshAroundNarrowTriangles(surface, constrained, options.targetEdgeLength, onInput, heldOnContour, tree.get(), threads);
-  MeshRegion result;
-  result.mesh = toTriangleMesh(surface);
-  for (Vertex v : surface.vertices())
-    result.origin.push_back(origin[v]);
-  return result;
+
+  SurfaceMesh m_Surface;
+  const SurfaceRemeshingOptions& m_Options;
+  const ContourStack* m_HeldContours;
+  SurfaceMesh::Property_map<Vertex, std::int32_t> m_Origin;
+  SurfaceMesh::Property_map<SurfaceMesh::Edge_index, bool> m_Constrained;
+  SurfaceMesh::Property_map<Vertex, bool> m_HeldOnContour;
+  SurfaceMesh::Property_map<Vertex, bool> m_SlidingOnContour;
+  SurfaceMesh::Property_map<Vertex, Kernel::Point_3> m_OnInput;
+  std::vector<char> m_Movable;
+};
+
+/** One region remeshed (RegionRemesh), both steps at once. */
+MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions& options, const ProjectionTree& tree,
+                        unsigned int threads, const ContourStack* heldContours)
+{
+  RegionRemesh remesh(region, options, heldContours);
+  remesh.rounds(tree, threads);
+  return remesh.finish(tree.get(), threads);
 }
 
 /** Remeshes the regions of `mesh` (regionOf, -1: left alone) side by side; a region that cannot be
- *  remeshed is kept as it was when `keepFailed`, else the whole call throws. */
+ *  remeshed is kept as it was when `keepFailed`, else the whole call throws. A region whose rounds
+ *  end before the tree is built waits for its finish until all have had their rounds: the threads
+ *  go on with other regions meanwhile instead of waiting with the one building the tree. */
 TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& regionOf, int count,
                            const SurfaceRemeshingOptions& options, const ProjectionTree& tree, unsigned int threads,
                            bool keepFailed, const ContourStack* heldContours)
 {
   std::vector<MeshRegion> regions(static_cast<std::size_t>(count));
+  std::vector<std::unique_ptr<RegionRemesh>> waiting(regions.size());
+  auto remeshed = [&](std::size_t r, auto&& step)
+  {
+    try
+    {
+      step();
+    }
+    catch (const std::exception&)
+    {
+      if (!keepFailed)
+        throw;
+      waiting[r].reset();
+      regions[r] = extractRegion(mesh, regionOf, static_cast<int>(r));
+    }
+  };
   parallelFor(regions.size(), threads,
               [&](std::size_t r)
               {
-                const MeshRegion region = extractRegion(mesh, regionOf, static_cast<int>(r));
-                try
-                {
-                  regions[r] = remeshRegion(region, options, tree, 1, heldContours);
-                }
-                catch (const std::exception&)
-                {
-                  if (!keepFailed)
-                    throw;
-                  regions[r] = region;
-                }
+                remeshed(r,
+                         [&]
+                         {
+                           auto remesh = std::make_unique<RegionRemesh>(
+                             extractRegion(mesh, regionOf, static_cast<int>(r)), options, heldContours);
+                           remesh->rounds(tree, 1);
+                           if (tree.built())
+                             regions[r] = remesh->finish(tree.get(), 1);
+                           else
+                             waiting[r] = std::move(remesh);
+                         });
+              });
+  parallelFor(regions.size(), threads,
+              [&](std::size_t r)
+              {
+                if (waiting[r])
+                  remeshed(r, [&] { regions[r] = waiting[r]->finish(tree.get(), 1); });
+                waiting[r].reset();
               });
   return reassembleRegions(mesh, regionOf, regions);
 }
