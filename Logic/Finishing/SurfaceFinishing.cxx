@@ -522,12 +522,12 @@ constexpr int roundsRemeshedAround = 3;
 constexpr int roundsPutBack = 8;
 
 /** The pairs of triangles of different pieces that cross each other, as the pieces are finished now. */
-std::vector<TrianglePair> piecesCrossing(const std::vector<FinishedPiece>& pieces)
+std::vector<TrianglePair> piecesCrossing(const std::vector<FinishedPiece>& pieces, unsigned int threads)
 {
   std::vector<const TriangleMesh*> meshes;
   for (const FinishedPiece& piece : pieces)
     meshes.push_back(&piece.mesh);
-  return crossingTriangles(meshes);
+  return crossingTriangles(meshes, threads);
 }
 
 /** Where each piece in a crossing pair crosses: the centroids of both triangles of each of its pairs
@@ -581,7 +581,7 @@ std::size_t separatePieces(std::vector<FinishedPiece>& pieces, const std::vector
 {
   for (int round = 0;;)
   {
-    const auto crossing = piecesCrossing(pieces);
+    const auto crossing = piecesCrossing(pieces, threads);
     std::vector<std::size_t> crossed, crossedSpecks;
     std::vector<std::vector<Point3>> places, speckPlaces;
     for (auto& [p, at] : crossingPlacesByPiece(pieces, crossing))
@@ -720,7 +720,7 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   }
   MeshValidation validation = joinedValidation(validations, crossingTriangles);
   // Each piece faces as its tiled self did; whether that is right depends on which piece lies inside which.
-  validation.misorientedComponents = misorientedComponents(finishedPieces, volumes);
+  validation.misorientedComponents = misorientedComponents(finishedPieces, volumes, threads);
   split = {}; // no longer needed: not held beside the joined copy of the pieces
   std::vector<std::size_t> firstTriangle;
   TriangleMesh joined = joinPieces(pieces, firstTriangle);

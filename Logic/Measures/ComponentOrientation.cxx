@@ -1,6 +1,7 @@
 #include "Measures/ComponentOrientation.h"
 
 #include "Core/BoundingBox.h"
+#include "Core/ParallelFor.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/MeshValidation.h"
 #include "Measures/SurfaceMeshConversion.h"
@@ -20,17 +21,22 @@ using SurfaceMesh = CgalSurfaceMesh;
 using SideOf = CGAL::Side_of_triangle_mesh<SurfaceMesh, Kernel>;
 
 /** A component held for inside/outside queries (CGAL's ray parity over an AABB tree, which shoots
- *  again when a ray grazes an edge). */
+ *  again when a ray grazes an edge). The tree is built here, not at the first query: the queries of
+ *  several threads would wait for it. */
 struct Enclosure
 {
   SurfaceMesh surface;
+  std::unique_ptr<SideOf::AABB_tree> tree;
   std::unique_ptr<SideOf> side;
 
   explicit Enclosure(const TriangleMesh& mesh)
   {
     if (toSurfaceMesh(mesh, surface) != mesh.triangles.size())
       throw Error("component orientation: a component is not a manifold surface");
-    side = std::make_unique<SideOf>(surface);
+    tree = std::make_unique<SideOf::AABB_tree>(faces(surface).first, faces(surface).second, surface,
+                                               get(CGAL::vertex_point, surface));
+    tree->build();
+    side = std::make_unique<SideOf>(*tree);
   }
 
   bool encloses(const Point3& p) const { return (*side)(Kernel::Point_3(p.x, p.y, p.z)) == CGAL::ON_BOUNDED_SIDE; }
@@ -38,7 +44,8 @@ struct Enclosure
 
 } // namespace
 
-std::size_t misorientedComponents(const std::vector<const TriangleMesh*>& components, const std::vector<double>& volumes)
+std::size_t misorientedComponents(const std::vector<const TriangleMesh*>& components, const std::vector<double>& volumes,
+                                  unsigned int threads)
 {
   const std::size_t n = components.size();
   if (n == 1)
@@ -47,29 +54,38 @@ std::size_t misorientedComponents(const std::vector<const TriangleMesh*>& compon
   boxes.reserve(n);
   for (const TriangleMesh* c : components)
     boxes.push_back(boxOfTriangles(*c));
-  // Most components nest in none: the boxes rule them out before any tree is built.
-  std::vector<std::unique_ptr<Enclosure>> enclosures(n);
-  std::size_t misoriented = 0;
+  // Surfaces that do not cross nest only if their boxes do: most components nest in none, and only
+  // a component whose box holds another's needs a tree.
+  auto mayEnclose = [&](std::size_t b, std::size_t a)
+  { return b != a && !components[b]->triangles.empty() && boxes[b].contains(boxes[a]); };
+  std::vector<char> needed(n, 0);
   for (std::size_t a = 0; a < n; ++a)
-  {
-    const TriangleMesh& component = *components[a];
-    if (component.triangles.empty())
-      continue;
-    const Point3& probe = component.points[static_cast<std::size_t>(component.triangles.front()[0])];
-    std::size_t depth = 0;
-    for (std::size_t b = 0; b < n; ++b)
-    {
-      // Surfaces that do not cross nest only if their boxes do.
-      if (b == a || components[b]->triangles.empty() || !boxes[b].contains(boxes[a]))
-        continue;
-      if (!enclosures[b])
-        enclosures[b] = std::make_unique<Enclosure>(*components[b]);
-      depth += enclosures[b]->encloses(probe);
-    }
-    const bool outward = depth % 2 == 0;
-    misoriented += outward ? !(volumes[a] > 0.0) : !(volumes[a] < 0.0);
-  }
-  return misoriented;
+    if (!components[a]->triangles.empty())
+      for (std::size_t b = 0; b < n; ++b)
+        needed[b] = needed[b] || mayEnclose(b, a);
+  std::vector<std::unique_ptr<Enclosure>> enclosures(n);
+  parallelFor(n, threads,
+              [&](std::size_t b)
+              {
+                if (needed[b])
+                  enclosures[b] = std::make_unique<Enclosure>(*components[b]);
+              });
+  std::vector<char> misoriented(n, 0);
+  parallelFor(n, threads,
+              [&](std::size_t a)
+              {
+                const TriangleMesh& component = *components[a];
+                if (component.triangles.empty())
+                  return;
+                const Point3& probe = component.points[static_cast<std::size_t>(component.triangles.front()[0])];
+                std::size_t depth = 0;
+                for (std::size_t b = 0; b < n; ++b)
+                  if (mayEnclose(b, a))
+                    depth += enclosures[b]->encloses(probe);
+                const bool outward = depth % 2 == 0;
+                misoriented[a] = outward ? !(volumes[a] > 0.0) : !(volumes[a] < 0.0);
+              });
+  return static_cast<std::size_t>(std::count(misoriented.begin(), misoriented.end(), 1));
 }
 
 std::size_t misorientedComponents(const TriangleMesh& mesh)

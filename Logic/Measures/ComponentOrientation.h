@@ -15,8 +15,10 @@ namespace slicemesh
  *  manifold and free of crossings (nesting is decided from one vertex of each component). */
 std::size_t misorientedComponents(const TriangleMesh& mesh);
 
-/** The same for meshes side by side, one closed component each, given their signed volumes. */
-std::size_t misorientedComponents(const std::vector<const TriangleMesh*>& components, const std::vector<double>& volumes);
+/** The same for meshes side by side, one closed component each, given their signed volumes; on up to
+ *  `threads` threads (0: every core). */
+std::size_t misorientedComponents(const std::vector<const TriangleMesh*>& components, const std::vector<double>& volumes,
+                                  unsigned int threads = 1);
 
 } // namespace slicemesh
 

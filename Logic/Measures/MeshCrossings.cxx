@@ -1,6 +1,7 @@
 #include "Measures/MeshCrossings.h"
 
 #include "Core/BoundingBox.h"
+#include "Core/ParallelFor.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
@@ -34,9 +35,10 @@ Kernel::Triangle_3 triangle(const TriangleMesh& mesh, std::size_t t)
 
 } // namespace
 
-std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh*>& meshes)
+std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh*>& meshes, unsigned int threads)
 {
-  // Meshes whose bounding boxes overlap another's: only their triangles can meet.
+  // Pairs of meshes whose bounding boxes overlap: only their triangles can meet, and only within
+  // the overlap of the two boxes.
   std::vector<Box> meshBoxes;
   for (std::size_t m = 0; m < meshes.size(); ++m)
   {
@@ -44,28 +46,68 @@ std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh
       continue;
     meshBoxes.push_back(tagged(boxOfTriangles(*meshes[m]), m, 0));
   }
-  std::vector<char> candidate(meshes.size(), 0);
+  std::vector<std::pair<std::size_t, std::size_t>> meshPairs;
   CGAL::box_self_intersection_d(meshBoxes.begin(), meshBoxes.end(),
                                 [&](const Box& a, const Box& b)
-                                { candidate[a.info().first] = candidate[b.info().first] = 1; });
-
-  std::vector<Box> boxes;
-  for (std::size_t m = 0; m < meshes.size(); ++m)
-    if (candidate[m])
-      for (std::size_t t = 0; t < meshes[m]->triangles.size(); ++t)
-        boxes.push_back(tagged(boxOfTriangle(*meshes[m], t), m, t));
-  std::vector<TrianglePair> crossing;
-  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(),
-                                [&](const Box& a, const Box& b)
                                 {
-                                  MeshTriangle ta{ a.info().first, a.info().second };
-                                  MeshTriangle tb{ b.info().first, b.info().second };
-                                  if (ta.mesh == tb.mesh)
-                                    return; // within one mesh: its own validation's concern
-                                  if (CGAL::do_intersect(triangle(*meshes[ta.mesh], ta.triangle),
-                                                         triangle(*meshes[tb.mesh], tb.triangle)))
-                                    crossing.push_back(ta.mesh < tb.mesh ? TrianglePair{ ta, tb } : TrianglePair{ tb, ta });
+                                  const std::size_t first = a.info().first, second = b.info().first;
+                                  meshPairs.emplace_back(std::min(first, second), std::max(first, second));
                                 });
+  std::sort(meshPairs.begin(), meshPairs.end());
+  // Each mesh's triangle boxes, once for all its pairs.
+  std::vector<char> paired(meshes.size(), 0);
+  for (const auto& [a, b] : meshPairs)
+    paired[a] = paired[b] = 1;
+  std::vector<std::vector<BoundingBox>> triangleBoxes(meshes.size());
+  parallelFor(meshes.size(), threads,
+              [&](std::size_t m)
+              {
+                if (!paired[m])
+                  return;
+                triangleBoxes[m].resize(meshes[m]->triangles.size());
+                for (std::size_t t = 0; t < meshes[m]->triangles.size(); ++t)
+                  triangleBoxes[m][t] = boxOfTriangle(*meshes[m], t);
+              });
+  // Pair by pair, side by side: the triangles of each mesh within the other's box, against each
+  // other (CGAL's box intersection), then the exact triangle test. Pairs within one mesh never come
+  // up, where the box intersection of all triangles together went through every pair of
+  // neighbouring triangles of every mesh only to pass them over.
+  std::vector<std::vector<TrianglePair>> crossingByPair(meshPairs.size());
+  parallelFor(meshPairs.size(), threads,
+              [&](std::size_t pair)
+              {
+                const auto [a, b] = meshPairs[pair];
+                BoundingBox overlap;
+                const BoundingBox boxA = boxOfTriangles(*meshes[a]), boxB = boxOfTriangles(*meshes[b]);
+                for (int axis = 0; axis < 3; ++axis)
+                {
+                  overlap.low[axis] = std::max(boxA.low[axis], boxB.low[axis]);
+                  overlap.high[axis] = std::min(boxA.high[axis], boxB.high[axis]);
+                }
+                auto within = [&](std::size_t m)
+                {
+                  std::vector<Box> boxes;
+                  for (std::size_t t = 0; t < triangleBoxes[m].size(); ++t)
+                    if (triangleBoxes[m][t].overlaps(overlap))
+                      boxes.push_back(tagged(triangleBoxes[m][t], m, t));
+                  return boxes;
+                };
+                std::vector<Box> inA = within(a), inB = within(b);
+                std::vector<TrianglePair>& crossing = crossingByPair[pair];
+                CGAL::box_intersection_d(inA.begin(), inA.end(), inB.begin(), inB.end(),
+                                         [&](const Box& x, const Box& y)
+                                         {
+                                           const MeshTriangle tx{ x.info().first, x.info().second };
+                                           const MeshTriangle ty{ y.info().first, y.info().second };
+                                           if (CGAL::do_intersect(triangle(*meshes[tx.mesh], tx.triangle),
+                                                                  triangle(*meshes[ty.mesh], ty.triangle)))
+                                             crossing.push_back(tx.mesh < ty.mesh ? TrianglePair{ tx, ty }
+                                                                                  : TrianglePair{ ty, tx });
+                                         });
+              });
+  std::vector<TrianglePair> crossing;
+  for (const std::vector<TrianglePair>& pairs : crossingByPair)
+    crossing.insert(crossing.end(), pairs.begin(), pairs.end());
   // The box intersection reports pairs in an order of its own: sorted, the caller's result does
   // not depend on it.
   std::sort(crossing.begin(), crossing.end());

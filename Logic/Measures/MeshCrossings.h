@@ -27,10 +27,11 @@ using TrianglePair = std::pair<MeshTriangle, MeshTriangle>;
 
 /** The pairs of triangles of different meshes that intersect or touch each other, the triangle of
  *  the lower mesh first, in increasing order. The meshes share no vertices, so any contact counts.
- *  Only meshes whose bounding boxes overlap are compared, and within them only triangles whose boxes
- *  overlap (CGAL's box intersection, then exact triangle tests): far less work than the
+ *  Only meshes whose bounding boxes overlap are compared, pair by pair on up to `threads` threads
+ *  (0: every core), and within a pair only triangles in the overlap of the two boxes whose own
+ *  boxes overlap (CGAL's box intersection, then exact triangle tests): far less work than the
  *  self-intersection test of the meshes taken together. */
-std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh*>& meshes);
+std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh*>& meshes, unsigned int threads = 1);
 
 } // namespace slicemesh
 
