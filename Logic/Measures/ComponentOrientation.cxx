@@ -100,7 +100,7 @@ std::size_t misorientedComponents(const TriangleMesh& mesh)
     pointers.push_back(&c);
     volumes.push_back(signedVolume(c));
   }
-  return misorientedComponents(pointers, volumes);
+  return misorientedComponents(pointers, volumes, 0); // on every core, as the rest of the topology check
 }
 
 } // namespace slicemesh
