@@ -5,7 +5,7 @@
 #include "Finishing/HeldContourEdges.h"
 #include "Finishing/RemeshingPasses.h"
 #include "Finishing/RemeshingRegions.h"
-#include "Finishing/TriangleMeshTree.h"
+#include "Measures/TriangleMeshTree.h"
 #include "Measures/TriangleAngles.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/SurfaceMeshConversion.h"

@@ -4,9 +4,9 @@
 #include "Core/ParallelFor.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/MeshValidation.h"
-#include "Measures/SurfaceMeshConversion.h"
+#include "Measures/TriangleMeshTree.h"
 
-#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/Side_of_triangle_mesh/Point_inside_vertical_ray_cast.h>
 
 #include <algorithm>
 #include <memory>
@@ -17,29 +17,28 @@ namespace
 {
 
 using Kernel = CgalKernel;
-using SurfaceMesh = CgalSurfaceMesh;
-using SideOf = CGAL::Side_of_triangle_mesh<SurfaceMesh, Kernel>;
+/** CGAL's inside/outside test (what its Side_of_triangle_mesh runs), over a tree of the component's
+ *  own triangles (TriangleMeshTree). */
+using RayParity = CGAL::internal::Point_inside_vertical_ray_cast<Kernel, TriangleMeshTree>;
 
 /** A component held for inside/outside queries (CGAL's ray parity over an AABB tree, which shoots
- *  again when a ray grazes an edge). The tree is built here, not at the first query: the queries of
- *  several threads would wait for it. */
+ *  again when a ray grazes an edge). The tree is built here, not at the first query (the queries of
+ *  several threads would wait for it), and on the component itself: a copy of it in CGAL's mesh
+ *  took as long to make as the tree. The component must outlive it. */
 struct Enclosure
 {
-  SurfaceMesh surface;
-  std::unique_ptr<SideOf::AABB_tree> tree;
-  std::unique_ptr<SideOf> side;
+  TriangleMeshTree tree;
 
   explicit Enclosure(const TriangleMesh& mesh)
   {
-    if (toSurfaceMesh(mesh, surface) != mesh.triangles.size())
-      throw Error("component orientation: a component is not a manifold surface");
-    tree = std::make_unique<SideOf::AABB_tree>(faces(surface).first, faces(surface).second, surface,
-                                               get(CGAL::vertex_point, surface));
-    tree->build();
-    side = std::make_unique<SideOf>(*tree);
+    insertTriangles(tree, mesh);
+    tree.build();
   }
 
-  bool encloses(const Point3& p) const { return (*side)(Kernel::Point_3(p.x, p.y, p.z)) == CGAL::ON_BOUNDED_SIDE; }
+  bool encloses(const Point3& p) const
+  {
+    return RayParity()(Kernel::Point_3(p.x, p.y, p.z), tree) == CGAL::ON_BOUNDED_SIDE;
+  }
 };
 
 } // namespace

@@ -5,7 +5,7 @@
 // planning system gives the contours. ContourAccuracyBenchmark measures the same on more shapes and
 // spacings (Documentation/Benchmark.md, "Contours against the true surface").
 #include "BenchmarkPhantoms.h"
-#include "Finishing/TriangleMeshTree.h"
+#include "Measures/TriangleMeshTree.h"
 #include "Measures/MeshQuality.h"
 #include "Measures/MeshValidation.h"
 #include "Measures/StackVolume.h"

@@ -2,7 +2,7 @@
 // bit for bit: on a bumpy closed surface, from points near it and far from it, with hints on the
 // surface near and far from the answer, and from points right on edges and corners, where several
 // triangles are equally close.
-#include "Finishing/TriangleMeshTree.h"
+#include "Measures/TriangleMeshTree.h"
 
 #include <gtest/gtest.h>
 
