@@ -54,6 +54,7 @@ std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh
                                   meshPairs.emplace_back(std::min(first, second), std::max(first, second));
                                 });
   std::sort(meshPairs.begin(), meshPairs.end());
+  meshPairs.erase(std::unique(meshPairs.begin(), meshPairs.end()), meshPairs.end());
   // Each mesh's triangle boxes, once for all its pairs.
   std::vector<char> paired(meshes.size(), 0);
   for (const auto& [a, b] : meshPairs)
