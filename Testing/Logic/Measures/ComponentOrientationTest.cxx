@@ -82,7 +82,9 @@ TEST(ComponentOrientation, AnIslandInACavityFacesOut)
     pointers.push_back(&p);
     volumes.push_back(signedVolume(p));
   }
-  EXPECT_EQ(misorientedComponents(pointers, volumes), 1u);
+  // On any number of threads (the trees built and the points tested side by side).
+  for (unsigned int threads : { 1u, 2u, 8u })
+    EXPECT_EQ(misorientedComponents(pointers, volumes, threads), 1u) << threads << " threads";
 }
 
 TEST(ComponentOrientation, TheTilingOfAHollowStackIsOriented)

@@ -4,6 +4,8 @@
 #include "Measures/MeshCrossings.h"
 #include "Tiling/SurfaceReconstruction.h"
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/intersections.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -100,6 +102,43 @@ TEST(MeshCrossings, TheCrossingTrianglePairsAreNamedInOrder)
   }
   EXPECT_TRUE(crossingTriangles({ &a, &apart }).empty());
   EXPECT_TRUE(crossingTriangles({ &a }).empty());
+}
+
+TEST(MeshCrossings, EveryPairOfEveryTwoMeshesOnAnyNumberOfThreads)
+{
+  // Five balls in a row, each overlapping the next (and one two along), one far: against every pair
+  // of triangles of different meshes tested exactly, on 1, 2 and 8 threads.
+  std::vector<TriangleMesh> balls;
+  for (double cx : { 0.0, 5.0, 10.0, 11.5, 20.0, 80.0 })
+    balls.push_back(ball(cx));
+  std::vector<const TriangleMesh*> meshes;
+  for (const TriangleMesh& b : balls)
+    meshes.push_back(&b);
+  auto triangleOf = [&](std::size_t m, std::size_t t)
+  {
+    auto point = [&](int corner)
+    {
+      const Point3& p = balls[m].points[static_cast<std::size_t>(balls[m].triangles[t][corner])];
+      return CGAL::Epick::Point_3(p.x, p.y, p.z);
+    };
+    return CGAL::Epick::Triangle_3(point(0), point(1), point(2));
+  };
+  std::vector<TrianglePair> everyPair;
+  for (std::size_t a = 0; a < balls.size(); ++a)
+    for (std::size_t b = a + 1; b < balls.size(); ++b)
+      for (std::size_t s = 0; s < balls[a].triangles.size(); ++s)
+        for (std::size_t t = 0; t < balls[b].triangles.size(); ++t)
+        {
+          const auto ts = triangleOf(a, s), tt = triangleOf(b, t);
+          if (CGAL::do_overlap(ts.bbox(), tt.bbox()) && CGAL::do_intersect(ts, tt))
+            everyPair.push_back({ { a, s }, { b, t } });
+        }
+  std::sort(everyPair.begin(), everyPair.end());
+  ASSERT_FALSE(everyPair.empty());
+  // Balls of radius 6 whose centres are less than 12 apart: 0-1, 0-2, 0-3, 1-2, 1-3, 2-3, 2-4, 3-4.
+  EXPECT_EQ(meshPairs(everyPair).size(), 8u);
+  for (unsigned int threads : { 1u, 2u, 8u })
+    EXPECT_EQ(crossingTriangles(meshes, threads), everyPair) << threads << " threads";
 }
 
 } // namespace
