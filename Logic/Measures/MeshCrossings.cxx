@@ -39,12 +39,14 @@ std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh
 {
   // Pairs of meshes whose bounding boxes overlap: only their triangles can meet, and only within
   // the overlap of the two boxes.
+  std::vector<BoundingBox> boxOfMesh(meshes.size());
   std::vector<Box> meshBoxes;
   for (std::size_t m = 0; m < meshes.size(); ++m)
   {
     if (meshes[m]->triangles.empty())
       continue;
-    meshBoxes.push_back(tagged(boxOfTriangles(*meshes[m]), m, 0));
+    boxOfMesh[m] = boxOfTriangles(*meshes[m]);
+    meshBoxes.push_back(tagged(boxOfMesh[m], m, 0));
   }
   std::vector<std::pair<std::size_t, std::size_t>> meshPairs;
   CGAL::box_self_intersection_d(meshBoxes.begin(), meshBoxes.end(),
@@ -79,11 +81,10 @@ std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh
               {
                 const auto [a, b] = meshPairs[pair];
                 BoundingBox overlap;
-                const BoundingBox boxA = boxOfTriangles(*meshes[a]), boxB = boxOfTriangles(*meshes[b]);
                 for (int axis = 0; axis < 3; ++axis)
                 {
-                  overlap.low[axis] = std::max(boxA.low[axis], boxB.low[axis]);
-                  overlap.high[axis] = std::min(boxA.high[axis], boxB.high[axis]);
+                  overlap.low[axis] = std::max(boxOfMesh[a].low[axis], boxOfMesh[b].low[axis]);
+                  overlap.high[axis] = std::min(boxOfMesh[a].high[axis], boxOfMesh[b].high[axis]);
                 }
                 auto within = [&](std::size_t m)
                 {
