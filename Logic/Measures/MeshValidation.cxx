@@ -252,6 +252,23 @@ MeshValidation validateMesh(const TriangleMesh& mesh, std::vector<std::pair<std:
   return v;
 }
 
+MeshValidation validateMeshAfterMoving(const TriangleMesh& mesh, bool checkedBefore, const std::vector<char>& moved,
+                                       std::vector<std::pair<std::size_t, std::size_t>>& crossings)
+{
+  if (!checkedBefore)
+    return validateMesh(mesh, crossings);
+  MeshValidation v = validateMeshTopology(mesh);
+  if (v.manifold() && v.inconsistentEdges == 0)
+  {
+    crossings = selfIntersectingTrianglePairsAfterMoving(mesh, crossings, moved);
+    v.selfIntersections = crossings.size();
+    v.selfIntersectionChecked = true;
+  }
+  else
+    crossings.clear();
+  return v;
+}
+
 MeshValidation validateMesh(const TriangleMesh& mesh)
 {
   std::vector<std::pair<std::size_t, std::size_t>> crossings;

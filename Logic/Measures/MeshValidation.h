@@ -55,6 +55,13 @@ MeshValidation validateMesh(const TriangleMesh& mesh);
  *  when the test was not run (a mesh not manifold). */
 MeshValidation validateMesh(const TriangleMesh& mesh, std::vector<std::pair<std::size_t, std::size_t>>& crossings);
 
+/** validateMesh(mesh, crossings) for a mesh whose vertices flagged in `moved` have moved since its
+ *  last validation (`crossings` holds that validation's pairs and is replaced by the new ones): only
+ *  the triangles that moved are tested for crossings (selfIntersectingTrianglePairsAfterMoving).
+ *  `checkedBefore`: whether that validation ran the self-intersection test; if not, the whole test. */
+MeshValidation validateMeshAfterMoving(const TriangleMesh& mesh, bool checkedBefore, const std::vector<char>& moved,
+                                       std::vector<std::pair<std::size_t, std::size_t>>& crossings);
+
 /** validateMesh without the self-intersection test (selfIntersectionChecked false): the topology,
  *  orientation and measures, in time linear in the triangles (and, for a mesh of several components
  *  whose boxes nest, O(n log n) to tell which component lies inside which). */

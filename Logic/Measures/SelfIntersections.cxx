@@ -4,6 +4,7 @@
 #include "Core/ParallelFor.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <mutex>
+#include <unordered_set>
 
 namespace slicemesh
 {
@@ -108,6 +110,14 @@ inline bool overlap(const BoundingBox& a, const BoundingBox& b)
 {
   return static_cast<bool>((a.low[0] <= b.high[0]) & (b.low[0] <= a.high[0]) & (a.low[1] <= b.high[1]) &
                            (b.low[1] <= a.high[1]) & (a.low[2] <= b.high[2]) & (b.low[2] <= a.high[2]));
+}
+
+TriangleCorners cornersOf(const TriangleMesh& mesh, std::size_t t)
+{
+  const Triangle& ids = mesh.triangles[t];
+  return { ids,
+           { mesh.points[static_cast<std::size_t>(ids[0])], mesh.points[static_cast<std::size_t>(ids[1])],
+             mesh.points[static_cast<std::size_t>(ids[2])] } };
 }
 
 Point corner(const TriangleMesh& mesh, std::int32_t v)
@@ -279,12 +289,7 @@ std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(c
                         for (std::size_t e = groupStart[g]; e < groupStart[g + 1]; ++e)
                         {
                           const std::uint32_t b = entries[e].second;
-                          const Triangle& ids = mesh.triangles[boxed[b]];
-                          members.push_back({ boxes[b], lowCell[b], boxed[b],
-                                              { ids,
-                                                { mesh.points[static_cast<std::size_t>(ids[0])],
-                                                  mesh.points[static_cast<std::size_t>(ids[1])],
-                                                  mesh.points[static_cast<std::size_t>(ids[2])] } } });
+                          members.push_back({ boxes[b], lowCell[b], boxed[b], cornersOf(mesh, boxed[b]) });
                         }
                         const std::uint64_t cell = entries[groupStart[g]].first;
                         for (std::size_t i = 0; i < members.size(); ++i)
@@ -305,6 +310,124 @@ std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(c
                       pairs.insert(pairs.end(), local.begin(), local.end());
                     },
                     64);
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+std::vector<std::pair<std::size_t, std::size_t>>
+selfIntersectingTrianglePairsAfterMoving(const TriangleMesh& mesh,
+                                         const std::vector<std::pair<std::size_t, std::size_t>>& before,
+                                         const std::vector<char>& moved, unsigned int threads)
+{
+  const std::size_t nTriangles = mesh.triangles.size();
+  std::vector<char> movedTriangle(nTriangles, 0);
+  std::vector<std::size_t> movedTriangles;
+  for (std::size_t t = 0; t < nTriangles; ++t)
+    for (std::int32_t v : mesh.triangles[t])
+      if (moved[static_cast<std::size_t>(v)])
+      {
+        movedTriangle[t] = 1;
+        movedTriangles.push_back(t);
+        break;
+      }
+  // Past a tenth of the mesh, sifting the rest for the triangles near the moved ones costs about
+  // what the whole test does.
+  if (10 * movedTriangles.size() > nTriangles)
+    return selfIntersectingTrianglePairs(mesh, threads);
+
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (const auto& pair : before)
+    if (!movedTriangle[pair.first] && !movedTriangle[pair.second])
+      pairs.push_back(pair);
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
+  auto boxOf = [&](std::size_t t)
+  {
+    BoundingBox box = boxOfTriangle(mesh, t); // by value: CGAL takes non-const arrays
+    return Box(box.low.data(), box.high.data(), t);
+  };
+  auto isDegenerate = [&](std::size_t t)
+  {
+    const Triangle& triangle = mesh.triangles[t];
+    return CGAL::collinear(corner(mesh, triangle[0]), corner(mesh, triangle[1]), corner(mesh, triangle[2]));
+  };
+  // The moved triangles' boxes, and the cells of a grid about as wide as the widest of them that
+  // they cover: a triangle that meets one of them has its box in one of those cells.
+  std::vector<Box> movedBoxes;
+  BoundingBox all;
+  double widest = 0.0;
+  for (std::size_t t : movedTriangles)
+  {
+    if (isDegenerate(t))
+    {
+      pairs.emplace_back(t, t);
+      continue;
+    }
+    const BoundingBox box = boxOfTriangle(mesh, t);
+    movedBoxes.push_back(boxOf(t));
+    all.add(box);
+    for (int axis = 0; axis < 3; ++axis)
+      widest = std::max(widest, box.high[axis] - box.low[axis]);
+  }
+  if (!movedBoxes.empty())
+  {
+    // The cells the moved boxes cover: a triangle whose box meets a moved box covers one of them.
+    const CellGrid grid(all.low, std::max(widest, 1e-300));
+    std::unordered_set<std::uint64_t> cells;
+    for (const Box& box : movedBoxes)
+    {
+      const auto from = grid.cellOf({ box.min_coord(0), box.min_coord(1), box.min_coord(2) });
+      const auto to = grid.cellOf({ box.max_coord(0), box.max_coord(1), box.max_coord(2) });
+      for (std::uint64_t x = from[0]; x <= to[0]; ++x)
+        for (std::uint64_t y = from[1]; y <= to[1]; ++y)
+          for (std::uint64_t z = from[2]; z <= to[2]; ++z)
+            cells.insert(CellGrid::key(x, y, z));
+    }
+    // A box over more cells than this is kept without looking: the exact test sorts it out.
+    constexpr std::uint64_t mostCellsLooked = 64;
+    auto reachesMovedCells = [&](const BoundingBox& box)
+    {
+      const auto from = grid.cellOf(box.low), to = grid.cellOf(box.high);
+      if (to[0] - from[0] >= mostCellsLooked || to[1] - from[1] >= mostCellsLooked ||
+          to[2] - from[2] >= mostCellsLooked || grid.cellsOf(box) > mostCellsLooked)
+        return true;
+      for (std::uint64_t x = from[0]; x <= to[0]; ++x)
+        for (std::uint64_t y = from[1]; y <= to[1]; ++y)
+          for (std::uint64_t z = from[2]; z <= to[2]; ++z)
+            if (cells.count(CellGrid::key(x, y, z)) > 0)
+              return true;
+      return false;
+    };
+    std::vector<char> near(nTriangles, 0);
+    parallelForRanges(nTriangles, threads,
+                      [&](std::size_t first, std::size_t last)
+                      {
+                        for (std::size_t t = first; t < last; ++t)
+                          near[t] = reachesMovedCells(boxOfTriangle(mesh, t)) && !isDegenerate(t);
+                      });
+    std::vector<Box> nearBoxes;
+    for (std::size_t t = 0; t < nTriangles; ++t)
+      if (near[t])
+        nearBoxes.push_back(boxOf(t));
+    std::vector<std::pair<std::size_t, std::size_t>> candidates;
+    CGAL::box_intersection_d(movedBoxes.begin(), movedBoxes.end(), nearBoxes.begin(), nearBoxes.end(),
+                             [&](const Box& a, const Box& b)
+                             {
+                               if (a.info() != b.info())
+                                 candidates.emplace_back(std::min(a.info(), b.info()), std::max(a.info(), b.info()));
+                             });
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    std::vector<char> crosses(candidates.size(), 0);
+    parallelForRanges(candidates.size(), threads,
+                      [&](std::size_t first, std::size_t last)
+                      {
+                        for (std::size_t i = first; i < last; ++i)
+                          crosses[i] = crossing(cornersOf(mesh, candidates[i].first), cornersOf(mesh, candidates[i].second));
+                      });
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+      if (crosses[i])
+        pairs.push_back(candidates[i]);
+  }
   std::sort(pairs.begin(), pairs.end());
   return pairs;
 }

@@ -1,5 +1,6 @@
 // selfIntersectingTrianglePairs: each way two triangles of one mesh can meet, and the grid that
-// finds the pairs to test (long triangles across many cells, far-apart pieces).
+// finds the pairs to test (long triangles across many cells, far-apart pieces); the test again after
+// some vertices moved, against the whole one.
 #include "Measures/SelfIntersections.h"
 
 #include <gtest/gtest.h>
@@ -126,4 +127,92 @@ TEST(SelfIntersections, ALongTriangleIsTestedAgainstEverySmallOneItPasses)
     EXPECT_EQ(pairs[i], (std::pair<std::size_t, std::size_t>{ i, 200 }));
   EXPECT_EQ(selfIntersectingTrianglePairs(mesh, 1), pairs);
   EXPECT_EQ(selfIntersectingTrianglePairs(mesh, 8), pairs);
+}
+
+TEST(SelfIntersections, AfterMovingSomeVerticesTheSamePairsAsTheWholeTest)
+{
+  // 300 small tetrahedra scattered in a box, many of them through each other; rounds of moving a
+  // few vertices (some onto a line with two others: degenerate triangles, some by several sizes of
+  // a tetrahedron: new crossings far away) and, every fifth round, a quarter of them (the whole test
+  // then). Each round's pairs from the last round's must be the whole test's.
+  TriangleMesh mesh;
+  std::uint64_t state = 12345;
+  auto uniform = [&state](double low, double high)
+  {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return low + (high - low) * static_cast<double>(state >> 11) / static_cast<double>(1ull << 53);
+  };
+  for (int i = 0; i < 300; ++i)
+  {
+    TriangleMesh one = tetrahedron();
+    const Point3 at{ uniform(0, 10), uniform(0, 10), uniform(0, 10) };
+    for (Point3& p : one.points)
+      p = { p.x + at.x, p.y + at.y, p.z + at.z };
+    mesh = joined(mesh, one);
+  }
+  Pairs before = selfIntersectingTrianglePairs(mesh);
+  ASSERT_GT(before.size(), 10u); // the test means something only if some cross
+  std::size_t degenerateSeen = 0;
+  for (int round = 0; round < 20; ++round)
+  {
+    std::vector<char> moved(mesh.points.size(), 0);
+    const double share = round % 5 == 4 ? 0.25 : 0.02;
+    for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    {
+      if (uniform(0, 1) >= share)
+        continue;
+      moved[v] = 1;
+      if (v % 4 == 0 && uniform(0, 1) < 0.3) // onto the middle of its tetrahedron's edge 1-2
+      {
+        const Point3& a = mesh.points[v + 1];
+        const Point3& b = mesh.points[v + 2];
+        mesh.points[v] = { (a.x + b.x) / 2, (a.y + b.y) / 2, (a.z + b.z) / 2 };
+      }
+      else
+      {
+        const double reach = uniform(0, 1) < 0.5 ? 0.3 : 4.0;
+        mesh.points[v] = { mesh.points[v].x + uniform(-reach, reach), mesh.points[v].y + uniform(-reach, reach),
+                           mesh.points[v].z + uniform(-reach, reach) };
+      }
+    }
+    const Pairs whole = selfIntersectingTrianglePairs(mesh);
+    const Pairs updated = selfIntersectingTrianglePairsAfterMoving(mesh, before, moved);
+    ASSERT_EQ(updated, whole) << "round " << round;
+    EXPECT_EQ(selfIntersectingTrianglePairsAfterMoving(mesh, before, moved, 1), whole);
+    EXPECT_EQ(selfIntersectingTrianglePairsAfterMoving(mesh, before, moved, 8), whole);
+    for (const auto& pair : whole)
+      degenerateSeen += pair.first == pair.second;
+    before = updated;
+  }
+  EXPECT_GT(degenerateSeen, 0u);
+}
+
+TEST(SelfIntersections, AfterMovingALongTriangleEverySmallOneItNowPassesIsFound)
+{
+  // The row of small triangles of the test above with the sliver beside it, then moved through it.
+  TriangleMesh mesh;
+  for (int i = 0; i < 200; ++i)
+  {
+    const auto first = static_cast<std::int32_t>(mesh.points.size());
+    mesh.points.push_back({ i + 0.5, -0.5, -0.5 });
+    mesh.points.push_back({ i + 0.5, 0.5, -0.5 });
+    mesh.points.push_back({ i + 0.5, 0.0, 0.5 });
+    mesh.triangles.push_back({ first, first + 1, first + 2 });
+  }
+  const auto first = static_cast<std::int32_t>(mesh.points.size());
+  mesh.points.push_back({ -1.0, 3.0, 0.0 });
+  mesh.points.push_back({ 201.0, 3.0, 0.0 });
+  mesh.points.push_back({ 201.0, 3.0, 0.01 });
+  mesh.triangles.push_back({ first, first + 1, first + 2 });
+  const Pairs before = selfIntersectingTrianglePairs(mesh);
+  ASSERT_TRUE(before.empty());
+  std::vector<char> moved(mesh.points.size(), 0);
+  for (std::size_t v = mesh.points.size() - 3; v < mesh.points.size(); ++v)
+  {
+    mesh.points[v].y = 0.0;
+    moved[v] = 1;
+  }
+  const Pairs after = selfIntersectingTrianglePairsAfterMoving(mesh, before, moved);
+  EXPECT_EQ(after.size(), 200u);
+  EXPECT_EQ(after, selfIntersectingTrianglePairs(mesh));
 }
