@@ -1,6 +1,7 @@
 #include "PipelineStructures.h"
 
 #include "ContourRepair.h"
+#include "MemoryBudget.h"
 #include "Core/PlanarGeometry.h"
 #include "PipelineStep.h"
 #include "SmallComponentRemoval.h"
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <iomanip>
 #include <iostream>
 #include <set>
 #include <sstream>
@@ -38,6 +40,15 @@ double mostCommon(std::vector<double> values)
       most = alike, common = value;
   }
   return common;
+}
+
+/** The largest distance between two neighbouring slices of the stack (mm). */
+double largestGap(const ContourStack& stack)
+{
+  double gap = 0.0;
+  for (std::size_t k = 1; k < stack.slices.size(); ++k)
+    gap = std::max(gap, stack.slices[k].z - stack.slices[k - 1].z);
+  return gap;
 }
 
 } // namespace
@@ -336,6 +347,22 @@ std::vector<Structure> roiStructures(const StructureSet& set, const std::optiona
     }
     for (const std::string& note : s.contours.notes)
       std::cerr << "SliceMesh: warning: " << who(s, "ROI") << oneLine(note) << std::endl;
+    // A gap between two slices is tiled whole, so a stray contour far from the others (a wrong
+    // position along the normal) makes a wall as high as the gap: refused here if that would not
+    // fit in memory, rather than tiled until the machine runs out of it.
+    try
+    {
+      const double triangles = estimatedTilingTriangles(s.contours.stack, s.contours.spacing[0]);
+      std::ostringstream what;
+      what << std::fixed << std::setprecision(1) << "tiled across its largest gap between slices ("
+           << largestGap(s.contours.stack) << " mm), about " << triangles / 1e6 << " million triangles,";
+      checkMemoryBudget(what.str(), tilingMemoryBytes(triangles));
+    }
+    catch (const Error& e)
+    {
+      s.report.error = e.what();
+      continue;
+    }
     if (repair.any())
       std::cerr << "SliceMesh: warning: " << who(s, "ROI") << repair.summary(settings.contours.repair.channelWidth)
                 << std::endl;

@@ -412,4 +412,34 @@ StackedContours stackContours(const std::vector<Polygon3>& contours, const Conto
   return result;
 }
 
+double estimatedTilingTriangles(const ContourStack& stack, double pointSpacing)
+{
+  if (!(pointSpacing > 0.0))
+    throw Error("estimatedTilingTriangles: the point spacing must be positive");
+  auto pointsOf = [pointSpacing](const Slice& slice)
+  {
+    double length = 0.0;
+    for (const Polygon2& contour : slice.contours)
+      for (std::size_t i = 0; i < contour.size(); ++i)
+      {
+        const Point2& a = contour[i];
+        const Point2& b = contour[(i + 1) % contour.size()];
+        length += std::hypot(b.x - a.x, b.y - a.y);
+      }
+    return std::ceil(length / pointSpacing);
+  };
+  double triangles = 0.0;
+  for (std::size_t k = 0; k < stack.slices.size(); ++k)
+  {
+    const double points = pointsOf(stack.slices[k]);
+    triangles += 2.0 * points; // its caps where the slices beside it have none
+    if (k + 1 < stack.slices.size() && points > 0.0)
+    {
+      const double rows = std::max(1.0, (stack.slices[k + 1].z - stack.slices[k].z) / pointSpacing);
+      triangles += (points + pointsOf(stack.slices[k + 1])) * rows;
+    }
+  }
+  return triangles;
+}
+
 } // namespace slicemesh

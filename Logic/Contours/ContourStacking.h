@@ -89,6 +89,13 @@ Vector3 sliceNormalOf(const std::vector<Polygon3>& contours);
  *  perimeter (small structures keep their shape), at least 0.5 mm. */
 double automaticPointSpacing(const ContourStack& stack);
 
+/** About how many triangles the tiling of `stack` makes with its contours resampled `pointSpacing`
+ *  apart: between two neighbouring slices with contours, rows about a point spacing high from one
+ *  to the other, two triangles per point and row; a cap per point. For a check before the tiling:
+ *  a gap is tiled whole, so the tiling grows with its height (two contours of one ROI a kilometre
+ *  apart make a wall a kilometre high), which nothing else in the input bounds. */
+double estimatedTilingTriangles(const ContourStack& stack, double pointSpacing);
+
 /** Sorts the contours into slices along the normal (options.sliceNormal when the contours lie on
  *  its planes, else sliceNormalOf):
  *  contours within the slice tolerance share a slice; a contour repeated in its slice is dropped;

@@ -20,6 +20,10 @@ double availableMemoryBytes();
  *  MemoryBudget.cxx). */
 double runMemoryBytes(double voxels, double volumeBytesPerVoxel);
 
+/** The memory a run needs at its peak to tile and finish about `triangles` tiled triangles (planar
+ *  contours: estimatedTilingTriangles), the program included (measured: see MemoryBudget.cxx). */
+double tilingMemoryBytes(double triangles);
+
 /** Throws slicemesh::Error ("<what> needs about X GiB of memory; Y GiB are available ...") when
  *  neededBytes exceed availableMemoryBytes(). Does nothing when the available memory is unknown. */
 void checkMemoryBudget(const std::string& what, double neededBytes);

@@ -266,6 +266,37 @@ TEST(StructureSet, AnROIBeyondAnyAnatomyFailsAloneAndTheOthersAreWritten)
   expectValid(run.folder / "rois" / "001_Annulus_nested.vtp");
 }
 
+TEST(StructureSet, AnROIWhoseSlicesAreAKilometreApartIsRefusedBeforeItIsTiled)
+{
+  // A set of one ROI drawn in two slices a kilometre apart (a stray contour's wrong position): the
+  // gap is its slice spacing, tiled whole it would be a wall a kilometre high, and the run went on
+  // until the machine ran out of memory. Refused at once, with the gap named; an existing output is
+  // left as it was. The limit makes the test the same on any machine (about 64 GiB are needed).
+  PlanarStructure stray = roi(3, "Stray", { 1, 2, 3 });
+  stray.contours.push_back(circle(0.0, 0.0, 0.0, 10.0));
+  stray.contours.push_back(circle(0.0, 0.0, 1.0e6, 10.0));
+  const fs::path folder = freshFolder("StructureSetStray");
+  writeRTStructureSet((folder / "RS.dcm").string(), { stray });
+  const fs::path out = folder / "all.vtp";
+  std::ofstream(out) << "kept";
+  const RunResult r = runCommand("SLICEMESH_MEMORY_LIMIT_MB=4096 " + quoted(SLICEMESH_EXECUTABLE) + " " +
+                                 quoted((folder / "RS.dcm").string()) + " " + quoted(out.string()));
+  EXPECT_EQ(r.exitCode, cli::MeshingFailed) << r.err;
+  EXPECT_TRUE(hasLine(r.err, "ROI 3 (Stray): tiled across its largest gap between slices (1000000.0 mm)")) << r.err;
+  EXPECT_TRUE(hasLine(r.err, "of memory")) << r.err;
+  EXPECT_EQ(fileText(out), "kept");
+  // The same ROI with its slices 30 mm apart fits the same limit and is meshed.
+  PlanarStructure near = roi(3, "Near", { 1, 2, 3 });
+  near.contours.push_back(circle(0.0, 0.0, 0.0, 10.0));
+  near.contours.push_back(circle(0.0, 0.0, 30.0, 10.0));
+  writeRTStructureSet((folder / "RS-near.dcm").string(), { near });
+  const RunResult meshed = runCommand("SLICEMESH_MEMORY_LIMIT_MB=4096 " + quoted(SLICEMESH_EXECUTABLE) + " " +
+                                      quoted((folder / "RS-near.dcm").string()) + " " +
+                                      quoted((folder / "near.vtp").string()));
+  EXPECT_EQ(meshed.exitCode, 0) << meshed.err;
+  expectValid(folder / "near.vtp");
+}
+
 TEST(StructureSet, EmptyAndSingleSliceROIsAreReportedAndTheOthersWritten)
 {
   PlanarStructure single = roi(8, "Single", { 1, 2, 3 });
