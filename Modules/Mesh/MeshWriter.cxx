@@ -2,6 +2,7 @@
 #include "MeshWriter.h"
 
 #include "DeflateCompressor.h"
+#include "RemovedOnSignal.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
@@ -375,6 +376,7 @@ void writeMesh(const TriangleMesh& physicalMesh, CoordinateSystem system, const 
   // Same folder, so the rename is atomic; hidden and unique per process, same extension for the writers.
   const fs::path temporary =
     folder / ("." + target.stem().string() + ".partial-" + std::to_string(::getpid()) + extension);
+  const RemovedOnSignal removedIfStopped(temporary.string());
   const std::string failure =
     writeByExtension(physicalMesh, system, extension, temporary.string(), hasAttributes ? &attributes : nullptr);
   if (!failure.empty())
