@@ -607,25 +607,50 @@ constexpr int bandRings = 3;
  *  be one region, remeshed on one thread; the mesh would be no worse. */
 constexpr double slabEdges = 2.0 * bandRings * 4.0 / 3.0 + 2.0;
 
-/** Remeshes one connected, closed piece, projecting onto it. A large piece is remeshed in slabs
- *  side by side, their seams kept, then in bands around the seams, side by side, so that no trace of
- *  the seams is left; the slabs and bands depend on the piece only, never on the threads. */
-TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads,
-                         const ContourStack* heldContours)
+/** The triangles not flagged in `keep` (none: every triangle) as one region, remeshed around the
+ *  kept ones, whose border is kept exactly as between slabs. */
+TriangleMesh remeshedAsOneRegion(const TriangleMesh& mesh, const std::vector<char>* keep, const SurfaceRemeshingOptions& options,
+                                 const ProjectionTree& tree, unsigned int threads, const ContourStack* heldContours)
 {
-  const ProjectionTree tree(mesh, threadCount(threads) > 1);
-  const std::size_t perRegion = options.trianglesPerRegion;
-  int slabs = 1;
-  const std::vector<int> slabOf = perRegion == 0 || mesh.triangles.size() < 2 * perRegion
-                                    ? std::vector<int>()
-                                    : slabRegions(mesh, perRegion, slabEdges * options.targetEdgeLength, slabs);
-  if (slabs == 1) // small, or too flat for two slabs
+  if (!keep)
   {
     MeshRegion whole{ mesh, {} };
     for (std::size_t v = 0; v < mesh.points.size(); ++v)
       whole.origin.push_back(static_cast<std::int32_t>(v));
     return remeshRegion(whole, options, tree, threads, heldContours).mesh;
   }
+  std::vector<int> regionOf(mesh.triangles.size());
+  for (std::size_t t = 0; t < keep->size(); ++t)
+    regionOf[t] = (*keep)[t] ? -1 : 0;
+  const std::vector<MeshRegion> remeshed{ remeshRegion(extractRegion(mesh, regionOf, 0), options, tree, threads, heldContours) };
+  return withoutUnusedVertices(reassembleRegions(mesh, regionOf, remeshed));
+}
+
+/** Remeshes one connected, closed piece, projecting onto it, except the triangles flagged in `keep`
+ *  (if given), which stay as they are. A large piece is remeshed in slabs side by side, their seams
+ *  kept, then in bands around the seams, side by side, so that no trace of the seams is left; the
+ *  slabs and bands depend on the piece only, never on the threads. Kept triangles belong to no slab
+ *  and no band: each region's border with them is kept, as its border with another region is. */
+TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads,
+                         const ContourStack* heldContours, const std::vector<char>* keep = nullptr)
+{
+  const ProjectionTree tree(mesh, threadCount(threads) > 1);
+  const std::size_t perRegion = options.trianglesPerRegion;
+  int slabs = 1;
+  std::vector<int> slabOf = perRegion == 0 || mesh.triangles.size() < 2 * perRegion
+                              ? std::vector<int>()
+                              : slabRegions(mesh, perRegion, slabEdges * options.targetEdgeLength, slabs);
+  if (slabs == 1) // small, or too flat for two slabs
+    return remeshedAsOneRegion(mesh, keep, options, tree, threads, heldContours);
+  std::vector<char> seam = seamVertices(mesh, slabOf); // between slabs, not around kept triangles
+  std::size_t kept = 0;
+  if (keep)
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+      if ((*keep)[t])
+      {
+        slabOf[t] = -1;
+        ++kept;
+      }
   TriangleMesh slabbed;
   try
   {
@@ -633,14 +658,13 @@ TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions
   }
   catch (const std::exception&) // a slab that is no manifold surface on its own (two fans at a vertex)
   {
-    SurfaceRemeshingOptions whole = options;
-    whole.trianglesPerRegion = 0;
-    return remeshPiece(mesh, whole, threads, heldContours);
+    return remeshedAsOneRegion(mesh, keep, options, tree, threads, heldContours);
   }
-  std::vector<char> seam = seamVertices(mesh, slabOf); // the slabs' own vertices come after the piece's
-  seam.resize(slabbed.points.size(), 0);
+  seam.resize(slabbed.points.size(), 0); // the slabs' own vertices come after the piece's
   int bands = 0;
-  const std::vector<int> bandOf = seamBands(slabbed, seam, bandRings, bands);
+  std::vector<int> bandOf = seamBands(slabbed, seam, bandRings, bands);
+  // The kept triangles come first in the reassembled mesh (reassembleRegions), in their order.
+  std::fill(bandOf.begin(), bandOf.begin() + static_cast<std::ptrdiff_t>(kept), -1);
   const TriangleMesh banded =
     remeshRegions(slabbed, bandOf, bands, options, tree, threads, /*keepFailed=*/true, heldContours);
   slabbed = TriangleMesh(); // not held beside the banded mesh and its copy without unused vertices
@@ -688,14 +712,9 @@ TriangleMesh remeshSurfaceAround(const TriangleMesh& mesh, const std::vector<cha
     throw Error("surface remeshing: one keep flag per triangle is needed");
   if (!remeshingAsked(mesh, options))
     return mesh;
-  const ProjectionTree tree(mesh, false);
-  std::vector<int> regionOf(mesh.triangles.size());
-  for (std::size_t t = 0; t < keep.size(); ++t)
-    regionOf[t] = keep[t] ? -1 : 0;
-  // One region: the kept triangles are few and scattered, and the region's border around them is
-  // kept exactly, as between slabs.
-  const std::vector<MeshRegion> remeshed{ remeshRegion(extractRegion(mesh, regionOf, 0), options, tree, threads, heldContours) };
-  return withoutUnusedVertices(reassembleRegions(mesh, regionOf, remeshed));
+  // In slabs and bands side by side as the first remesh: as one region, a large piece's remesh
+  // around its crossings ran on one thread.
+  return remeshPiece(mesh, options, threads, heldContours, &keep);
 }
 
 double voxelFaceEdgeLength(const std::array<double, 3>& spacing)
