@@ -31,6 +31,27 @@ TriangleMesh joined(const TriangleMesh& a, const TriangleMesh& b)
   return mesh;
 }
 
+/** A row of 200 small triangles across the x axis (at x = 0.5, 1.5, ...) and one sliver along it,
+ *  `y` off the axis: at y = 0 it passes through every small triangle. */
+TriangleMesh rowAndSliver(double y)
+{
+  TriangleMesh mesh;
+  for (int i = 0; i < 200; ++i)
+  {
+    const auto first = static_cast<std::int32_t>(mesh.points.size());
+    mesh.points.push_back({ i + 0.5, -0.5, -0.5 });
+    mesh.points.push_back({ i + 0.5, 0.5, -0.5 });
+    mesh.points.push_back({ i + 0.5, 0.0, 0.5 });
+    mesh.triangles.push_back({ first, first + 1, first + 2 });
+  }
+  const auto first = static_cast<std::int32_t>(mesh.points.size());
+  mesh.points.push_back({ -1.0, y, 0.0 });
+  mesh.points.push_back({ 201.0, y, 0.0 });
+  mesh.points.push_back({ 201.0, y, 0.01 });
+  mesh.triangles.push_back({ first, first + 1, first + 2 });
+  return mesh;
+}
+
 } // namespace
 
 TEST(SelfIntersections, AClosedConvexMeshHasNone)
@@ -107,20 +128,7 @@ TEST(SelfIntersections, ALongTriangleIsTestedAgainstEverySmallOneItPasses)
 {
   // A row of 200 small triangles and one sliver through all of them: the sliver covers many cells
   // of a grid sized for the small ones, and crosses each once.
-  TriangleMesh mesh;
-  for (int i = 0; i < 200; ++i)
-  {
-    const auto first = static_cast<std::int32_t>(mesh.points.size());
-    mesh.points.push_back({ i + 0.5, -0.5, -0.5 });
-    mesh.points.push_back({ i + 0.5, 0.5, -0.5 });
-    mesh.points.push_back({ i + 0.5, 0.0, 0.5 });
-    mesh.triangles.push_back({ first, first + 1, first + 2 });
-  }
-  const auto first = static_cast<std::int32_t>(mesh.points.size());
-  mesh.points.push_back({ -1.0, 0.0, 0.0 });
-  mesh.points.push_back({ 201.0, 0.0, 0.0 });
-  mesh.points.push_back({ 201.0, 0.0, 0.01 });
-  mesh.triangles.push_back({ first, first + 1, first + 2 });
+  const TriangleMesh mesh = rowAndSliver(0.0);
   const Pairs pairs = selfIntersectingTrianglePairs(mesh);
   ASSERT_EQ(pairs.size(), 200u);
   for (std::size_t i = 0; i < pairs.size(); ++i)
@@ -190,20 +198,7 @@ TEST(SelfIntersections, AfterMovingSomeVerticesTheSamePairsAsTheWholeTest)
 TEST(SelfIntersections, AfterMovingALongTriangleEverySmallOneItNowPassesIsFound)
 {
   // The row of small triangles of the test above with the sliver beside it, then moved through it.
-  TriangleMesh mesh;
-  for (int i = 0; i < 200; ++i)
-  {
-    const auto first = static_cast<std::int32_t>(mesh.points.size());
-    mesh.points.push_back({ i + 0.5, -0.5, -0.5 });
-    mesh.points.push_back({ i + 0.5, 0.5, -0.5 });
-    mesh.points.push_back({ i + 0.5, 0.0, 0.5 });
-    mesh.triangles.push_back({ first, first + 1, first + 2 });
-  }
-  const auto first = static_cast<std::int32_t>(mesh.points.size());
-  mesh.points.push_back({ -1.0, 3.0, 0.0 });
-  mesh.points.push_back({ 201.0, 3.0, 0.0 });
-  mesh.points.push_back({ 201.0, 3.0, 0.01 });
-  mesh.triangles.push_back({ first, first + 1, first + 2 });
+  TriangleMesh mesh = rowAndSliver(3.0);
   const Pairs before = selfIntersectingTrianglePairs(mesh);
   ASSERT_TRUE(before.empty());
   std::vector<char> moved(mesh.points.size(), 0);
