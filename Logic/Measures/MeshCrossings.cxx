@@ -7,6 +7,7 @@
 #include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
+#include <array>
 
 namespace slicemesh
 {
@@ -57,19 +58,39 @@ std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh
                                 });
   std::sort(meshPairs.begin(), meshPairs.end());
   meshPairs.erase(std::unique(meshPairs.begin(), meshPairs.end()), meshPairs.end());
-  // Each mesh's triangle boxes, once for all its pairs.
-  std::vector<char> paired(meshes.size(), 0);
-  for (const auto& [a, b] : meshPairs)
-    paired[a] = paired[b] = 1;
-  std::vector<std::vector<BoundingBox>> triangleBoxes(meshes.size());
+  // For each mesh, its triangles within each partner's box, from one box intersection of its
+  // triangles' boxes with its partners' boxes: a mesh whose box holds a thousand others (a brain's
+  // outer surface around the specks of a thresholded MRI) was scanned whole once per partner.
+  // Within a partner's box is within the overlap of the two boxes: a triangle's box lies in its own
+  // mesh's box.
+  std::vector<std::vector<std::pair<std::size_t, int>>> partnersOf(meshes.size()); // (pair, side)
+  for (std::size_t pair = 0; pair < meshPairs.size(); ++pair)
+  {
+    partnersOf[meshPairs[pair].first].emplace_back(pair, 0);
+    partnersOf[meshPairs[pair].second].emplace_back(pair, 1);
+  }
+  std::vector<std::array<std::vector<Box>, 2>> within(meshPairs.size()); // each pair's triangles of each side
   parallelFor(meshes.size(), threads,
               [&](std::size_t m)
               {
-                if (!paired[m])
+                if (partnersOf[m].empty())
                   return;
-                triangleBoxes[m].resize(meshes[m]->triangles.size());
-                for (std::size_t t = 0; t < meshes[m]->triangles.size(); ++t)
-                  triangleBoxes[m][t] = boxOfTriangle(*meshes[m], t);
+                std::vector<Box> triangles(meshes[m]->triangles.size());
+                for (std::size_t t = 0; t < triangles.size(); ++t)
+                  triangles[t] = tagged(boxOfTriangle(*meshes[m], t), m, t);
+                std::vector<Box> partners;
+                for (std::size_t i = 0; i < partnersOf[m].size(); ++i)
+                {
+                  const auto [pair, side] = partnersOf[m][i];
+                  const std::size_t other = side == 0 ? meshPairs[pair].second : meshPairs[pair].first;
+                  partners.push_back(tagged(boxOfMesh[other], other, i));
+                }
+                CGAL::box_intersection_d(triangles.begin(), triangles.end(), partners.begin(), partners.end(),
+                                         [&](const Box& triangle, const Box& partner)
+                                         {
+                                           const auto [pair, side] = partnersOf[m][partner.info().second];
+                                           within[pair][static_cast<std::size_t>(side)].push_back(triangle);
+                                         });
               });
   // Pair by pair, side by side: the triangles of each mesh within the other's box, against each
   // other (CGAL's box intersection), then the exact triangle test. Pairs within one mesh never come
@@ -79,22 +100,8 @@ std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh
   parallelFor(meshPairs.size(), threads,
               [&](std::size_t pair)
               {
-                const auto [a, b] = meshPairs[pair];
-                BoundingBox overlap;
-                for (int axis = 0; axis < 3; ++axis)
-                {
-                  overlap.low[axis] = std::max(boxOfMesh[a].low[axis], boxOfMesh[b].low[axis]);
-                  overlap.high[axis] = std::min(boxOfMesh[a].high[axis], boxOfMesh[b].high[axis]);
-                }
-                auto within = [&](std::size_t m)
-                {
-                  std::vector<Box> boxes;
-                  for (std::size_t t = 0; t < triangleBoxes[m].size(); ++t)
-                    if (triangleBoxes[m][t].overlaps(overlap))
-                      boxes.push_back(tagged(triangleBoxes[m][t], m, t));
-                  return boxes;
-                };
-                std::vector<Box> inA = within(a), inB = within(b);
+                std::vector<Box>& inA = within[pair][0];
+                std::vector<Box>& inB = within[pair][1];
                 std::vector<TrianglePair>& crossing = crossingByPair[pair];
                 CGAL::box_intersection_d(inA.begin(), inA.end(), inB.begin(), inB.end(),
                                          [&](const Box& x, const Box& y)
@@ -106,6 +113,8 @@ std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh
                                              crossing.push_back(tx.mesh < ty.mesh ? TrianglePair{ tx, ty }
                                                                                   : TrianglePair{ ty, tx });
                                          });
+                inA = std::vector<Box>(); // not held beside the other pairs'
+                inB = std::vector<Box>();
               });
   std::vector<TrianglePair> crossing;
   for (const std::vector<TrianglePair>& pairs : crossingByPair)
