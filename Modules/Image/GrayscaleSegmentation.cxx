@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace slicemesh
@@ -29,6 +30,40 @@ std::string intensityRangeText(const ScalarVolume* volume)
     text << "the intensities run from " << lowest << " to " << highest;
   return text.str();
 }
+
+namespace
+{
+
+/** The volume the denoising reads: `volume` itself, or, where some voxels have no intensity (NaN or
+ *  infinite: outside a processed MRI's brain mask, say) and a filter will spread them, a copy with
+ *  those voxels at the lowest finite intensity, as background. Spread by a Gaussian, a few NaN
+ *  voxels made every voxel NaN and nothing could be thresholded. */
+ScalarVolume::ConstPointer finiteForSmoothing(const ScalarVolume* volume, const DenoisingOptions& denoising)
+{
+  if (!denoising.any())
+    return volume;
+  const float* voxel = volume->GetBufferPointer();
+  const std::size_t count = volume->GetBufferedRegion().GetNumberOfPixels();
+  float lowest = std::numeric_limits<float>::infinity();
+  bool anyNonFinite = false;
+  for (std::size_t n = 0; n < count; ++n)
+    if (std::isfinite(voxel[n]))
+      lowest = std::min(lowest, voxel[n]);
+    else
+      anyNonFinite = true;
+  if (!anyNonFinite || !std::isfinite(lowest))
+    return volume; // every voxel finite; or none, which the thresholds report
+  ScalarVolume::Pointer copy = ScalarVolume::New();
+  copy->CopyInformation(volume);
+  copy->SetRegions(volume->GetBufferedRegion());
+  copy->Allocate();
+  float* out = copy->GetBufferPointer();
+  for (std::size_t n = 0; n < count; ++n)
+    out[n] = std::isfinite(voxel[n]) ? voxel[n] : lowest;
+  return copy;
+}
+
+} // namespace
 
 GrayscaleMask segmentGrayscale(const ScalarVolume* volume, const GrayscaleSegmentationOptions& options)
 {
@@ -77,7 +112,8 @@ GrayscaleMask segmentGrayscale(const ScalarVolume* volume, const GrayscaleSegmen
 
   DenoisingOptions denoising = options.denoising;
   denoising.dimension = options.dimension;
-  const ScalarVolume::Pointer smooth = denoiseVolume(volume, denoising);
+  const ScalarVolume::ConstPointer smoothable = finiteForSmoothing(volume, denoising);
+  const ScalarVolume::Pointer smooth = denoiseVolume(smoothable, denoising);
 
   GrayscaleMask result;
   result.mask = MaskVolume::New();
@@ -88,10 +124,12 @@ GrayscaleMask segmentGrayscale(const ScalarVolume* volume, const GrayscaleSegmen
   unsigned char* out = result.mask->GetBufferPointer();
   const std::size_t count = volume->GetBufferedRegion().GetNumberOfPixels();
   std::size_t inside = 0;
+  const float* given = volume->GetBufferPointer();
   for (std::size_t n = 0; n < count; ++n)
   {
     const double v = in[n];
-    const bool in = v >= lower && (upperInclusive ? v <= upper : v < upper);
+    // A voxel without an intensity (NaN, infinite) is outside, smoothed or not.
+    const bool in = std::isfinite(given[n]) && v >= lower && (upperInclusive ? v <= upper : v < upper);
     out[n] = in ? 1 : 0;
     inside += in;
   }

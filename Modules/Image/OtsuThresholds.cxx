@@ -15,7 +15,9 @@ std::vector<double> otsuThresholds(const ScalarVolume* volume, unsigned int coun
   if (count == 0)
     throw Error("Otsu: the number of thresholds must be at least 1");
   const auto range = finiteIntensityRange(volume);
-  if (!range || range->first == range->second)
+  if (!range)
+    throw Error("no voxel has a finite intensity (every one is NaN or infinite); Otsu's thresholds separate nothing");
+  if (range->first == range->second)
     throw Error("every voxel has the same value; Otsu's thresholds separate nothing");
 
   using Calculator = itk::OtsuMultipleThresholdsCalculator<IntensityHistogram>;

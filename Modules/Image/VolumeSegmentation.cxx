@@ -244,7 +244,9 @@ MaskVolume::Pointer segmentVolume(const ScalarVolume* volume, const Segmentation
     // Otsu's method needs two populations; a uniform volume has none to separate (NaN and
     // infinities are not intensities: left out, as from the histogram).
     const auto range = finiteIntensityRange(volume);
-    if (!range || range->first == range->second)
+    if (!range)
+      throw Error(volumeName(volume) + ": no voxel has a finite intensity (every one is NaN or infinite); nothing to threshold");
+    if (range->first == range->second)
       throw Error(volumeName(volume) + ": every voxel has the same value; Otsu's threshold separates nothing");
     threshold = otsuThreshold(volume);
   }

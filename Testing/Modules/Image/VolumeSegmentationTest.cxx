@@ -203,6 +203,36 @@ TEST(VolumeSegmentation, OtsuLeavesNaNAndInfinitiesOut)
   EXPECT_THROW(otsuThresholds(uniform, 1), Error);
 }
 
+TEST(VolumeSegmentation, SmoothingDoesNotSpreadNaN)
+{
+  // A Gaussian spread two NaN voxels (outside a processed MRI's mask, say) over every voxel, and
+  // nothing could be thresholded. They are smoothed as background now and stay outside: far from
+  // the object, the mask is the clean volume's.
+  SegmentationOptions options;
+  options.kind = InputKind::Grayscale;
+  options.grayscale.method = ThresholdMethod::Manual;
+  options.grayscale.threshold = 55.0;
+  options.grayscale.denoising.gaussianSigma = 1.0;
+  const MaskVolume::Pointer expected = segmentVolume(grayscaleVolume(), options);
+  ASSERT_GT(countInside(expected), 500u);
+  for (const ProcessingDimension dimension : { ProcessingDimension::Slice2D, ProcessingDimension::Volume3D })
+  {
+    options.grayscale.dimension = dimension;
+    const MaskVolume::Pointer clean = segmentVolume(grayscaleVolume(), options);
+    const auto volume = grayscaleVolume();
+    volume->SetPixel({ { 0, 0, 0 } }, std::numeric_limits<float>::quiet_NaN());
+    volume->SetPixel({ { 19, 19, 19 } }, std::numeric_limits<float>::infinity());
+    const MaskVolume::Pointer mask = segmentVolume(volume, options);
+    for (std::size_t n = 0; n < volume->GetBufferedRegion().GetNumberOfPixels(); ++n)
+      ASSERT_EQ(mask->GetBufferPointer()[n], clean->GetBufferPointer()[n]) << n;
+  }
+  // A volume without any finite voxel says so.
+  auto empty = makeVolume({ 4, 4, 4 });
+  empty->FillBuffer(std::numeric_limits<float>::quiet_NaN());
+  const std::string message = errorMessageOf(empty, SegmentationOptions{});
+  EXPECT_NE(message.find("no voxel has a finite intensity"), std::string::npos) << message;
+}
+
 TEST(VolumeSegmentation, NegativeIntegersAreGrayscale)
 {
   // CT-like integer values with negatives: not a label map, so Otsu splits air from tissue.
