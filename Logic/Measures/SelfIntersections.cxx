@@ -51,6 +51,19 @@ public:
 
   double size() const { return m_Size; }
 
+  /** Calls visit(key) for each cell the box covers, until a call returns true; whether one did. */
+  template <typename Visit>
+  bool anyCovered(const BoundingBox& box, Visit&& visit) const
+  {
+    const auto from = cellOf(box.low), to = cellOf(box.high);
+    for (std::uint64_t x = from[0]; x <= to[0]; ++x)
+      for (std::uint64_t y = from[1]; y <= to[1]; ++y)
+        for (std::uint64_t z = from[2]; z <= to[2]; ++z)
+          if (visit(key(x, y, z)))
+            return true;
+    return false;
+  }
+
 private:
   std::array<double, 3> m_Origin;
   double m_Size;
@@ -218,14 +231,6 @@ std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(c
   const CellGrid grid = gridFor(boxes, all);
   constexpr std::size_t bins = 256;
   auto binOf = [](std::uint64_t key) { return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 56); };
-  auto forEachCell = [&grid](const BoundingBox& box, auto&& visit)
-  {
-    const auto from = grid.cellOf(box.low), to = grid.cellOf(box.high);
-    for (std::uint64_t x = from[0]; x <= to[0]; ++x)
-      for (std::uint64_t y = from[1]; y <= to[1]; ++y)
-        for (std::uint64_t z = from[2]; z <= to[2]; ++z)
-          visit(CellGrid::key(x, y, z));
-  };
   // Ranges of boxes fixed by the count alone, so that the layout does not depend on the threads.
   constexpr std::size_t boxesPerRange = 16384;
   const std::size_t ranges = fixedRangeCount(boxes.size(), boxesPerRange);
@@ -234,7 +239,10 @@ std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(c
                          [&](std::size_t r, std::size_t firstBox, std::size_t lastBox)
                          {
                            for (std::size_t b = firstBox; b < lastBox; ++b)
-                             forEachCell(boxes[b], [&](std::uint64_t key) { ++counts[r * bins + binOf(key)]; });
+                             grid.anyCovered(boxes[b], [&](std::uint64_t key) {
+                               ++counts[r * bins + binOf(key)];
+                               return false;
+                             });
                          });
   // Bin by bin, range by range: where each range's entries of each bin go.
   std::vector<std::size_t> binStart(bins + 1, 0), next(ranges * bins);
@@ -253,8 +261,10 @@ std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(c
                          [&](std::size_t r, std::size_t firstBox, std::size_t lastBox)
                          {
                            for (std::size_t b = firstBox; b < lastBox; ++b)
-                             forEachCell(boxes[b], [&](std::uint64_t key)
-                                         { entries[next[r * bins + binOf(key)]++] = { key, static_cast<std::uint32_t>(b) }; });
+                             grid.anyCovered(boxes[b], [&](std::uint64_t key) {
+                               entries[next[r * bins + binOf(key)]++] = { key, static_cast<std::uint32_t>(b) };
+                               return false;
+                             });
                          });
   parallelFor(bins, threads,
               [&](std::size_t bin)
@@ -340,11 +350,8 @@ selfIntersectingTrianglePairsAfterMoving(const TriangleMesh& mesh,
     if (!movedTriangle[pair.first] && !movedTriangle[pair.second])
       pairs.push_back(pair);
   using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
-  auto boxOf = [&](std::size_t t)
-  {
-    BoundingBox box = boxOfTriangle(mesh, t); // by value: CGAL takes non-const arrays
-    return Box(box.low.data(), box.high.data(), t);
-  };
+  auto tagged = [](BoundingBox box, std::size_t t) // by value: CGAL takes non-const arrays
+  { return Box(box.low.data(), box.high.data(), t); };
   auto isDegenerate = [&](std::size_t t)
   {
     const Triangle& triangle = mesh.triangles[t];
@@ -353,6 +360,7 @@ selfIntersectingTrianglePairsAfterMoving(const TriangleMesh& mesh,
   // The moved triangles' boxes, and the cells of a grid about as wide as the widest of them that
   // they cover: a triangle that meets one of them has its box in one of those cells.
   std::vector<Box> movedBoxes;
+  std::vector<BoundingBox> movedBounds;
   BoundingBox all;
   double widest = 0.0;
   for (std::size_t t : movedTriangles)
@@ -363,7 +371,8 @@ selfIntersectingTrianglePairsAfterMoving(const TriangleMesh& mesh,
       continue;
     }
     const BoundingBox box = boxOfTriangle(mesh, t);
-    movedBoxes.push_back(boxOf(t));
+    movedBounds.push_back(box);
+    movedBoxes.push_back(tagged(box, t));
     all.add(box);
     for (int axis = 0; axis < 3; ++axis)
       widest = std::max(widest, box.high[axis] - box.low[axis]);
@@ -373,15 +382,11 @@ selfIntersectingTrianglePairsAfterMoving(const TriangleMesh& mesh,
     // The cells the moved boxes cover: a triangle whose box meets a moved box covers one of them.
     const CellGrid grid(all.low, std::max(widest, 1e-300));
     std::unordered_set<std::uint64_t> cells;
-    for (const Box& box : movedBoxes)
-    {
-      const auto from = grid.cellOf({ box.min_coord(0), box.min_coord(1), box.min_coord(2) });
-      const auto to = grid.cellOf({ box.max_coord(0), box.max_coord(1), box.max_coord(2) });
-      for (std::uint64_t x = from[0]; x <= to[0]; ++x)
-        for (std::uint64_t y = from[1]; y <= to[1]; ++y)
-          for (std::uint64_t z = from[2]; z <= to[2]; ++z)
-            cells.insert(CellGrid::key(x, y, z));
-    }
+    for (const BoundingBox& box : movedBounds)
+      grid.anyCovered(box, [&](std::uint64_t key) {
+        cells.insert(key);
+        return false;
+      });
     // A box over more cells than this is kept without looking: the exact test sorts it out.
     constexpr std::uint64_t mostCellsLooked = 64;
     auto reachesMovedCells = [&](const BoundingBox& box)
@@ -390,12 +395,7 @@ selfIntersectingTrianglePairsAfterMoving(const TriangleMesh& mesh,
       if (to[0] - from[0] >= mostCellsLooked || to[1] - from[1] >= mostCellsLooked ||
           to[2] - from[2] >= mostCellsLooked || grid.cellsOf(box) > mostCellsLooked)
         return true;
-      for (std::uint64_t x = from[0]; x <= to[0]; ++x)
-        for (std::uint64_t y = from[1]; y <= to[1]; ++y)
-          for (std::uint64_t z = from[2]; z <= to[2]; ++z)
-            if (cells.count(CellGrid::key(x, y, z)) > 0)
-              return true;
-      return false;
+      return grid.anyCovered(box, [&](std::uint64_t key) { return cells.count(key) > 0; });
     };
     std::vector<char> near(nTriangles, 0);
     parallelForRanges(nTriangles, threads,
@@ -407,7 +407,7 @@ selfIntersectingTrianglePairsAfterMoving(const TriangleMesh& mesh,
     std::vector<Box> nearBoxes;
     for (std::size_t t = 0; t < nTriangles; ++t)
       if (near[t])
-        nearBoxes.push_back(boxOf(t));
+        nearBoxes.push_back(tagged(boxOfTriangle(mesh, t), t));
     std::vector<std::pair<std::size_t, std::size_t>> candidates;
     CGAL::box_intersection_d(movedBoxes.begin(), movedBoxes.end(), nearBoxes.begin(), nearBoxes.end(),
                              [&](const Box& a, const Box& b)
