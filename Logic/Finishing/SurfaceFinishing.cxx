@@ -47,10 +47,11 @@ std::vector<char> movedVertices(const std::vector<Point3>& before, const std::ve
   return moved;
 }
 
-/** Puts back where `unsmoothed` (the mesh's points before smoothing) has them the vertices marked.
- *  Returns how many vertices moved back. */
+/** Puts back where `unsmoothed` (the mesh's points before smoothing) has them the vertices marked;
+ *  with `movedBack` (a flag per vertex), flags those that moved. Returns how many vertices moved back. */
 template <typename Marks>
-std::size_t unsmooth(TriangleMesh& mesh, const std::vector<Point3>& unsmoothed, const Marks& marked)
+std::size_t unsmooth(TriangleMesh& mesh, const std::vector<Point3>& unsmoothed, const Marks& marked,
+                     std::vector<char>* movedBack = nullptr)
 {
   std::size_t moved = 0;
   for (std::size_t v = 0; v < mesh.points.size(); ++v)
@@ -59,15 +60,18 @@ std::size_t unsmooth(TriangleMesh& mesh, const std::vector<Point3>& unsmoothed, 
     {
       mesh.points[v] = unsmoothed[v];
       ++moved;
+      if (movedBack)
+        (*movedBack)[v] = 1;
     }
   return moved;
 }
 
 /** Puts back where `unsmoothed` (the mesh's points before smoothing) has them the vertices of every
- *  triangle in a crossing pair and `rings` rings of triangles around them. Returns how many vertices
- *  moved back. */
+ *  triangle in a crossing pair and `rings` rings of triangles around them, flagging them in
+ *  `movedBack`. Returns how many vertices moved back. */
 std::size_t unsmoothAround(TriangleMesh& mesh, const std::vector<Point3>& unsmoothed,
-                           const std::vector<std::pair<std::size_t, std::size_t>>& crossings, int rings)
+                           const std::vector<std::pair<std::size_t, std::size_t>>& crossings, int rings,
+                           std::vector<char>& movedBack)
 {
   std::vector<char> marked(mesh.points.size(), 0);
   for (const auto& [first, second] : crossings)
@@ -75,7 +79,7 @@ std::size_t unsmoothAround(TriangleMesh& mesh, const std::vector<Point3>& unsmoo
       for (std::int32_t v : mesh.triangles[t])
         marked[static_cast<std::size_t>(v)] = 1;
   growByRings(mesh, marked, rings);
-  return unsmooth(mesh, unsmoothed, marked);
+  return unsmooth(mesh, unsmoothed, marked, &movedBack);
 }
 
 /** Two sheets a voxel apart (a thin gap between gyri, a thin wall) can be smoothed into each other:
@@ -88,10 +92,9 @@ std::size_t unsmoothCrossings(TriangleMesh& mesh, const std::vector<Point3>& uns
   std::size_t moved = 0;
   for (int rings = 1; rings <= 4 && validation.selfIntersections > 0; rings *= 2)
   {
-    const std::vector<Point3> before = mesh.points;
-    moved += unsmoothAround(mesh, unsmoothed, crossings, rings);
-    validation = validateMeshAfterMoving(mesh, validation.selfIntersectionChecked, movedVertices(before, mesh.points),
-                                         crossings);
+    std::vector<char> movedBack(mesh.points.size(), 0);
+    moved += unsmoothAround(mesh, unsmoothed, crossings, rings, movedBack);
+    validation = validateMeshAfterMoving(mesh, validation.selfIntersectionChecked, movedBack, crossings);
   }
   return moved;
 }

@@ -239,17 +239,32 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
   return v;
 }
 
-MeshValidation validateMesh(const TriangleMesh& mesh, std::vector<std::pair<std::size_t, std::size_t>>& crossings)
+namespace
+{
+
+/** validateMeshTopology, and where the mesh is manifold and consistently oriented (the test needs
+ *  it) the crossing pairs `crossingPairs()` finds; `crossings` gets them (empty when not tested). */
+template <typename CrossingPairs>
+MeshValidation validatedWith(const TriangleMesh& mesh, std::vector<std::pair<std::size_t, std::size_t>>& crossings,
+                             CrossingPairs crossingPairs)
 {
   MeshValidation v = validateMeshTopology(mesh);
-  crossings.clear();
-  if (v.manifold() && v.inconsistentEdges == 0)
+  if (!(v.manifold() && v.inconsistentEdges == 0))
   {
-    crossings = selfIntersectingTrianglePairs(mesh);
-    v.selfIntersections = crossings.size();
-    v.selfIntersectionChecked = true;
+    crossings.clear();
+    return v;
   }
+  crossings = crossingPairs();
+  v.selfIntersections = crossings.size();
+  v.selfIntersectionChecked = true;
   return v;
+}
+
+} // namespace
+
+MeshValidation validateMesh(const TriangleMesh& mesh, std::vector<std::pair<std::size_t, std::size_t>>& crossings)
+{
+  return validatedWith(mesh, crossings, [&] { return selfIntersectingTrianglePairs(mesh); });
 }
 
 MeshValidation validateMeshAfterMoving(const TriangleMesh& mesh, bool checkedBefore, const std::vector<char>& moved,
@@ -257,16 +272,8 @@ MeshValidation validateMeshAfterMoving(const TriangleMesh& mesh, bool checkedBef
 {
   if (!checkedBefore)
     return validateMesh(mesh, crossings);
-  MeshValidation v = validateMeshTopology(mesh);
-  if (v.manifold() && v.inconsistentEdges == 0)
-  {
-    crossings = selfIntersectingTrianglePairsAfterMoving(mesh, crossings, moved);
-    v.selfIntersections = crossings.size();
-    v.selfIntersectionChecked = true;
-  }
-  else
-    crossings.clear();
-  return v;
+  return validatedWith(mesh, crossings,
+                       [&] { return selfIntersectingTrianglePairsAfterMoving(mesh, crossings, moved); });
 }
 
 MeshValidation validateMesh(const TriangleMesh& mesh)
