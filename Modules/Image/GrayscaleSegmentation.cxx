@@ -1,6 +1,7 @@
 // Denoise -> intensity criterion -> (edge mode) cut along Canny edges.
 #include "GrayscaleSegmentation.h"
 
+#include "FiniteHistogram.h"
 #include "OtsuThresholds.h"
 #include "Core/SliceMeshTypes.h"
 
@@ -14,20 +15,13 @@ namespace slicemesh
 
 std::string intensityRangeText(const ScalarVolume* volume)
 {
-  const float* voxel = volume->GetBufferPointer();
-  const std::size_t count = volume->GetBufferedRegion().GetNumberOfPixels();
-  double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
-  for (std::size_t n = 0; n < count; ++n)
-    if (std::isfinite(voxel[n]))
-    {
-      lowest = std::min(lowest, static_cast<double>(voxel[n]));
-      highest = std::max(highest, static_cast<double>(voxel[n]));
-    }
+  const auto range = finiteIntensityRange(volume);
   std::ostringstream text;
-  if (lowest > highest)
+  if (!range)
     text << "no voxel has a finite intensity";
   else
-    text << "the intensities run from " << lowest << " to " << highest;
+    text << "the intensities run from " << static_cast<double>(range->first) << " to "
+         << static_cast<double>(range->second);
   return text.str();
 }
 
@@ -44,15 +38,10 @@ ScalarVolume::ConstPointer finiteForSmoothing(const ScalarVolume* volume, const 
     return volume;
   const float* voxel = volume->GetBufferPointer();
   const std::size_t count = volume->GetBufferedRegion().GetNumberOfPixels();
-  float lowest = std::numeric_limits<float>::infinity();
-  bool anyNonFinite = false;
-  for (std::size_t n = 0; n < count; ++n)
-    if (std::isfinite(voxel[n]))
-      lowest = std::min(lowest, voxel[n]);
-    else
-      anyNonFinite = true;
-  if (!anyNonFinite || !std::isfinite(lowest))
-    return volume; // every voxel finite; or none, which the thresholds report
+  const auto range = finiteIntensityRange(volume);
+  if (!range || std::all_of(voxel, voxel + count, [](float v) { return std::isfinite(v); }))
+    return volume; // no finite voxel, which the thresholds report; or every voxel finite
+  const float lowest = range->first;
   ScalarVolume::Pointer copy = ScalarVolume::New();
   copy->CopyInformation(volume);
   copy->SetRegions(volume->GetBufferedRegion());
