@@ -827,6 +827,19 @@ namespace slicemesh
 namespace
 {
 
+/** Triangle t's corners' coordinates, in its order: a triangle told by where it is, not by its
+ *  vertex numbers (which a remesh renumbers). */
+std::array<double, 9> cornersOf(const TriangleMesh& mesh, const Triangle& t)
+{
+  std::array<double, 9> c{};
+  for (int i = 0; i < 3; ++i)
+  {
+    const Point3& p = mesh.points[static_cast<std::size_t>(t[i])];
+    c[3 * i] = p.x, c[3 * i + 1] = p.y, c[3 * i + 2] = p.z;
+  }
+  return c;
+}
+
 TEST(SurfaceRemeshing, AroundKeptTrianglesTheRestIsRemeshedAndTheKeptOnesStayExactly)
 {
   // A sphere of radius 10 whose cap above z = 7 is kept: every kept triangle is in the result with
@@ -834,23 +847,13 @@ TEST(SurfaceRemeshing, AroundKeptTrianglesTheRestIsRemeshedAndTheKeptOnesStayExa
   const TriangleMesh sphere = octaSphere(30, 10.0);
   std::vector<char> keep(sphere.triangles.size(), 0);
   std::set<std::array<double, 9>> kept;
-  auto corners = [](const TriangleMesh& mesh, const Triangle& t)
-  {
-    std::array<double, 9> c{};
-    for (int i = 0; i < 3; ++i)
-    {
-      const Point3& p = mesh.points[static_cast<std::size_t>(t[i])];
-      c[3 * i] = p.x, c[3 * i + 1] = p.y, c[3 * i + 2] = p.z;
-    }
-    return c;
-  };
   for (std::size_t t = 0; t < sphere.triangles.size(); ++t)
   {
     const Triangle& tri = sphere.triangles[t];
     if (sphere.points[tri[0]].z + sphere.points[tri[1]].z + sphere.points[tri[2]].z > 21.0)
     {
       keep[t] = 1;
-      kept.insert(corners(sphere, tri));
+      kept.insert(cornersOf(sphere, tri));
     }
   }
   ASSERT_GT(kept.size(), 50u);
@@ -862,7 +865,7 @@ TEST(SurfaceRemeshing, AroundKeptTrianglesTheRestIsRemeshedAndTheKeptOnesStayExa
   std::size_t edges = 0;
   for (const Triangle& t : remeshed.triangles)
   {
-    if (kept.count(corners(remeshed, t)))
+    if (kept.count(cornersOf(remeshed, t)))
     {
       ++found;
       continue;
@@ -912,21 +915,11 @@ TEST(SurfaceRemeshing, AroundKeptTrianglesALargePieceIsRemeshedInSlabsOnTheSpher
   ASSERT_GT(keptCount, 500u);
   const TriangleMesh remeshed = remeshSurfaceAround(sphere, keep, options, 2);
   std::set<std::array<double, 9>> kept, result;
-  auto corners = [](const TriangleMesh& mesh, const Triangle& t)
-  {
-    std::array<double, 9> c{};
-    for (int i = 0; i < 3; ++i)
-    {
-      const Point3& p = mesh.points[static_cast<std::size_t>(t[i])];
-      c[3 * i] = p.x, c[3 * i + 1] = p.y, c[3 * i + 2] = p.z;
-    }
-    return c;
-  };
   for (std::size_t t = 0; t < sphere.triangles.size(); ++t)
     if (keep[t])
-      kept.insert(corners(sphere, sphere.triangles[t]));
+      kept.insert(cornersOf(sphere, sphere.triangles[t]));
   for (const Triangle& t : remeshed.triangles)
-    result.insert(corners(remeshed, t));
+    result.insert(cornersOf(remeshed, t));
   for (const auto& k : kept)
     ASSERT_TRUE(result.count(k)) << "a kept triangle is missing";
   EXPECT_LT(remeshed.triangles.size(), sphere.triangles.size() / 2); // the rest made coarser
