@@ -1,10 +1,10 @@
 #include "QualityReport.h"
 
+#include "FileReplacement.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -318,10 +318,7 @@ void writeQualityReport(const std::string& path, const std::string& inputVolume,
                         const MeshValidation& v, const RunQuality& q, double seconds,
                         const std::vector<LabelReport>& labels)
 {
-  const std::filesystem::path target(path);
-  const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
-  if (!std::filesystem::is_directory(folder))
-    throw Error("cannot write report '" + path + "': folder '" + folder.string() + "' does not exist");
+  FileReplacement file(path, "report");
 
   std::ostringstream json;
   json << "{\n  \"input\": " << jsonString(inputVolume) << ",\n  \"output\": " << jsonString(outputModel) << ",\n";
@@ -354,25 +351,14 @@ void writeQualityReport(const std::string& path, const std::string& inputVolume,
   }
   json << "\n}\n";
 
-  const std::filesystem::path temporary = folder / ("." + target.filename().string() + ".partial");
   {
-    std::ofstream out(temporary);
+    std::ofstream out(file.temporary());
     out << json.str();
     out.close();
     if (!out)
-    {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
       throw Error("cannot write report '" + path + "'");
-    }
   }
-  std::error_code error;
-  std::filesystem::rename(temporary, target, error);
-  if (error)
-  {
-    std::filesystem::remove(temporary, error);
-    throw Error("cannot write report '" + path + "': " + error.message());
-  }
+  file.commit();
 }
 
 } // namespace slicemesh::cli

@@ -5,6 +5,7 @@
 #include "PipelineStructures.h"
 
 #include "Core/ParallelFor.h"
+#include "FileReplacement.h"
 #include "Finishing/SurfaceSmoothing.h"
 #include "MaskMeshing.h"
 #include "MeshSnapshot.h"
@@ -79,20 +80,23 @@ void requireWritableFolder(const fs::path& folder, bool create, const std::strin
  *  run writes nothing. */
 ColorTable checkBeforeWork(const PipelineSettings& settings)
 {
-  auto folderOf = [](const std::string& file)
+  // The folder of the file each output replaces: a symbolic link's file's (writablePlace).
+  auto folderOf = [](const std::string& file, const std::string& what)
   {
-    const fs::path path(file);
-    return path.has_parent_path() ? path.parent_path() : fs::path(".");
+    const fs::path place = guarded(WriteFailed, [&] { return writablePlace(file, what); });
+    return place.has_parent_path() ? place.parent_path() : fs::path(".");
   };
-  requireWritableFolder(folderOf(settings.outputModel), false, "cannot write mesh '" + settings.outputModel + "'");
+  requireWritableFolder(folderOf(settings.outputModel, "mesh"), false, "cannot write mesh '" + settings.outputModel + "'");
   // The files written after the mesh: a missing folder must not cost the whole run.
   if (!settings.reportFile.empty())
-    requireWritableFolder(folderOf(settings.reportFile), false, "cannot write report '" + settings.reportFile + "'");
+    requireWritableFolder(folderOf(settings.reportFile, "report"), false,
+                          "cannot write report '" + settings.reportFile + "'");
   if (!settings.returnParameterFile.empty())
-    requireWritableFolder(folderOf(settings.returnParameterFile), false,
+    requireWritableFolder(folderOf(settings.returnParameterFile, "the return-parameter file"), false,
                           "cannot write the return-parameter file '" + settings.returnParameterFile + "'");
   if (!settings.snapshotFile.empty())
-    requireWritableFolder(folderOf(settings.snapshotFile), false, "cannot write snapshot '" + settings.snapshotFile + "'");
+    requireWritableFolder(folderOf(settings.snapshotFile, "snapshot"), false,
+                          "cannot write snapshot '" + settings.snapshotFile + "'");
   if ((settings.multiLabel.enabled || settings.contours.enabled()) && !settings.multiLabel.outputDirectory.empty())
     requireWritableFolder(settings.multiLabel.outputDirectory, true,
                           std::string("cannot write the ") + (settings.contours.enabled() ? "ROI" : "label") +

@@ -2,7 +2,7 @@
 #include "MeshWriter.h"
 
 #include "DeflateCompressor.h"
-#include "RemovedOnSignal.h"
+#include "FileReplacement.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
@@ -354,41 +354,18 @@ void writeMesh(const TriangleMesh& physicalMesh, CoordinateSystem system, const 
                 " triangles are more than a file's 32-bit indices can hold");
   const bool hasAttributes =
     !attributes.cellLabels.empty() || !attributes.cellColors.empty() || !attributes.structures.empty();
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  const std::string extension = lowercaseExtension(target);
+  const std::string extension = lowercaseExtension(std::filesystem::path(path));
   if (extension != ".vtp" && extension != ".vtk" && extension != ".stl" && extension != ".ply" && extension != ".obj")
   {
     throw Error("cannot write mesh '" + path + "': unknown extension '" + extension +
                 "' (use .vtp, .vtk, .stl, .ply or .obj)");
   }
-  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(folder, ec))
-  {
-    throw Error("cannot write mesh '" + path + "': folder '" + folder.string() + "' does not exist");
-  }
-  if (fs::is_directory(target, ec))
-  {
-    throw Error("cannot write mesh '" + path + "': it is a folder");
-  }
-
-  // Same folder, so the rename is atomic; hidden and unique per process, same extension for the writers.
-  const fs::path temporary =
-    folder / ("." + target.stem().string() + ".partial-" + std::to_string(::getpid()) + extension);
-  const RemovedOnSignal removedIfStopped(temporary.string());
+  FileReplacement file(path, "mesh");
   const std::string failure =
-    writeByExtension(physicalMesh, system, extension, temporary.string(), hasAttributes ? &attributes : nullptr);
+    writeByExtension(physicalMesh, system, extension, file.temporary(), hasAttributes ? &attributes : nullptr);
   if (!failure.empty())
-  {
-    fs::remove(temporary, ec);
-    throw Error("cannot write mesh '" + path + "': " + userMessage(failure, temporary.string(), path));
-  }
-  if (std::rename(temporary.c_str(), target.c_str()) != 0)
-  {
-    fs::remove(temporary, ec);
-    throw Error("cannot write mesh '" + path + "': renaming the finished file into place failed");
-  }
+    throw Error("cannot write mesh '" + path + "': " + userMessage(failure, file.temporary(), path));
+  file.commit();
 }
 
 } // namespace slicemesh

@@ -1,6 +1,8 @@
 // The snapshot rendered with VTK through OpenGL: the plugin SliceMeshSnapshotRendering.
 #include "SnapshotPlugin.h"
 
+#include "FileReplacement.h"
+
 #include "Measures/MeshQuality.h"
 
 #include <vtkActor.h>
@@ -69,10 +71,7 @@ void checkSnapshotTarget(const TriangleMesh& mesh, const std::string& path)
     throw Error("cannot render snapshot '" + path + "': " + reason);
   if (mesh.triangles.empty())
     throw Error("cannot render snapshot '" + path + "': the mesh has no triangles");
-  const std::filesystem::path target(path);
-  const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
-  if (!std::filesystem::is_directory(folder))
-    throw Error("cannot write snapshot '" + path + "': folder '" + folder.string() + "' does not exist");
+  writablePlace(path, "snapshot");
 }
 
 vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh)
@@ -126,26 +125,16 @@ void renderToPng(vtkActor* actor, const std::string& path, const SnapshotOptions
   grab->ReadFrontBufferOff();
   grab->Update();
 
-  const std::filesystem::path target(path);
-  const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
-  const std::filesystem::path temporary = folder / ("." + target.filename().string() + ".partial.png");
+  FileReplacement file(path, "snapshot");
   vtkNew<vtkPNGWriter> writer;
   writer->SetInputConnection(grab->GetOutputPort());
-  writer->SetFileName(temporary.string().c_str());
+  writer->SetFileName(file.temporary().c_str());
   writer->Write();
   std::error_code error;
-  if (writer->GetErrorCode() != 0 || !std::filesystem::exists(temporary, error) ||
-      std::filesystem::file_size(temporary, error) == 0)
-  {
-    std::filesystem::remove(temporary, error);
+  if (writer->GetErrorCode() != 0 || !std::filesystem::exists(file.temporary(), error) ||
+      std::filesystem::file_size(file.temporary(), error) == 0)
     throw Error("cannot write snapshot '" + path + "'");
-  }
-  std::filesystem::rename(temporary, target, error);
-  if (error)
-  {
-    std::filesystem::remove(temporary, error);
-    throw Error("cannot write snapshot '" + path + "': " + error.message());
-  }
+  file.commit();
 }
 
 void writeQualitySnapshot(const TriangleMesh& mesh, const std::string& path, const SnapshotOptions& options)

@@ -180,6 +180,26 @@ TEST(EndToEnd, AbsentLabelIsAnEmptySegmentationAndLeavesTheOutputAlone)
   EXPECT_EQ(fileText(output), "precious");
 }
 
+TEST(EndToEnd, OutputsThroughSymbolicLinksReplaceTheFilesTheyName)
+{
+  // A cohort's "latest" links into a results tree: the links stay, the files they name are replaced.
+  const fs::path folder = freshFolder("e2e-symlink");
+  fs::create_directories(folder / "results");
+  std::ofstream(folder / "results" / "b.vtp") << "an earlier mesh";
+  fs::create_symlink(fs::path("results") / "b.vtp", folder / "latest.vtp");
+  fs::create_symlink(folder / "results" / "b.json", folder / "latest.json"); // no report there yet
+  const RunResult r = runSliceMesh("-l 2 --report " + quoted((folder / "latest.json").string()) + " " +
+                                   quoted(twoBoxesLabelMap(folder).string()) + " " +
+                                   quoted((folder / "latest.vtp").string()));
+  ASSERT_EQ(r.exitCode, cli::Success) << r.err;
+  for (const std::string link : { "latest.vtp", "latest.json" })
+    EXPECT_TRUE(fs::is_symlink(fs::symlink_status(folder / link))) << link;
+  EXPECT_NE(fileText(folder / "results" / "b.vtp").find("<VTKFile"), std::string::npos);
+  EXPECT_NE(fileText(folder / "results" / "b.json").find("\"triangles\""), std::string::npos);
+  EXPECT_EQ(std::distance(fs::directory_iterator(folder / "results"), fs::directory_iterator()), 2)
+    << "no temporary files";
+}
+
 TEST(EndToEnd, GrayscaleWithOtsuFindsTheBrightObject)
 {
   const fs::path folder = freshFolder("e2e-grayscale");

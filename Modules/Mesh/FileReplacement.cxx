@@ -1,0 +1,91 @@
+#include "FileReplacement.h"
+
+#include "Core/SliceMeshTypes.h"
+
+#include <cstdio>
+#include <system_error>
+#include <unistd.h>
+
+namespace slicemesh
+{
+namespace fs = std::filesystem;
+
+fs::path writtenPath(const fs::path& path)
+{
+  // Followed link by link rather than by fs::canonical, which fails on a link to a file not yet there.
+  constexpr int mostLinks = 40; // the kernel's own limit (ELOOP)
+  fs::path at = path;
+  std::error_code ec;
+  for (int links = 0; fs::is_symlink(fs::symlink_status(at, ec)); ++links)
+  {
+    if (links == mostLinks)
+      throw Error("too many levels of symbolic links");
+    const fs::path to = fs::read_symlink(at, ec);
+    if (ec)
+      throw Error("cannot read the symbolic link '" + at.string() + "': " + ec.message());
+    at = to.is_absolute() ? to : at.parent_path() / to;
+  }
+  return at;
+}
+
+fs::path writablePlace(const std::string& path, const std::string& what)
+{
+  const std::string failure = "cannot write " + what + " '" + path + "'";
+  fs::path target;
+  try
+  {
+    target = writtenPath(path);
+  }
+  catch (const Error& e)
+  {
+    throw Error(failure + ": " + e.what());
+  }
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec))
+    throw Error(failure + ": folder '" + folder.string() + "' does not exist");
+  if (fs::is_directory(target, ec))
+    throw Error(failure + ": it is a folder");
+  return target;
+}
+
+namespace
+{
+
+/** ".<stem>.partial-<pid><extension>" beside the target. */
+std::string temporaryBeside(const fs::path& target)
+{
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  return (folder / ("." + target.stem().string() + ".partial-" + std::to_string(::getpid()) +
+                    target.extension().string()))
+    .string();
+}
+
+} // namespace
+
+FileReplacement::FileReplacement(const std::string& path, const std::string& what)
+  : m_Failure("cannot write " + what + " '" + path + "'")
+  , m_Target(writablePlace(path, what))
+  , m_Temporary(temporaryBeside(m_Target))
+  , m_RemovedIfStopped(m_Temporary)
+{
+}
+
+FileReplacement::~FileReplacement()
+{
+  if (!m_Committed)
+  {
+    std::error_code ignored;
+    fs::remove(m_Temporary, ignored);
+  }
+}
+
+void FileReplacement::commit()
+{
+  // std::rename: one rename(2), atomic within the folder.
+  if (std::rename(m_Temporary.c_str(), m_Target.c_str()) != 0)
+    throw Error(m_Failure + ": renaming the finished file into place failed");
+  m_Committed = true;
+}
+
+} // namespace slicemesh
