@@ -58,10 +58,12 @@ void rejectCrossingContours(const PreparedSlice& slice)
   throw Error(message.str());
 }
 
-std::vector<PreparedSlice> prepareSlices(const ContourStack& stack, double tolerance)
+/** Each slice's contours cleaned, checked and nested, slices side by side (each on its own); a
+ *  failure is reported for the lowest slice that fails, as one slice after another would. */
+std::vector<PreparedSlice> prepareSlices(const ContourStack& stack, double tolerance, unsigned int threads)
 {
   std::vector<PreparedSlice> slices(stack.slices.size());
-  for (std::size_t k = 0; k < stack.slices.size(); ++k)
+  parallelFor(stack.slices.size(), threads, [&](std::size_t k)
   {
     slices[k].z = stack.slices[k].z;
     for (const Polygon2& contour : stack.slices[k].contours)
@@ -74,7 +76,7 @@ std::vector<PreparedSlice> prepareSlices(const ContourStack& stack, double toler
     }
     rejectCrossingContours(slices[k]);
     slices[k].nesting = orientAndNest(slices[k].contours);
-  }
+  });
   return slices;
 }
 
@@ -93,7 +95,8 @@ TriangleMesh reconstructSurface(const ContourStack& stack, const ReconstructionO
 {
   checkStack(stack);
   ReconstructionStatistics statistics;
-  std::vector<PreparedSlice> slices = prepareSlices(stack, options.mergeTolerance);
+  const unsigned int threads = threadCount(options.threads);
+  std::vector<PreparedSlice> slices = prepareSlices(stack, options.mergeTolerance, threads);
   const std::size_t n = slices.size();
   bool anyContour = false;
   for (const PreparedSlice& slice : slices)
@@ -164,7 +167,6 @@ TriangleMesh reconstructSurface(const ContourStack& stack, const ReconstructionO
   // overlays on both sides: slabs go in batches, a batch's overlays built and its slabs tiled side by
   // side (each on its own builder), then appended in slab order. Only a batch's overlays are alive
   // at a time (their triangulations are most of the stage's memory).
-  const unsigned int threads = threadCount(options.threads);
   const long batch = threads > 1 ? 2 * static_cast<long>(threads) : 1;
   const long slabCount = static_cast<long>(n) + 1;
   std::vector<char> lowerIsolated; // of the slice below the batch's first slab

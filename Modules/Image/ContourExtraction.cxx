@@ -8,6 +8,7 @@
 #include "itkContourExtractor2DImageFilter.h"
 
 #include <algorithm>
+#include <atomic>
 #include <sstream>
 
 namespace slicemesh
@@ -159,12 +160,15 @@ ContourStack extractContours(const MaskVolume* mask, double inPlaneSigma)
   const std::size_t workers = static_cast<std::size_t>(std::max<long>(1, std::min<long>(depth, threadCount(0))));
   try
   {
-    // One task per worker, not per slice: each builds its filter once.
+    // One task per worker, not per slice: each builds its filter once, then takes the next slice
+    // not yet taken. (With every other slice each, on the large scaling ellipsoid one worker was
+    // still tracing a tenth of a second after the other had finished.)
+    std::atomic<long> next{ 0 };
     parallelFor(workers, static_cast<unsigned int>(workers),
-                [&](std::size_t worker)
+                [&](std::size_t)
                 {
                   SliceContourExtractor extractor(spacing[0], spacing[1], inPlaneSigma);
-                  for (long k = static_cast<long>(worker); k < depth; k += static_cast<long>(workers))
+                  for (long k = next++; k < depth; k = next++)
                     stack.slices[k].contours = extractor.extract(buffer + k * sliceSize, width, height);
                 });
   }
