@@ -96,12 +96,18 @@ double automaticPointSpacing(const ContourStack& stack);
  *  apart make a wall a kilometre high), which nothing else in the input bounds. */
 double estimatedTilingTriangles(const ContourStack& stack, double pointSpacing);
 
+/** The step the contours' coordinates were rounded to where they were written (mm): 10^-d for the
+ *  fewest decimals d up to 9 of which they are all whole multiples (a DICOM decimal string: 1e-6
+ *  for six decimals); else, if every one is a single-precision number (3D Slicer's planar contours),
+ *  that precision's spacing at the largest of them; else 0 (not rounded). */
+double coordinateStep(const std::vector<Polygon3>& contours);
+
 /** Sorts the contours into slices along the normal (options.sliceNormal when the contours lie on
  *  its planes, else sliceNormalOf):
  *  contours within the slice tolerance share a slice; a contour repeated in its slice is dropped;
  *  a gap of one missing slice is tiled across, a longer gap leaves empty slices so the pieces on
- *  either side are closed on their own. Throws Error when no contour is left or when all lie in one
- *  slice and no spacing is known. */
+ *  either side are closed on their own; the stack's coordinateStep is coordinateStep(contours). Throws
+ *  Error when no contour is left or when all lie in one slice and no spacing is known. */
 StackedContours stackContours(const std::vector<Polygon3>& contours, const ContourStackingOptions& options = {});
 
 } // namespace slicemesh

@@ -44,6 +44,11 @@ struct ContourStack
    *  the stack lie half of it beyond the last contour. 0 means: the distance between the two end
    *  slices and their neighbours (a single slice then needs it set). */
   double sliceSpacing = 0.0;
+  /** The step the contours' coordinates were rounded to where they were written (mm: 1e-6 for six
+   *  decimals, about 4e-5 for single precision at 300 mm), 0 where they were not (traced from an
+   *  image, or written in full). Points of adjacent slices drawn at one place differ by up to about
+   *  that step on tilted planes. */
+  double coordinateStep = 0.0;
 };
 
 /** Maps the stack frame to physical (LPS) space: p = origin + direction * (x, y, z).

@@ -32,8 +32,10 @@ struct Insertion
 class EdgeGrid
 {
 public:
+  /** `cellSize` as asked, doubled while the edges' boxes would cover more than eight cells each on
+   *  average (boundedCellSize). */
   EdgeGrid(const std::vector<Polygon2>& contours, double cellSize, double margin)
-    : m_Cells(cellSize)
+    : m_Cells(boundedCellSize(contours, cellSize, margin))
     , m_Margin(margin)
   {
     for (int c = 0; c < static_cast<int>(contours.size()); ++c)
@@ -55,10 +57,39 @@ public:
   }
 
 private:
+  static Box2 grownBox(const Point2& a, const Point2& b, double margin)
+  {
+    return { std::min(a.x, b.x) - margin, std::min(a.y, b.y) - margin, std::max(a.x, b.x) + margin,
+             std::max(a.y, b.y) + margin };
+  }
+
+  /** The cell size is chosen from a typical edge (the caller's median), and a slice whose edges are
+   *  mostly tiny (contours drawn over each other on adjacent tilted planes, their rounding crossed
+   *  at every few micrometres) gave a size at which each ordinary edge covered millions of cells:
+   *  the grid then took all the machine's memory. The candidates found do not depend on the size. */
+  static double boundedCellSize(const std::vector<Polygon2>& contours, double cellSize, double margin)
+  {
+    std::size_t edges = 0;
+    for (const Polygon2& polygon : contours)
+      edges += polygon.size();
+    for (;; cellSize *= 2.0)
+    {
+      const SpatialHash grid(cellSize);
+      double covered = 0.0;
+      for (const Polygon2& polygon : contours)
+        for (std::size_t e = 0; e < polygon.size(); ++e)
+        {
+          const SpatialHash::CellRange r = grid.cellsOf(grownBox(polygon[e], polygon[(e + 1) % polygon.size()], margin));
+          covered += static_cast<double>(r.x1 - r.x0 + 1) * static_cast<double>(r.y1 - r.y0 + 1);
+        }
+      if (covered <= 8.0 * static_cast<double>(edges))
+        return cellSize;
+    }
+  }
+
   SpatialHash::CellRange cellsOf(const Point2& a, const Point2& b) const
   {
-    return m_Cells.cellsOf({ std::min(a.x, b.x) - m_Margin, std::min(a.y, b.y) - m_Margin,
-                             std::max(a.x, b.x) + m_Margin, std::max(a.y, b.y) + m_Margin });
+    return m_Cells.cellsOf(grownBox(a, b, m_Margin));
   }
 
   SpatialHash m_Cells;

@@ -381,6 +381,7 @@ ContourStack insertIntermediateSections(const ContourStack& stack, const Undersa
 
   ContourStack result;
   result.sliceSpacing = stack.sliceSpacing;
+  result.coordinateStep = stack.coordinateStep;
   for (std::size_t k = 0; k < n; ++k)
   {
     result.slices.push_back(stack.slices[k]);

@@ -36,7 +36,8 @@ struct ReconstructionOptions
    *  than this fraction of the median contour edge is removed, where that changes no contour's
    *  crossings, rather than leave a short contour edge (MutualIntersections.h); 0 keeps them all. */
   double shortEdgeFraction = 0.3;
-  /** Points of the same slice closer than this (mm) are one point. */
+  /** Points of the same slice closer than this (mm) are one point; more for contours whose
+   *  coordinates were rounded (mergeToleranceFor). */
   double mergeTolerance = 1e-6;
   /** Threads to tile slabs side by side (0: every core); the mesh does not depend on it. */
   unsigned int threads = 1;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 namespace slicemesh
 {
@@ -278,6 +279,34 @@ TEST(ContourStacking, ContoursOffTheImageSlicesFollowTheirOwnNormalAndSpacing)
   single.expectedSliceSpacing = 2.0;
   const StackedContours slab = stackContours({ contours.front() }, single);
   EXPECT_EQ(slab.stack.sliceSpacing, 2.0);
+}
+
+TEST(ContourStacking, TheCoordinateStepIsTheRoundingTheCoordinatesWereWrittenWith)
+{
+  const auto stepOf = [](std::vector<double> coordinates)
+  {
+    Polygon3 contour;
+    for (std::size_t i = 0; i + 2 < coordinates.size(); i += 3)
+      contour.push_back({ coordinates[i], coordinates[i + 1], coordinates[i + 2] });
+    return coordinateStep({ contour });
+  };
+  EXPECT_EQ(stepOf({ 12.0, -40.0, 300.0 }), 1.0);
+  EXPECT_DOUBLE_EQ(stepOf({ 12.5, -40.25, 300.0, 1.0, 2.0, -0.75 }), 0.01);
+  // Six decimals, as a DICOM decimal string holds them, far from the origin too.
+  EXPECT_DOUBLE_EQ(stepOf({ 18.477591, -7.64318, 1234.567891, -0.400562, 20.0, -1e-6 }), 1e-6);
+  EXPECT_DOUBLE_EQ(stepOf({ 1e5 + 0.001, 2.5, -3.125 }), 1e-3);
+  // Single precision (3D Slicer's planar contours): its spacing at the largest coordinate.
+  const volatile float fx = static_cast<float>(20.0 * std::cos(0.3)), fy = static_cast<float>(-300.0 * std::sin(0.3));
+  const double x = fx, y = fy;
+  EXPECT_DOUBLE_EQ(stepOf({ x, y, 2.5 }), std::abs(y) * std::numeric_limits<float>::epsilon());
+  // Not rounded: as computed, or with more decimals than nine.
+  EXPECT_EQ(stepOf({ 20.0 * std::cos(0.3), 20.0 * std::sin(0.3), 2.5 }), 0.0);
+  EXPECT_EQ(stepOf({ 0.1234567891, 1.0, 2.0 }), 0.0);
+  // The stack carries it.
+  std::vector<Polygon3> contours;
+  for (int k = 0; k < 3; ++k)
+    contours.push_back({ { 0.0, 0.0, 2.5 * k }, { 10.25, 0.0, 2.5 * k }, { 10.25, 10.5, 2.5 * k } });
+  EXPECT_DOUBLE_EQ(stackContours(contours).stack.coordinateStep, 0.01);
 }
 
 TEST(ContourStacking, ContoursWithoutAreaAreNoSlicePlane)

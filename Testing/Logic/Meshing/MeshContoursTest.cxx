@@ -1,6 +1,7 @@
 // The one meshing path: automatic options resolved from the grid in one place, the stages run one by
 // one giving what meshContours gives, and what each stage leaves behind.
 #include "ContourStacks.h"
+#include "Contours/ContourStacking.h"
 #include "Meshing/MeshContours.h"
 
 #include <gtest/gtest.h>
@@ -123,6 +124,80 @@ TEST(MeshContours, TheFinishedBallIsValidCloseToTheSphereAndMeasured)
   }
   EXPECT_LT(sum / static_cast<double>(m.surface.mesh.points.size()), 0.1);
   EXPECT_NEAR(m.surface.validation.volume, 4.0 / 3.0 * M_PI * 216.0, 0.03 * 4.0 / 3.0 * M_PI * 216.0);
+}
+
+/** Nine circles of radius 20 mm (64 points) about (c, c, c), 2.5 mm apart along a normal tilted by
+ *  `degrees` about x, coordinates rounded to `decimals` as a planning system writes them, or to
+ *  single precision (decimals < 0) as 3D Slicer keeps planar contours. */
+std::vector<Polygon3> tiltedRoundedCylinder(double degrees, int decimals, double c = 0.0)
+{
+  const double t = degrees * M_PI / 180.0, scale = std::pow(10.0, decimals);
+  auto rounded = [scale, decimals, c](double v) -> double
+  {
+    if (decimals >= 0)
+      return std::round((c + v) * scale) / scale;
+    const volatile float single = static_cast<float>(c + v); // GCC 12's vectorizer dropped a plain cast
+    return single;
+  };
+  std::vector<Polygon3> contours;
+  for (int k = 0; k < 9; ++k)
+  {
+    Polygon3 contour;
+    for (const Point2& p : circle(0.0, 0.0, 20.0, 64))
+    {
+      const double z = 2.5 * k;
+      contour.push_back({ rounded(p.x), rounded(p.y * std::cos(t) - z * std::sin(t)),
+                          rounded(p.y * std::sin(t) + z * std::cos(t)) });
+    }
+    contours.push_back(std::move(contour));
+  }
+  return contours;
+}
+
+TEST(MeshContours, ContoursOnTiltedPlanesRoundedToAFewDecimalsAreMeshed)
+{
+  // Drawn at one place on adjacent tilted planes, two slices' points differ by their rounding. With
+  // a fixed micrometre tolerance some pairs were one point and others not: at five and six decimals
+  // most such stacks were refused ("contours of the slice touch each other"), and one ran until
+  // the machine's memory was gone.
+  // So with single precision (3D Slicer's planar contours) a hundred millimetres from the origin.
+  const double area = 0.5 * 64.0 * 400.0 * std::sin(2.0 * M_PI / 64.0);
+  for (const int decimals : { 3, 5, 6, 7, -1 })
+    for (const double degrees : { 2.0, 6.0, 15.0 })
+    {
+      const StackedContours stacked = stackContours(tiltedRoundedCylinder(degrees, decimals, decimals < 0 ? 100.0 : 0.0));
+      ASSERT_EQ(stacked.stack.slices.size(), 9u);
+      EXPECT_GT(stacked.stack.coordinateStep, 0.0);
+      MeshingOptions options;
+      options.contours.pointSpacing = stacked.spacing[0]; // as the executable resamples a structure set
+      const MeshedContours m = meshContours(stacked.stack, options, stacked.spacing);
+      SCOPED_TRACE(std::to_string(decimals) + " decimals (-1: single precision), " + std::to_string(degrees) + " degrees");
+      EXPECT_TRUE(m.surface.validation.valid()) << m.surface.validation.summary();
+      EXPECT_EQ(m.measures.genus, 0);
+      // Half a slice beyond the end contours: nine slices' worth of the 64-gon.
+      EXPECT_NEAR(m.surface.validation.volume, 9.0 * 2.5 * area, 1e-3 * 9.0 * 2.5 * area);
+    }
+}
+
+TEST(MeshContours, AFloodOfCrossingPointsFailsInsteadOfTakingEveryByte)
+{
+  // The same stack with its rounding not known (a micrometre tolerance against five decimals): the
+  // slices' edges cross every few micrometres. The tiling may refuse it, but within the memory of
+  // an ordinary run: its rows are no closer than half the contours' own edges, and the candidate
+  // edges' grid no finer than the edges it holds (it had asked for 24 GB).
+  StackedContours stacked = stackContours(tiltedRoundedCylinder(2.0, 5));
+  stacked.stack.coordinateStep = 0.0;
+  MeshingOptions options;
+  options.contours.pointSpacing = stacked.spacing[0];
+  try
+  {
+    const MeshedContours m = meshContours(stacked.stack, options, stacked.spacing);
+    EXPECT_TRUE(m.surface.validation.valid()) << m.surface.validation.summary();
+  }
+  catch (const Error&)
+  {
+    SUCCEED() << "refused: the stack's slices do not meet only at common points";
+  }
 }
 
 TEST(MeshContours, NoContoursIsAnErrorNotAnEmptyMesh)
