@@ -212,7 +212,9 @@ std::string roiLine(const LabelReport& roi)
 {
   std::ostringstream line;
   line << "SliceMesh: ROI " << roi.label << " (" << roi.name << "): ";
-  if (!roi.meshed())
+  if (roi.dropped)
+    line << "not meshed: no closed contour";
+  else if (!roi.meshed())
     line << "failed: " << oneLine(roi.error);
   else
   {

@@ -197,6 +197,7 @@ std::vector<Structure> labelStructures(std::vector<LabelSource> sources, const s
     {
       // An empty segment is not a failure: the file says it exists, it has nothing to mesh.
       s.report.dropped = true;
+      s.report.droppedBecause = "the segment is empty";
       std::cerr << "SliceMesh: warning: segment " << source.number << " (" << source.name
                 << ") is empty; no mesh" << std::endl;
       continue;
@@ -215,6 +216,7 @@ std::vector<Structure> labelStructures(std::vector<LabelSource> sources, const s
         {
           // Specks only: dropped, not a failure (the option asks for exactly this).
           s.report.dropped = true;
+          s.report.droppedBecause = "every piece below minimumComponentVolume";
           std::cerr << "SliceMesh: warning: label " << s.report.label << " (" << s.report.name << ") dropped: each of its "
                     << removal.components
                     << " connected components is smaller than the minimum component volume "
@@ -279,7 +281,16 @@ std::vector<Structure> roiStructures(const StructureSet& set, const std::optiona
     s.rgba = { rois[n].rgb[0], rois[n].rgb[1], rois[n].rgb[2], 255 };
     for (const std::string& note : rois[n].notes)
       std::cerr << "SliceMesh: warning: " << who(s, "ROI") << oneLine(note) << std::endl;
-    if (rois[n].contours.empty())
+    // A point of interest (an isocentre, a marker: POINT items only) or an empty ROI is in nearly
+    // every plan's structure set and has no surface: skipped, not failed, unless asked for by name.
+    if (rois[n].contours.empty() && settings.contours.rois.empty())
+    {
+      s.report.dropped = true;
+      s.report.droppedBecause = "no closed contour";
+      std::cerr << "SliceMesh: warning: " << who(s, "ROI") << "has no closed contour (a point of interest, or empty): "
+                << "not meshed" << std::endl;
+    }
+    else if (rois[n].contours.empty())
       s.report.error = "has no contours";
     else if (stack(n) && s.contours.stack.slices.size() > 1)
       spacings.push_back(s.contours.stack.sliceSpacing);
@@ -318,7 +329,7 @@ std::vector<Structure> roiStructures(const StructureSet& set, const std::optiona
   }
   for (Structure& s : structures)
   {
-    if (!s.report.error.empty())
+    if (!s.report.meshed())
       continue;
     std::size_t filled = 0;
     for (const Slice& slice : s.contours.stack.slices)

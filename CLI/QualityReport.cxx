@@ -338,6 +338,7 @@ void writeQualityReport(const std::string& path, const std::string& inputVolume,
            << jsonString(label.name) << ",\n      \"file\": " << (label.path.empty() ? "null" : jsonString(label.path))
            << ",\n      \"voxels\": " << label.voxels << ",\n      \"removedComponents\": "
            << label.removedComponents << ",\n      \"dropped\": " << (label.dropped ? "true" : "false")
+           << ",\n      \"droppedBecause\": " << (label.dropped ? jsonString(label.droppedBecause) : "null")
            << ",\n      \"seconds\": " << jsonNumber(label.seconds)
            << ",\n      \"error\": " << (label.error.empty() ? "null" : jsonString(label.error));
       if (label.meshed())

@@ -91,7 +91,8 @@ struct LabelReport
   std::size_t voxels = 0;
   std::size_t contourPoints = 0;     ///< of the label's contours
   std::size_t removedComponents = 0; ///< components under --minimumComponentVolume, dropped
-  bool dropped = false;         ///< every component was under --minimumComponentVolume: no mesh
+  bool dropped = false;         ///< nothing to mesh, which is no failure (droppedBecause says why)
+  std::string droppedBecause;   ///< an empty segment, every component under --minimumComponentVolume, no closed contour
   double seconds = 0.0;
   std::string error;            ///< why the label failed; empty on success
   bool meshed() const { return error.empty() && !dropped; }

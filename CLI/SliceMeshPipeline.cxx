@@ -457,8 +457,11 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   if (merged.triangles.empty() && failures.empty())
   {
     std::ostringstream message;
-    message << "every label of '" << settings.inputVolume << "' is smaller than the minimum component volume "
-            << settings.minimumComponentVolume << " mm^3; nothing to mesh";
+    if (fromContours)
+      message << "no ROI of '" << input << "' has a closed contour; nothing to mesh";
+    else
+      message << "every label of '" << settings.inputVolume << "' is smaller than the minimum component volume "
+              << settings.minimumComponentVolume << " mm^3; nothing to mesh";
     throw PipelineFailure(EmptySegmentation, message.str());
   }
   // Neighbouring labels touch by design: each label's mesh is checked on its own, not against the others.

@@ -303,10 +303,12 @@ TEST(StructureSet, EmptyAndSingleSliceROIsAreReportedAndTheOthersWritten)
   single.contours.push_back(circle(0.0, 100.0, 9.0, 10.0));
   const PlanarStructure empty = roi(9, "Nothing", { 4, 5, 6 });
   const SetRun run = meshSet("Empty", { nestedAnnulus(), single, empty });
-  EXPECT_EQ(run.result.exitCode, cli::MeshingFailed) << run.result.err;
-  EXPECT_TRUE(hasLine(run.result.err, "SliceMesh: error: ROI 9 (Nothing): has no contours")) << run.result.err;
+  // An ROI without a closed contour (a point of interest, or empty) has no surface: skipped with a
+  // warning, and the run succeeds.
+  EXPECT_EQ(run.result.exitCode, cli::Success) << run.result.err;
+  EXPECT_TRUE(hasLine(run.result.err, "SliceMesh: warning: ROI 9 (Nothing): has no closed contour")) << run.result.err;
+  EXPECT_TRUE(hasLine(run.result.out, "SliceMesh: ROI 9 (Nothing): not meshed: no closed contour")) << run.result.out;
   EXPECT_TRUE(hasLine(run.result.err, "ROI 8 (Single): all contours lie in one slice")) << run.result.err;
-  EXPECT_TRUE(hasLine(run.result.err, "1 of 3 ROIs failed; the others were written")) << run.result.err;
   EXPECT_FALSE(fs::exists(run.folder / "rois" / "009_Nothing.vtp"));
   expectValid(run.folder / "rois" / "001_Annulus_nested.vtp");
   const MeshValidation slab = expectValid(run.folder / "rois" / "008_Single.vtp");
@@ -424,6 +426,40 @@ TEST(StructureSet, PointsAndOpenContoursAreSkippedWithAWarningAndRoisPicksByName
   EXPECT_EQ(missing.exitCode, cli::EmptySegmentation) << missing.err;
   EXPECT_TRUE(hasLine(missing.err, "no ROI is called or numbered 'Heart'")) << missing.err;
   EXPECT_TRUE(fs::is_empty(folder));
+}
+
+TEST(StructureSet, APointOfInterestIsSkippedUnlessAskedForByName)
+{
+  // Nearly every plan's structure set holds an isocentre or a marker: POINT items only.
+  const PlanarStructure marker = roi(7, "Iso", { 255, 0, 0 });
+  const fs::path results = freshFolder("StructureSetMarkerResults") / "r.txt";
+  const SetRun run = meshSet("Marker", { nestedAnnulus(), marker },
+                             "--report " + quoted((freshFolder("StructureSetMarkerReport") / "report.json").string()) +
+                               " --returnparameterfile " + quoted(results.string()),
+                             { { 7, "POINT", { { 40, 30, 3 } } } });
+  ASSERT_EQ(run.result.exitCode, cli::Success) << run.result.err;
+  EXPECT_TRUE(hasLine(run.result.err, "ROI 7 (Iso): has no closed contour (a point of interest, or empty): not meshed"))
+    << run.result.err;
+  expectValid(run.folder / "rois" / "001_Annulus_nested.vtp");
+  EXPECT_FALSE(fs::exists(run.folder / "rois" / "007_Iso.vtp"));
+  bool oneWritten = false;
+  for (const auto& [name, value] : returnParameters(results))
+    oneWritten = oneWritten || (name == "structuresWritten" && value == "1");
+  EXPECT_TRUE(oneWritten) << "the return parameters of a run that succeeded";
+  const std::string report = fileText(fs::path(SLICEMESH_TEST_OUTPUT_DIR) / "StructureSetMarkerReport" / "report.json");
+  EXPECT_NE(report.find("\"droppedBecause\": \"no closed contour\""), std::string::npos) << report;
+
+  // Asked for by name, it is a failure that says why; alone, there is nothing to mesh.
+  const fs::path folder = freshFolder("StructureSetMarkerAsked");
+  const RunResult asked = runSliceMesh("--rois Iso " + quoted((run.folder / "RS.dcm").string()) + " " +
+                                       quoted((folder / "out.vtp").string()));
+  EXPECT_EQ(asked.exitCode, cli::MeshingFailed) << asked.err;
+  EXPECT_TRUE(hasLine(asked.err, "ROI 7 (Iso): has no contours")) << asked.err;
+  EXPECT_FALSE(fs::exists(folder / "out.vtp"));
+  const SetRun alone = meshSet("MarkerAlone", { marker }, "", { { 7, "POINT", { { 40, 30, 3 } } } });
+  EXPECT_EQ(alone.result.exitCode, cli::EmptySegmentation) << alone.result.err;
+  EXPECT_TRUE(hasLine(alone.result.err, "has a closed contour; nothing to mesh")) << alone.result.err;
+  EXPECT_FALSE(fs::exists(alone.folder / "all.vtp"));
 }
 
 TEST(StructureSet, FilesThatAreNoStructureSetOrAreCutShortFailWithOneLineAndWriteNothing)

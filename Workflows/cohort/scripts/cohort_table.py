@@ -46,7 +46,7 @@ def rows_of(status, report, label_option):
         if "mesh" in entry:
             row.update(mesh_columns(entry))
         elif entry.get("dropped"):
-            row.update(status="dropped", error="every piece below minimumComponentVolume")
+            row.update(status="dropped", error=entry.get("droppedBecause") or "every piece below minimumComponentVolume")
         else:
             row.update(status="failed", error=entry.get("error") or status["error"])
         rows.append(row)
