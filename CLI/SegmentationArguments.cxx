@@ -82,6 +82,11 @@ void readArguments(const ParsedArguments& arguments, PipelineSettings& settings)
     else
       multi.labelNames.push_back(label);
   }
+  // --label picks one label for one mesh, --labels several for one mesh each: given both, one of
+  // them would be ignored without a word.
+  if (settings.segmentation.label && (!multi.labels.empty() || !multi.labelNames.empty()))
+    throw ArgumentError("--label and --labels both pick labels: give one of them (--labels " +
+                        std::to_string(*settings.segmentation.label) + " for that label alone, in its own file)");
   multi.outputDirectory = arguments.text("outputDirectory");
   multi.colorTable = arguments.text("colorTable");
   multi.enabled = arguments.flag("splitLabels") || !multi.labels.empty() || !multi.labelNames.empty() ||

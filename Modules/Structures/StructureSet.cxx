@@ -79,13 +79,16 @@ std::vector<PlanarStructure> chosenStructures(const StructureSet& set, const std
   std::vector<std::string> unmatched;
   for (const std::string& item : wanted)
   {
+    // A number is an ROI number first (as --labels takes a label value): an ROI named "3" beside
+    // ROI 3 is picked by its name only where no ROI has that number.
     bool matched = false;
     for (std::size_t n = 0; n < set.structures.size(); ++n)
-    {
-      const PlanarStructure& s = set.structures[n];
-      if (item == s.name || item == std::to_string(s.number) || lowercase(item) == lowercase(s.name))
+      if (item == std::to_string(set.structures[n].number))
         chosen[n] = matched = true;
-    }
+    if (!matched)
+      for (std::size_t n = 0; n < set.structures.size(); ++n)
+        if (item == set.structures[n].name || lowercase(item) == lowercase(set.structures[n].name))
+          chosen[n] = matched = true;
     if (!matched)
       unmatched.push_back(item);
   }
@@ -95,8 +98,14 @@ std::vector<PlanarStructure> chosenStructures(const StructureSet& set, const std
     for (const std::string& item : unmatched)
       message += " '" + item + "'";
     message += "; the ROIs are";
+    bool comma = false;
     for (const PlanarStructure& s : set.structures)
+    {
       message += " " + std::to_string(s.number) + " (" + s.name + ")";
+      comma = comma || s.name.find(',') != std::string::npos;
+    }
+    if (comma) // the list is split at commas, as 3D Slicer passes a string vector
+      message += "; a name with a comma is picked by its number";
     throw Error(message);
   }
   std::vector<PlanarStructure> result;

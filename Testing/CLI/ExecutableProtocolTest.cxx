@@ -180,6 +180,22 @@ TEST(Executable, ExistingOutputIsUntouchedOnFailure)
   EXPECT_EQ(fileText(output), "precious");
 }
 
+TEST(Executable, LabelAndLabelsTogetherAreAUsageError)
+{
+  // One would be ignored without a word (the run meshed --labels and dropped --label).
+  const fs::path folder = freshFolder("label-and-labels");
+  const RunResult r = runSliceMesh("--label 2 --labels 1 " + quoted((folder / "missing.nrrd").string()) + " " +
+                                   quoted((folder / "out.vtp").string()));
+  EXPECT_EQ(r.exitCode, cli::BadArguments);
+  EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("--label and --labels"), std::string::npos) << r.err;
+  EXPECT_EQ(runSliceMesh("--label 0 --labels 1 " + quoted((folder / "missing.nrrd").string()) + " " +
+                         quoted((folder / "out.vtp").string()))
+              .exitCode,
+            cli::UnreadableInput)
+    << "label 0 (every label, Slicer's default) goes with --labels";
+}
+
 TEST(Executable, MissingOutputFolderIsAWriteFailureBeforeAnyWork)
 {
   const fs::path folder = freshFolder("no-output-folder");

@@ -195,6 +195,32 @@ TEST(StructureSetReader, ChoosesROIsByNameOrNumberAndNamesWhatMatchesNothing)
     EXPECT_NE(std::string(e.what()).find("'Heart'"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("3 (GTV)"), std::string::npos) << e.what();
   }
+  // A number is an ROI number first: ROI 9 named "3" is not picked by "3" beside ROI 3, only by "9"
+  // (it was picked by both, two files for one asked); a name no number takes still picks it.
+  StructureSet tricky = set;
+  tricky.structures.push_back(set.structures[0]);
+  tricky.structures.back().number = 9;
+  tricky.structures.back().name = "3";
+  tricky.structures.push_back(set.structures[0]);
+  tricky.structures.back().number = 11;
+  tricky.structures.back().name = "40";
+  const auto three = chosenStructures(tricky, { "3" });
+  ASSERT_EQ(three.size(), 1u);
+  EXPECT_EQ(three[0].name, "GTV");
+  EXPECT_EQ(chosenStructures(tricky, { "40" }).front().number, 11);
+  // A name with a comma cannot be given in the list (3D Slicer splits it at commas): the message
+  // says to use its number.
+  tricky.structures.back().name = "Rectum,wall";
+  try
+  {
+    chosenStructures(tricky, { "Rectum", "wall" });
+    FAIL() << "no ROI is called Rectum";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("a name with a comma is picked by its number"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(chosenStructures(tricky, { "11" }).front().name, "Rectum,wall");
 }
 
 TEST(StructureSetReader, ADicomFileOfAnotherModalityIsNotAStructureSet)
