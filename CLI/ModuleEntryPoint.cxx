@@ -213,7 +213,7 @@ std::string roiLine(const LabelReport& roi)
   std::ostringstream line;
   line << "SliceMesh: ROI " << roi.label << " (" << roi.name << "): ";
   if (roi.dropped)
-    line << "not meshed: no closed contour";
+    line << "not meshed: " << roi.droppedBecause;
   else if (!roi.meshed())
     line << "failed: " << oneLine(roi.error);
   else

@@ -281,17 +281,20 @@ std::vector<Structure> roiStructures(const StructureSet& set, const std::optiona
     s.rgba = { rois[n].rgb[0], rois[n].rgb[1], rois[n].rgb[2], 255 };
     for (const std::string& note : rois[n].notes)
       std::cerr << "SliceMesh: warning: " << who(s, "ROI") << oneLine(note) << std::endl;
-    // A point of interest (an isocentre, a marker: POINT items only) or an empty ROI is in nearly
-    // every plan's structure set and has no surface: skipped, not failed, unless asked for by name.
-    if (rois[n].contours.empty() && settings.contours.rois.empty())
+    if (rois[n].contours.empty())
     {
-      s.report.dropped = true;
-      s.report.droppedBecause = "no closed contour";
-      std::cerr << "SliceMesh: warning: " << who(s, "ROI") << "has no closed contour (a point of interest, or empty): "
-                << "not meshed" << std::endl;
+      // A point of interest (an isocentre, a marker: POINT items only) or an empty ROI is in nearly
+      // every plan's structure set and has no surface: skipped, not failed, unless asked for by name.
+      if (!settings.contours.rois.empty())
+        s.report.error = "has no contours";
+      else
+      {
+        s.report.dropped = true;
+        s.report.droppedBecause = "no closed contour";
+        std::cerr << "SliceMesh: warning: " << who(s, "ROI") << "has no closed contour (a point of interest, or empty): "
+                  << "not meshed" << std::endl;
+      }
     }
-    else if (rois[n].contours.empty())
-      s.report.error = "has no contours";
     else if (stack(n) && s.contours.stack.slices.size() > 1)
       spacings.push_back(s.contours.stack.sliceSpacing);
   }

@@ -10,6 +10,31 @@ namespace slicemesh
 {
 namespace fs = std::filesystem;
 
+namespace
+{
+
+/** "cannot write <what> '<path>'", the start of every message about an output. */
+std::string cannotWrite(const std::string& what, const std::string& path)
+{
+  return "cannot write " + what + " '" + path + "'";
+}
+
+/** The folder a file is in ("." for a bare name). */
+fs::path folderOf(const fs::path& file)
+{
+  return file.has_parent_path() ? file.parent_path() : fs::path(".");
+}
+
+/** ".<stem>.partial-<pid><extension>" beside the target. */
+std::string temporaryBeside(const fs::path& target)
+{
+  return (folderOf(target) / ("." + target.stem().string() + ".partial-" + std::to_string(::getpid()) +
+                                 target.extension().string()))
+    .string();
+}
+
+} // namespace
+
 fs::path writtenPath(const fs::path& path)
 {
   // Followed link by link rather than by fs::canonical, which fails on a link to a file not yet there.
@@ -30,7 +55,7 @@ fs::path writtenPath(const fs::path& path)
 
 fs::path writablePlace(const std::string& path, const std::string& what)
 {
-  const std::string failure = "cannot write " + what + " '" + path + "'";
+  const std::string failure = cannotWrite(what, path);
   fs::path target;
   try
   {
@@ -40,7 +65,7 @@ fs::path writablePlace(const std::string& path, const std::string& what)
   {
     throw Error(failure + ": " + e.what());
   }
-  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  const fs::path folder = folderOf(target);
   std::error_code ec;
   if (!fs::is_directory(folder, ec))
     throw Error(failure + ": folder '" + folder.string() + "' does not exist");
@@ -49,22 +74,8 @@ fs::path writablePlace(const std::string& path, const std::string& what)
   return target;
 }
 
-namespace
-{
-
-/** ".<stem>.partial-<pid><extension>" beside the target. */
-std::string temporaryBeside(const fs::path& target)
-{
-  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  return (folder / ("." + target.stem().string() + ".partial-" + std::to_string(::getpid()) +
-                    target.extension().string()))
-    .string();
-}
-
-} // namespace
-
 FileReplacement::FileReplacement(const std::string& path, const std::string& what)
-  : m_Failure("cannot write " + what + " '" + path + "'")
+  : m_Failure(cannotWrite(what, path))
   , m_Target(writablePlace(path, what))
   , m_Temporary(temporaryBeside(m_Target))
   , m_RemovedIfStopped(m_Temporary)
