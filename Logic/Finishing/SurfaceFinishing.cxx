@@ -2,6 +2,7 @@
 
 #include "Core/ParallelFor.h"
 #include "Core/SpatialHash.h"
+#include "Finishing/CrossingRepair.h"
 #include "Finishing/HeldContourEdges.h"
 #include "Finishing/PieceTargetVolumes.h"
 #include "Measures/ComponentOrientation.h"
@@ -13,6 +14,7 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <type_traits>
 
 namespace slicemesh
 {
@@ -222,6 +224,7 @@ struct FinishedPiece
   KeptPlaces kept;
   /** The pairs of triangles of `mesh` that cross, from its validation (none in a valid piece). */
   std::vector<std::pair<std::size_t, std::size_t>> crossings;
+  std::size_t edgesRepairedAtCrossings = 0; ///< flipped or collapsed where the remesh crossed itself
 };
 
 /** The validation of a piece of the tiling as it was tiled, without its self-intersection test:
@@ -315,31 +318,6 @@ void relaxBesidePutBack(TriangleMesh& mesh, const std::vector<Point3>& unsmoothe
   }
 }
 
-/** A remeshed piece smoothed, given its volume, and put back where smoothing made it cross; its
- *  vertices within keptRadius of `crossedOthers` (KeptPlaces: there its remesh kept the tiled
- *  triangles) are put back where the remesh left them, as tiled. */
-FinishedPiece smoothedRemesh(TriangleMesh remeshed, const SurfaceFinishingOptions& options, double volume,
-                             unsigned int threads, const std::vector<Point3>& crossedOthers = {})
-{
-  const std::vector<Point3> unsmoothed = remeshed.points; // smoothing moves points only
-  const std::vector<char> leftAsTiled =
-    crossedOthers.empty() ? std::vector<char>() : verticesNear(remeshed, crossedOthers, keptRadius(options));
-  const std::vector<char> held = heldVertices(remeshed, options);
-  smoothSurface(remeshed, options.smoothing, threads, held);
-  // The remesh's chords cut the corners of structures a few edges across: the piece gets its volume
-  // back (on drawn contours, as far as heldOffset lets it).
-  offsetToVolume(remeshed, volume, held, heldOffset(options), threads);
-  // After the offset, which would move them too (outwards: towards the other piece).
-  std::size_t unsmoothedVertices = leftAsTiled.empty() ? 0 : unsmooth(remeshed, unsmoothed, leftAsTiled);
-  std::vector<std::pair<std::size_t, std::size_t>> crossings;
-  MeshValidation validation = validateMesh(remeshed, crossings);
-  unsmoothedVertices += unsmoothCrossings(remeshed, unsmoothed, validation, crossings);
-  if (unsmoothedVertices > 0 && validation.selfIntersections == 0)
-    relaxBesidePutBack(remeshed, unsmoothed, validation, options);
-  return FinishedPiece{ std::move(remeshed), SurfaceFinish::Remeshed, {}, unsmoothedVertices, validation, 0, {},
-                        std::move(crossings) };
-}
-
 Point3 centroid(const TriangleMesh& mesh, std::size_t t)
 {
   const Point3& a = mesh.points[static_cast<std::size_t>(mesh.triangles[t][0])];
@@ -348,13 +326,13 @@ Point3 centroid(const TriangleMesh& mesh, std::size_t t)
   return { (a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0, (a.z + b.z + c.z) / 3.0 };
 }
 
-/** Where the piece crosses itself: the centroid of every triangle of a crossing pair. */
-std::vector<Point3> crossingPlaces(const FinishedPiece& piece)
+/** Where a mesh crosses itself: the centroid of every triangle of a crossing pair. */
+std::vector<Point3> crossingPlaces(const TriangleMesh& mesh, const std::vector<std::pair<std::size_t, std::size_t>>& crossings)
 {
   std::vector<Point3> places;
-  for (const auto& [first, second] : piece.crossings)
+  for (const auto& [first, second] : crossings)
     for (std::size_t t : { first, second })
-      places.push_back(centroid(piece.mesh, t));
+      places.push_back(centroid(mesh, t));
   return places;
 }
 
@@ -366,6 +344,144 @@ constexpr std::size_t mostCrossingsRemeshedAround = 500;
 bool crossesItselfInAFewPlaces(const MeshValidation& v)
 {
   return v.selfIntersections > 0 && v.selfIntersections <= mostCrossingsRemeshedAround;
+}
+
+/** More crossings than this and they are not repaired where they are (repairedLocally): a few folds
+ *  are what flips and collapses undo (the thresholded Colin27 MRI's two large pieces had 3 and 14,
+ *  natbrainlab's pieces at most 48), not sheets that pass through each other all along a gap. */
+constexpr std::size_t mostCrossingsRepairedLocally = 64;
+
+/** Undoes the few crossings left in a finished piece where they are (repairCrossingsLocally: edges
+ *  flipped and collapsed within two target edges of them, held contour vertices excepted), and
+ *  renumbers `perVertex` (arrays of a point per vertex) as the repair renumbers the vertices.
+ *  `validation` and `crossings` are then the repaired piece's. Returns what the repair did. */
+/** After a local repair: the vertices put back for the crossings it undid (the remesh's own folds,
+ *  which no smoothing caused) take their `smoothed` places again, except where that makes triangles
+ *  cross. Returns how many vertices are still where the remesh left them. */
+std::size_t resmoothedAfterRepair(TriangleMesh& mesh, const std::vector<Point3>& smoothed,
+                                  const std::vector<Point3>& unsmoothed, MeshValidation& validation,
+                                  std::vector<std::pair<std::size_t, std::size_t>>& crossings)
+{
+  const std::vector<Point3> repaired = mesh.points;
+  const MeshValidation repairedValidation = validation;
+  const std::vector<char> moved = movedVertices(repaired, smoothed);
+  mesh.points = smoothed;
+  validation = validateMeshAfterMoving(mesh, validation.selfIntersectionChecked, moved, crossings);
+  unsmoothCrossings(mesh, unsmoothed, validation, crossings);
+  if (validation.selfIntersections > 0) // as repaired, then
+  {
+    mesh.points = repaired;
+    validation = repairedValidation;
+    crossings.clear();
+  }
+  std::size_t stillUnsmoothed = 0;
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    stillUnsmoothed += (smoothed[v].x != unsmoothed[v].x || smoothed[v].y != unsmoothed[v].y || smoothed[v].z != unsmoothed[v].z) &&
+                       mesh.points[v].x == unsmoothed[v].x && mesh.points[v].y == unsmoothed[v].y &&
+                       mesh.points[v].z == unsmoothed[v].z;
+  return stillUnsmoothed;
+}
+
+/** The vertices a local repair may change: within two target edges of `places`, not held on a
+ *  drawn contour. */
+std::vector<char> repairableVertices(const TriangleMesh& mesh, const std::vector<Point3>& places,
+                                     const std::vector<char>& held, const SurfaceFinishingOptions& options)
+{
+  std::vector<char> movable = verticesNear(mesh, places, 2.0 * keptRadius(options));
+  if (!held.empty())
+    for (std::size_t v = 0; v < movable.size(); ++v)
+      movable[v] = movable[v] && !held[v];
+  return movable;
+}
+
+/** `perVertex` (arrays of one value per vertex) renumbered as a repair renumbered the vertices. */
+template <typename... Arrays>
+void renumber(const CrossingRepair& repair, Arrays&... perVertex)
+{
+  const auto one = [&](auto& values)
+  {
+    if (values.empty()) // held flags, without drawn contours
+      return;
+    std::remove_reference_t<decltype(values)> renumbered(repair.formerVertex.size());
+    for (std::size_t v = 0; v < renumbered.size(); ++v)
+      renumbered[v] = values[static_cast<std::size_t>(repair.formerVertex[v])];
+    values.swap(renumbered);
+  };
+  (one(perVertex), ...);
+}
+
+/** The few crossings left in a finished piece undone where they are (repairCrossingsLocally), the
+ *  points put back where the remesh left them given their smoothed places again where that crosses
+ *  nothing (resmoothedAfterRepair), then the slivers there widened (widenNarrowTrianglesLocally).
+ *  `unsmoothed` and `smoothed` (a point per vertex) are renumbered with the vertices; `validation`
+ *  and `crossings` are the piece's after. Returns the edges flipped or collapsed and sets
+ *  `unsmoothedVertices` when the crossings were all undone. */
+std::size_t repairedLocally(TriangleMesh& mesh, MeshValidation& validation,
+                            std::vector<std::pair<std::size_t, std::size_t>>& crossings, const std::vector<char>& held,
+                            const SurfaceFinishingOptions& options, std::vector<Point3>& unsmoothed,
+                            std::vector<Point3>& smoothed, bool resmooth, std::size_t& unsmoothedVertices)
+{
+  const std::vector<Point3> places = crossingPlaces(mesh, crossings);
+  std::vector<char> heldNow = held;
+  const CrossingRepair repair =
+    repairCrossingsLocally(mesh, crossings, repairableVertices(mesh, places, held, options), options.remeshing.targetEdgeLength);
+  renumber(repair, unsmoothed, smoothed, heldNow);
+  validation = validateMesh(mesh, crossings);
+  if (validation.selfIntersections > 0 || !resmooth)
+    return repair.flips + repair.collapses;
+  unsmoothedVertices = resmoothedAfterRepair(mesh, smoothed, unsmoothed, validation, crossings);
+  TriangleMesh widened = mesh;
+  const CrossingRepair widening = widenNarrowTrianglesLocally(widened, repairableVertices(widened, places, heldNow, options),
+                                                              options.remeshing.targetEdgeLength);
+  if (widening.flips + widening.collapses == 0)
+    return repair.flips + repair.collapses;
+  std::vector<std::pair<std::size_t, std::size_t>> widenedCrossings;
+  MeshValidation widenedValidation = validateMesh(widened, widenedCrossings);
+  if (!rejection(widenedValidation, validation).empty()) // crossing a sheet the local test did not see
+    return repair.flips + repair.collapses;
+  mesh = std::move(widened);
+  validation = widenedValidation;
+  crossings.clear();
+  renumber(widening, unsmoothed, smoothed);
+  return repair.flips + repair.collapses + widening.flips + widening.collapses;
+}
+
+/** A remeshed piece smoothed, given its volume, and put back where smoothing made it cross; its
+ *  vertices within keptRadius of `crossedOthers` (KeptPlaces: there its remesh kept the tiled
+ *  triangles) are put back where the remesh left them, as tiled. */
+FinishedPiece smoothedRemesh(TriangleMesh remeshed, const SurfaceFinishingOptions& options, double volume,
+                             unsigned int threads, const std::vector<Point3>& crossedOthers = {})
+{
+  std::vector<Point3> unsmoothed = remeshed.points; // smoothing moves points only
+  const std::vector<char> leftAsTiled =
+    crossedOthers.empty() ? std::vector<char>() : verticesNear(remeshed, crossedOthers, keptRadius(options));
+  const std::vector<char> held = heldVertices(remeshed, options);
+  smoothSurface(remeshed, options.smoothing, threads, held);
+  // The remesh's chords cut the corners of structures a few edges across: the piece gets its volume
+  // back (on drawn contours, as far as heldOffset lets it).
+  offsetToVolume(remeshed, volume, held, heldOffset(options), threads);
+  // After the offset, which would move them too (outwards: towards the other piece).
+  std::size_t unsmoothedVertices = leftAsTiled.empty() ? 0 : unsmooth(remeshed, unsmoothed, leftAsTiled);
+  std::vector<std::pair<std::size_t, std::size_t>> crossings;
+  MeshValidation validation = validateMesh(remeshed, crossings);
+  std::vector<Point3> smoothed = validation.selfIntersections > 0 ? remeshed.points : std::vector<Point3>();
+  unsmoothedVertices += unsmoothCrossings(remeshed, unsmoothed, validation, crossings);
+  // What putting vertices back did not undo is the remesh's own: a chord through the other sheet of
+  // a gap a voxel wide, or a fold where two voxels touch along an edge. A few such crossings are
+  // undone where they are; else the piece is remeshed again around them (remeshedPiece).
+  std::size_t repairs = 0;
+  if (validation.selfIntersections > 0 && validation.selfIntersections <= mostCrossingsRepairedLocally &&
+      validation.soundTopology() && validation.degenerateTriangles == 0)
+  {
+    repairs = repairedLocally(remeshed, validation, crossings, held, options, unsmoothed, smoothed, leftAsTiled.empty(),
+                              unsmoothedVertices);
+  }
+  if (unsmoothedVertices > 0 && validation.selfIntersections == 0)
+    relaxBesidePutBack(remeshed, unsmoothed, validation, options);
+  FinishedPiece piece{ std::move(remeshed), SurfaceFinish::Remeshed, {}, unsmoothedVertices, validation, 0, {},
+                       std::move(crossings) };
+  piece.edgesRepairedAtCrossings = repairs;
+  return piece;
 }
 
 /** The piece remeshed around `places` (KeptPlaces) and smoothed. Each new remesh can cross itself
@@ -397,7 +513,7 @@ std::optional<FinishedPiece> remeshedAround(const TriangleMesh& tiled, const Mes
     }
     if (!crossesItselfInAFewPlaces(around->validation))
       return std::nullopt;
-    const std::vector<Point3> more = crossingPlaces(*around);
+    const std::vector<Point3> more = crossingPlaces(around->mesh, around->crossings);
     places.crossedItself.insert(places.crossedItself.end(), more.begin(), more.end());
   }
   return std::nullopt;
@@ -430,7 +546,7 @@ std::optional<FinishedPiece> remeshedPiece(const TriangleMesh& tiled, const Mesh
     return piece;
   if (!crossesItselfInAFewPlaces(piece->validation))
     return std::nullopt;
-  KeptPlaces places{ crossingPlaces(*piece), {} };
+  KeptPlaces places{ crossingPlaces(piece->mesh, piece->crossings), {} };
   piece.reset(); // not held beside the second remesh
   return remeshedAround(tiled, reference, options, volume, threads, std::move(places));
 }
@@ -768,6 +884,7 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
     ++result.piecesByFinish[static_cast<std::size_t>(piece.finish)];
     result.unsmoothedVertices += piece.unsmoothedVertices;
     result.trianglesKeptTiled += piece.trianglesKeptTiled;
+    result.edgesRepairedAtCrossings += piece.edgesRepairedAtCrossings;
     if (speck[p])
     {
       // A speck left as tiled counts as finished as asked.

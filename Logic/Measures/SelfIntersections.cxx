@@ -125,12 +125,16 @@ inline bool overlap(const BoundingBox& a, const BoundingBox& b)
                            (b.low[1] <= a.high[1]) & (a.low[2] <= b.high[2]) & (b.low[2] <= a.high[2]));
 }
 
+TriangleCorners cornersOf(const std::vector<Point3>& points, const Triangle& ids)
+{
+  return { ids,
+           { points[static_cast<std::size_t>(ids[0])], points[static_cast<std::size_t>(ids[1])],
+             points[static_cast<std::size_t>(ids[2])] } };
+}
+
 TriangleCorners cornersOf(const TriangleMesh& mesh, std::size_t t)
 {
-  const Triangle& ids = mesh.triangles[t];
-  return { ids,
-           { mesh.points[static_cast<std::size_t>(ids[0])], mesh.points[static_cast<std::size_t>(ids[1])],
-             mesh.points[static_cast<std::size_t>(ids[2])] } };
+  return cornersOf(mesh.points, mesh.triangles[t]);
 }
 
 Point corner(const TriangleMesh& mesh, std::int32_t v)
@@ -188,6 +192,11 @@ bool crossing(const TriangleCorners& s, const TriangleCorners& t)
 }
 
 } // namespace
+
+bool trianglesCross(const std::vector<Point3>& points, const Triangle& s, const Triangle& t)
+{
+  return crossing(cornersOf(points, s), cornersOf(points, t));
+}
 
 std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(const TriangleMesh& mesh,
                                                                                unsigned int threads)

@@ -27,6 +27,10 @@ namespace slicemesh
 std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(const TriangleMesh& mesh,
                                                                                unsigned int threads = 0);
 
+/** Whether triangles s and t, corners numbered into `points`, intersect by the rule of
+ *  selfIntersectingTrianglePairs (exact). For a repair that tries triangles before making them. */
+bool trianglesCross(const std::vector<Point3>& points, const Triangle& s, const Triangle& t);
+
 /** selfIntersectingTrianglePairs of `mesh` after some of its vertices moved (`moved`, a flag per
  *  vertex), from `before`, the pairs of the same triangles before the move: a pair of which neither
  *  triangle has a moved corner is as it was, so only the pairs with a triangle that moved are

@@ -301,28 +301,52 @@ TEST(FinishingProperty, Seed3369TheMaskThatCrashedCGALsRelaxation)
 namespace slicemesh::testing
 {
 
-TEST(FinishingProperty, ARemeshThatCrossesItselfIsRemeshedAgainAroundTheCrossings)
+/** The random mask of this seed and kind meshed with its own options; expects it remeshed, as
+ *  asked, into a valid surface of its tiled topology with the voxels' volume. */
+FinishedSurface expectRemeshedToItsTiledTopology(std::uint64_t seed, RandomMaskKind kind)
 {
-  // Random noise (seed 2010 of the property test): a piece with sheets closer than the target edge,
-  // where the remesh's chords pass through the other sheet. Before, that piece was then smoothed
-  // only or kept as tiled; now it is remeshed again with the tiled triangles around the crossings
-  // kept (1384 of 8132 here), and counts as remeshed.
-  const RandomMask random = randomMask(2010, RandomMaskKind::Noise);
+  const RandomMask random = randomMask(seed, kind);
   MeshingOptions meshing;
   meshing.reconstruction = random.options;
   const MaskMeshResult run = checkedMesh(random.mask, meshing);
-  ASSERT_TRUE(run.error.empty()) << run.error;
+  EXPECT_TRUE(run.error.empty()) << run.error;
   const FinishedSurface& finished = run.meshing.surface;
   const MeshValidation tiled = validateMesh(run.meshing.tiling);
   const MeshValidation v = validateMesh(finished.mesh);
   EXPECT_EQ(finished.finish, SurfaceFinish::Remeshed) << finished.fallback;
   EXPECT_TRUE(finished.fallback.empty()) << finished.fallback;
-  EXPECT_GT(finished.trianglesKeptTiled, 0u);
-  EXPECT_LT(2 * finished.trianglesKeptTiled, finished.mesh.triangles.size());
   EXPECT_TRUE(v.valid()) << v.summary();
   EXPECT_EQ(v.components, tiled.components);
   EXPECT_EQ(v.eulerCharacteristic, tiled.eulerCharacteristic);
   EXPECT_NEAR(v.volume, run.voxelVolume, run.volumeTolerance());
+  return finished;
+}
+
+TEST(FinishingProperty, ARemeshThatCrossesItselfIsRemeshedAgainAroundTheCrossings)
+{
+  // Random noise (seed 2010 of the property test): a piece with sheets closer than the target edge,
+  // where the remesh's chords pass through the other sheet in more places than flips and collapses
+  // undo. Before, that piece was then smoothed only or kept as tiled; now it is remeshed again with
+  // the tiled triangles around the crossings kept (1957 of 7412 here), and counts as remeshed.
+  const FinishedSurface finished = expectRemeshedToItsTiledTopology(2010, RandomMaskKind::Noise);
+  EXPECT_GT(finished.trianglesKeptTiled, 0u);
+  EXPECT_LT(2 * finished.trianglesKeptTiled, finished.mesh.triangles.size());
+}
+
+TEST(FinishingProperty, AFewFoldsOfTheRemeshAreUndoneWhereTheyAre)
+{
+  // Voxels that touch only along an edge (seed 4001) and noise beside blobs (seed 3010): the remesh
+  // folds over itself in one or two places that smoothing did not cause. Those folds are flipped or
+  // collapsed away where they are: the piece is not remeshed again around them (no tiled triangle
+  // kept; before, 400 and 33 were).
+  for (const auto& [seed, kind] :
+       { std::pair{ 4001u, RandomMaskKind::Touching }, std::pair{ 3010u, RandomMaskKind::BlobsAndNoise } })
+  {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const FinishedSurface finished = expectRemeshedToItsTiledTopology(seed, kind);
+    EXPECT_GT(finished.edgesRepairedAtCrossings, 0u);
+    EXPECT_EQ(finished.trianglesKeptTiled, 0u);
+  }
 }
 
 } // namespace slicemesh::testing

@@ -1,0 +1,452 @@
+#include "Finishing/CrossingRepair.h"
+
+#include "Core/AreaNormal.h"
+#include "Core/BoundingBox.h"
+#include "Measures/SelfIntersections.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <set>
+#include <unordered_map>
+
+namespace slicemesh
+{
+namespace
+{
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using TrianglePairs = std::set<std::pair<std::size_t, std::size_t>>;
+
+/** Narrower than this, a triangle left beside a repaired fold is widened if an operation can. */
+constexpr double narrowAngleDegrees = 20.0;
+
+/** One flip or collapse: the triangles it removes and those it rewrites (slot, new corners). */
+struct EdgeOperation
+{
+  bool collapse = false;
+  std::vector<std::size_t> removed;
+  std::vector<std::pair<std::size_t, Triangle>> rewritten;
+};
+
+/** An operation's outcome: the crossings it would leave, the new crossing pairs, and the smallest
+ *  angle of its triangles (as a cosine: larger is narrower). */
+struct Outcome
+{
+  std::size_t crossings = 0;
+  std::vector<std::pair<std::size_t, std::size_t>> added;
+  double largestCosine = 1.0;
+};
+
+double largestAngleCosine(const std::vector<Point3>& points, const Triangle& t)
+{
+  double largest = -1.0;
+  for (int corner = 0; corner < 3; ++corner)
+  {
+    const Point3& p = points[static_cast<std::size_t>(t[corner])];
+    const Point3& q = points[static_cast<std::size_t>(t[(corner + 1) % 3])];
+    const Point3& r = points[static_cast<std::size_t>(t[(corner + 2) % 3])];
+    const double ux = q.x - p.x, uy = q.y - p.y, uz = q.z - p.z;
+    const double vx = r.x - p.x, vy = r.y - p.y, vz = r.z - p.z;
+    const double lengths = std::sqrt((ux * ux + uy * uy + uz * uz) * (vx * vx + vy * vy + vz * vz));
+    if (lengths > 0.0)
+      largest = std::max(largest, (ux * vx + uy * vy + uz * vz) / lengths);
+  }
+  return largest;
+}
+
+BoundingBox boxOf(const std::vector<Point3>& points, const Triangle& t)
+{
+  BoundingBox box;
+  for (std::int32_t v : t)
+    box.add(points[static_cast<std::size_t>(v)]);
+  return box;
+}
+
+double dot(const Point3& a, const Point3& b)
+{
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+/** The triangles around the movable vertices and two rings beyond, each of those vertices' fan, and
+ *  the crossings among them, while edges are flipped and collapsed. */
+class LocalRepair
+{
+public:
+  LocalRepair(TriangleMesh& mesh, const std::vector<std::pair<std::size_t, std::size_t>>& crossings,
+              const std::vector<char>& movable, double edgeLength)
+    : m_Mesh(mesh), m_Movable(movable), m_Edge(edgeLength), m_Alive(mesh.triangles.size(), 1),
+      m_Crossings(crossings.begin(), crossings.end())
+  {
+    // Two rings past the movable vertices: every triangle a flip or collapse there rewrites, and
+    // every one it could come to cross, has a corner in them.
+    std::vector<char> near = movable;
+    for (int ring = 0; ring < 2; ++ring)
+    {
+      std::vector<char> grown = near;
+      for (const Triangle& t : mesh.triangles)
+        if (near[static_cast<std::size_t>(t[0])] || near[static_cast<std::size_t>(t[1])] || near[static_cast<std::size_t>(t[2])])
+          for (std::int32_t v : t)
+            grown[static_cast<std::size_t>(v)] = 1;
+      near.swap(grown);
+    }
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    {
+      bool inScope = false;
+      for (std::int32_t v : mesh.triangles[t])
+        if (near[static_cast<std::size_t>(v)])
+        {
+          m_Fan[v].push_back(t);
+          inScope = true;
+        }
+      if (inScope)
+        m_Scope.push_back(t);
+    }
+  }
+
+  /** Repairs crossing after crossing while an operation leaves fewer; true when none is left. */
+  bool run(CrossingRepair& done)
+  {
+    const std::size_t most = 8 * m_Crossings.size() + 16;
+    for (std::size_t step = 0; step < most && !m_Crossings.empty(); ++step)
+    {
+      const auto [first, second] = *m_Crossings.begin();
+      std::optional<std::pair<EdgeOperation, Outcome>> best;
+      for (const auto& [u, v] : edgesAround({ first, second }))
+        for (int kind = 0; kind < 3; ++kind)
+        {
+          std::optional<EdgeOperation> operation = kind == 0 ? flip(u, v) : kind == 1 ? collapse(u, v) : collapse(v, u);
+          if (!operation)
+            continue;
+          // Of the operations that leave fewer crossings, the one whose triangles are widest: a
+          // single flip can undo a fold and leave a needle, where a collapse beside it would not.
+          // (Undoing a fold can take a step that crosses something else on the way.)
+          std::optional<Outcome> outcome = judge(*operation);
+          if (outcome && outcome->crossings < m_Crossings.size() &&
+              (!best || outcome->largestCosine < best->second.largestCosine ||
+               (outcome->largestCosine == best->second.largestCosine && outcome->crossings < best->second.crossings)))
+            best.emplace(std::move(*operation), std::move(*outcome));
+        }
+      if (!best)
+        return false;
+      apply(best->first, best->second);
+      ++(best->first.collapse ? done.collapses : done.flips);
+    }
+    return m_Crossings.empty();
+  }
+
+  /** Each triangle of movable corners narrower than narrowAngleDegrees flipped or collapsed away
+   *  where that widens the narrowest angle it touches and makes no crossing; two sweeps. */
+  void widenNarrowTriangles(CrossingRepair& done)
+  {
+    const double narrowCosine = std::cos(narrowAngleDegrees * M_PI / 180.0);
+    for (int sweep = 0; sweep < 2; ++sweep)
+      for (std::size_t t : m_Scope)
+      {
+        const Triangle corners = m_Mesh.triangles[t];
+        if (!m_Alive[t] || !movable(corners[0]) || !movable(corners[1]) || !movable(corners[2]) ||
+            largestAngleCosine(m_Mesh.points, corners) <= narrowCosine)
+          continue;
+        std::optional<std::pair<EdgeOperation, Outcome>> best;
+        for (int i = 0; i < 3; ++i)
+        {
+          const std::int32_t u = corners[i], v = corners[(i + 1) % 3];
+          for (int kind = 0; kind < 3; ++kind)
+          {
+            std::optional<EdgeOperation> operation = kind == 0 ? flip(u, v) : kind == 1 ? collapse(u, v) : collapse(v, u);
+            if (!operation)
+              continue;
+            std::optional<Outcome> outcome = judge(*operation);
+            if (outcome && outcome->added.empty() && outcome->crossings == m_Crossings.size() &&
+                outcome->largestCosine < narrowestBefore(*operation) &&
+                (!best || outcome->largestCosine < best->second.largestCosine))
+              best.emplace(std::move(*operation), std::move(*outcome));
+          }
+        }
+        if (best)
+        {
+          apply(best->first, best->second);
+          ++(best->first.collapse ? done.collapses : done.flips);
+        }
+      }
+  }
+
+  /** The mesh without the removed triangles and the vertices no triangle uses any more; `done`
+   *  gets the vertices' former numbers. */
+  void compact(CrossingRepair& done)
+  {
+    std::vector<std::int32_t> newNumber(m_Mesh.points.size(), -1);
+    std::vector<Triangle> kept;
+    kept.reserve(m_Mesh.triangles.size());
+    for (std::size_t t = 0; t < m_Mesh.triangles.size(); ++t)
+      if (m_Alive[t])
+      {
+        kept.push_back(m_Mesh.triangles[t]);
+        for (std::int32_t v : m_Mesh.triangles[t])
+          newNumber[static_cast<std::size_t>(v)] = 0;
+      }
+    std::vector<std::int32_t> former;
+    std::vector<Point3> points;
+    for (std::size_t v = 0; v < newNumber.size(); ++v)
+      if (newNumber[v] == 0)
+      {
+        newNumber[v] = static_cast<std::int32_t>(former.size());
+        former.push_back(static_cast<std::int32_t>(v));
+        points.push_back(m_Mesh.points[v]);
+      }
+    for (Triangle& t : kept)
+      for (std::int32_t& v : t)
+        v = newNumber[static_cast<std::size_t>(v)];
+    m_Mesh.points = std::move(points);
+    m_Mesh.triangles = std::move(kept);
+    done.formerVertex = std::move(former);
+  }
+
+private:
+  /** The edges (u < v) of the triangles around the corners of the given triangles. */
+  std::set<std::pair<std::int32_t, std::int32_t>> edgesAround(std::initializer_list<std::size_t> triangles) const
+  {
+    std::set<std::pair<std::int32_t, std::int32_t>> edges;
+    for (std::size_t t : triangles)
+      for (std::int32_t corner : m_Mesh.triangles[t])
+        for (std::size_t around : fan(corner))
+        {
+          const Triangle& a = m_Mesh.triangles[around];
+          for (int i = 0; i < 3; ++i)
+            edges.insert(std::minmax(a[i], a[(i + 1) % 3]));
+        }
+    return edges;
+  }
+
+  const std::vector<std::size_t>& fan(std::int32_t v) const
+  {
+    static const std::vector<std::size_t> none;
+    const auto found = m_Fan.find(v);
+    return found == m_Fan.end() ? none : found->second;
+  }
+
+  bool movable(std::int32_t v) const { return m_Movable[static_cast<std::size_t>(v)] != 0; }
+
+  /** Whether u and v are at most two edge lengths apart: as far as the far corners of two
+   *  triangles of the remesh's longest edges (4/3 of the length), whose diagonal a flip makes. */
+  bool withinReach(std::int32_t u, std::int32_t v) const
+  {
+    const Point3 &p = m_Mesh.points[static_cast<std::size_t>(u)], &q = m_Mesh.points[static_cast<std::size_t>(v)];
+    const double dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
+    return dx * dx + dy * dy + dz * dz <= 4.0 * m_Edge * m_Edge;
+  }
+
+  /** The triangle with the directed edge u -> v, and its third corner; nothing if there is none. */
+  std::optional<std::pair<std::size_t, std::int32_t>> triangleWithEdge(std::int32_t u, std::int32_t v) const
+  {
+    for (std::size_t t : fan(u))
+    {
+      const Triangle& a = m_Mesh.triangles[t];
+      for (int i = 0; i < 3; ++i)
+        if (a[i] == u && a[(i + 1) % 3] == v)
+          return std::make_pair(t, a[(i + 2) % 3]);
+    }
+    return std::nullopt;
+  }
+
+  std::set<std::int32_t> neighbours(std::int32_t v) const
+  {
+    std::set<std::int32_t> around;
+    for (std::size_t t : fan(v))
+      for (std::int32_t w : m_Mesh.triangles[t])
+        if (w != v)
+          around.insert(w);
+    return around;
+  }
+
+  /** Edge uv replaced by the other diagonal of its two triangles. */
+  std::optional<EdgeOperation> flip(std::int32_t u, std::int32_t v) const
+  {
+    if (!movable(u) || !movable(v))
+      return std::nullopt;
+    const auto left = triangleWithEdge(u, v), right = triangleWithEdge(v, u);
+    if (!left || !right || left->second == right->second)
+      return std::nullopt;
+    const std::int32_t a = left->second, b = right->second;
+    if (!withinReach(a, b) || neighbours(a).count(b)) // too long, or the new edge is there already
+      return std::nullopt;
+    EdgeOperation flipped;
+    flipped.rewritten = { { left->first, Triangle{ a, u, b } }, { right->first, Triangle{ b, v, a } } };
+    return flipped;
+  }
+
+  /** Vertex u merged into v, which stays where it is. */
+  std::optional<EdgeOperation> collapse(std::int32_t u, std::int32_t v) const
+  {
+    if (!movable(u) || !movable(v) || !withinReach(u, v))
+      return std::nullopt;
+    const auto left = triangleWithEdge(u, v), right = triangleWithEdge(v, u);
+    if (!left || !right || left->second == right->second)
+      return std::nullopt;
+    // The link condition: u and v have no neighbours in common but the two across their edge, and
+    // those keep at least three neighbours each.
+    const std::set<std::int32_t> aroundU = neighbours(u), aroundV = neighbours(v);
+    std::size_t common = 0;
+    for (std::int32_t w : aroundU)
+      common += aroundV.count(w);
+    if (common != 2 || neighbours(left->second).size() < 4 || neighbours(right->second).size() < 4)
+      return std::nullopt;
+    EdgeOperation merged;
+    merged.collapse = true;
+    merged.removed = { left->first, right->first };
+    for (std::size_t t : fan(u))
+      if (t != left->first && t != right->first)
+      {
+        Triangle moved = m_Mesh.triangles[t];
+        std::replace(moved.begin(), moved.end(), u, v);
+        merged.rewritten.emplace_back(t, moved);
+      }
+    return merged;
+  }
+
+  /** The largest angle cosine (the narrowest angle) of the triangles the operation changes, as they are. */
+  double narrowestBefore(const EdgeOperation& operation) const
+  {
+    double largest = -1.0;
+    for (std::size_t t : operation.removed)
+      largest = std::max(largest, largestAngleCosine(m_Mesh.points, m_Mesh.triangles[t]));
+    for (const auto& rewritten : operation.rewritten)
+      largest = std::max(largest, largestAngleCosine(m_Mesh.points, m_Mesh.triangles[rewritten.first]));
+    return largest;
+  }
+
+  /** The operation's outcome, or nothing if it makes a degenerate triangle or turns one over. */
+  std::optional<Outcome> judge(const EdgeOperation& operation) const
+  {
+    const std::vector<Point3>& points = m_Mesh.points;
+    // Which way the surface faces there: the area normals of every triangle the operation changes,
+    // summed. (Not each triangle's own: a folded triangle faces the wrong way itself.)
+    Point3 facing{ 0.0, 0.0, 0.0 };
+    const auto add = [&](std::size_t t)
+    {
+      const Point3 n = areaNormal(m_Mesh, m_Mesh.triangles[t]);
+      facing = { facing.x + n.x, facing.y + n.y, facing.z + n.z };
+    };
+    for (std::size_t t : operation.removed)
+      add(t);
+    for (const auto& rewritten : operation.rewritten)
+      add(rewritten.first);
+    Outcome outcome;
+    outcome.largestCosine = -1.0;
+    std::vector<BoundingBox> boxes;
+    // The volume the operation adds or takes away (tetrahedra from the origin): at most edge^3 / 8.
+    double volumeChange = 0.0;
+    const auto volumeOf = [&](const Triangle& t)
+    {
+      const Point3 &a = points[static_cast<std::size_t>(t[0])], &b = points[static_cast<std::size_t>(t[1])],
+                   &c = points[static_cast<std::size_t>(t[2])];
+      return (a.x * (b.y * c.z - b.z * c.y) + a.y * (b.z * c.x - b.x * c.z) + a.z * (b.x * c.y - b.y * c.x)) / 6.0;
+    };
+    for (std::size_t t : operation.removed)
+      volumeChange -= volumeOf(m_Mesh.triangles[t]);
+    for (const auto& [slot, corners] : operation.rewritten)
+      volumeChange += volumeOf(corners) - volumeOf(m_Mesh.triangles[slot]);
+    if (std::abs(volumeChange) > 0.125 * m_Edge * m_Edge * m_Edge)
+      return std::nullopt;
+    for (const auto& [slot, corners] : operation.rewritten)
+    {
+      const auto point = [&](int i) { const Point3& p = points[static_cast<std::size_t>(corners[i])]; return Kernel::Point_3(p.x, p.y, p.z); };
+      if (CGAL::collinear(point(0), point(1), point(2)))
+        return std::nullopt;
+      if (!(dot(areaNormal(m_Mesh, corners), facing) > 0.0))
+        return std::nullopt;
+      outcome.largestCosine = std::max(outcome.largestCosine, largestAngleCosine(points, corners));
+      boxes.push_back(boxOf(points, corners));
+    }
+    const auto changed = [&](std::size_t t)
+    {
+      return std::find(operation.removed.begin(), operation.removed.end(), t) != operation.removed.end() ||
+             std::any_of(operation.rewritten.begin(), operation.rewritten.end(), [&](const auto& r) { return r.first == t; });
+    };
+    outcome.crossings = static_cast<std::size_t>(std::count_if(m_Crossings.begin(), m_Crossings.end(), [&](const auto& pair)
+                                                               { return !changed(pair.first) && !changed(pair.second); }));
+    for (std::size_t i = 0; i < operation.rewritten.size(); ++i)
+    {
+      const auto& [slot, corners] = operation.rewritten[i];
+      for (std::size_t other : m_Scope)
+        if (m_Alive[other] && !changed(other) && boxes[i].overlaps(boxOf(points, m_Mesh.triangles[other])) &&
+            trianglesCross(points, corners, m_Mesh.triangles[other]))
+          outcome.added.emplace_back(std::minmax(slot, other));
+      for (std::size_t j = i + 1; j < operation.rewritten.size(); ++j)
+        if (trianglesCross(points, corners, operation.rewritten[j].second))
+          outcome.added.emplace_back(std::minmax(slot, operation.rewritten[j].first));
+    }
+    outcome.crossings += outcome.added.size();
+    return outcome;
+  }
+
+  void apply(const EdgeOperation& operation, const Outcome& outcome)
+  {
+    const auto leave = [&](std::size_t t)
+    {
+      for (std::int32_t v : m_Mesh.triangles[t])
+      {
+        const auto found = m_Fan.find(v);
+        if (found != m_Fan.end())
+          found->second.erase(std::remove(found->second.begin(), found->second.end(), t), found->second.end());
+      }
+    };
+    const auto changedPair = [&](std::size_t t)
+    {
+      for (auto pair = m_Crossings.begin(); pair != m_Crossings.end();)
+        pair = pair->first == t || pair->second == t ? m_Crossings.erase(pair) : std::next(pair);
+    };
+    for (std::size_t t : operation.removed)
+    {
+      leave(t);
+      changedPair(t);
+      m_Alive[t] = 0;
+    }
+    for (const auto& [slot, corners] : operation.rewritten)
+    {
+      leave(slot);
+      changedPair(slot);
+      m_Mesh.triangles[slot] = corners;
+      for (std::int32_t v : corners)
+      {
+        const auto found = m_Fan.find(v);
+        if (found != m_Fan.end())
+          found->second.push_back(slot);
+      }
+    }
+    m_Crossings.insert(outcome.added.begin(), outcome.added.end());
+  }
+
+  TriangleMesh& m_Mesh;
+  const std::vector<char>& m_Movable;
+  double m_Edge;
+  std::vector<char> m_Alive;
+  TrianglePairs m_Crossings;
+  std::unordered_map<std::int32_t, std::vector<std::size_t>> m_Fan;
+  std::vector<std::size_t> m_Scope;
+};
+
+} // namespace
+
+CrossingRepair repairCrossingsLocally(TriangleMesh& mesh, const std::vector<std::pair<std::size_t, std::size_t>>& crossings,
+                                      const std::vector<char>& movable, double edgeLength)
+{
+  CrossingRepair done;
+  LocalRepair repair(mesh, crossings, movable, edgeLength);
+  repair.run(done);
+  repair.compact(done);
+  return done;
+}
+
+CrossingRepair widenNarrowTrianglesLocally(TriangleMesh& mesh, const std::vector<char>& movable, double edgeLength)
+{
+  CrossingRepair done;
+  LocalRepair repair(mesh, {}, movable, edgeLength);
+  repair.widenNarrowTriangles(done);
+  repair.compact(done);
+  return done;
+}
+
+} // namespace slicemesh

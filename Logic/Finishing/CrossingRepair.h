@@ -1,0 +1,48 @@
+// Undoing a finished piece's few self-crossings where they are, by edge flips and collapses, so that
+// a large piece is not remeshed whole again for a handful of folds.
+#ifndef CrossingRepair_h
+#define CrossingRepair_h
+
+#include "Core/SliceMeshTypes.h"
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace slicemesh
+{
+
+/** What a local repair did to a mesh. */
+struct CrossingRepair
+{
+  std::size_t flips = 0;
+  std::size_t collapses = 0;
+  /** For every vertex of the repaired mesh, its number before (collapsed vertices are gone). */
+  std::vector<std::int32_t> formerVertex;
+};
+
+/** Removes the crossings of `mesh` (`crossings`: pairs of triangle numbers, as the self-intersection
+ *  test gives them) one at a time, greedily: of the flips and collapses of the edges around the two
+ *  triangles of a crossing, the one that leaves the fewest crossings nearby, if that is fewer than
+ *  before. Only edges between `movable` vertices (a flag per vertex) change, and a collapse moves no
+ *  point: the surviving vertex stays where it is. An operation is made only if it keeps the surface
+ *  a closed 2-manifold of the same topology (link condition; no edge twice), makes no degenerate
+ *  triangle and none that faces against the triangles it replaces (their area normals summed), and
+ *  reshapes nothing larger than a fold: no edge longer than twice `edgeLength` (mm, the remesh's
+ *  target) is collapsed or made, and the enclosed volume changes by at most edgeLength^3 / 8 per
+ *  operation. The crossings are judged against the triangles around the movable vertices only: the
+ *  caller validates the whole mesh after. Returns what it did; `mesh` is left
+ *  without the removed triangles and vertices. */
+CrossingRepair repairCrossingsLocally(TriangleMesh& mesh, const std::vector<std::pair<std::size_t, std::size_t>>& crossings,
+                                      const std::vector<char>& movable, double edgeLength);
+
+/** After a repair, where the points have taken their last places: each triangle of `movable`
+ *  corners with an angle under 20 degrees (a remesh sliver beside a repaired fold) flipped or
+ *  collapsed away where that widens the narrowest angle among the triangles it changes and makes no
+ *  crossing with the triangles around, under the bounds of repairCrossingsLocally. The caller
+ *  validates the whole mesh after. */
+CrossingRepair widenNarrowTrianglesLocally(TriangleMesh& mesh, const std::vector<char>& movable, double edgeLength);
+
+} // namespace slicemesh
+
+#endif

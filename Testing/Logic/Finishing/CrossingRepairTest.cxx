@@ -1,0 +1,136 @@
+// The local repair of a surface's crossings, on closed surfaces whose answer is known: a fold made
+// on a flat face, which a collapse undoes without moving the face; and two boxes through each
+// other, which no flip or collapse parts.
+#include "Finishing/CrossingRepair.h"
+#include "Measures/MeshValidation.h"
+#include "Measures/SelfIntersections.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <map>
+
+using namespace slicemesh;
+
+namespace
+{
+
+/** The surface of the box [origin, origin + n] (mm), each face an n x n grid of unit squares split
+ *  along one diagonal, facing outwards. */
+TriangleMesh gridBox(int n, const Point3& origin = { 0.0, 0.0, 0.0 })
+{
+  TriangleMesh mesh;
+  std::map<std::array<int, 3>, std::int32_t> index;
+  const auto vertex = [&](const std::array<int, 3>& c)
+  {
+    const auto [at, added] = index.emplace(c, static_cast<std::int32_t>(mesh.points.size()));
+    if (added)
+      mesh.points.push_back({ origin.x + c[0], origin.y + c[1], origin.z + c[2] });
+    return at->second;
+  };
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side = 0; side <= n; side += n)
+    {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+        {
+          const auto at = [&](int a, int b)
+          {
+            std::array<int, 3> c{};
+            c[axis] = side;
+            c[u] = a;
+            c[v] = b;
+            return vertex(c);
+          };
+          const std::int32_t p = at(i, j), q = at(i + 1, j), r = at(i + 1, j + 1), s = at(i, j + 1);
+          // (u, v, axis) is right-handed: counter-clockwise in (u, v) faces +axis.
+          if (side == n)
+          {
+            mesh.triangles.push_back({ p, q, r });
+            mesh.triangles.push_back({ p, r, s });
+          }
+          else
+          {
+            mesh.triangles.push_back({ p, r, q });
+            mesh.triangles.push_back({ p, s, r });
+          }
+        }
+    }
+  return mesh;
+}
+
+std::int32_t vertexAt(const TriangleMesh& mesh, const Point3& p)
+{
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    if (mesh.points[v].x == p.x && mesh.points[v].y == p.y && mesh.points[v].z == p.z)
+      return static_cast<std::int32_t>(v);
+  return -1;
+}
+
+} // namespace
+
+TEST(CrossingRepair, AFoldOnAFlatFaceIsCollapsedAwayAndTheFaceStaysFlat)
+{
+  TriangleMesh box = gridBox(8);
+  const MeshValidation before = validateMesh(box);
+  ASSERT_TRUE(before.valid()) << before.summary();
+  // A vertex of the top face pushed past its diagonal neighbour: its triangles fold over their
+  // neighbours, in the face's plane, as a remesh's vertex can where two voxels touch along an edge.
+  const std::int32_t pushed = vertexAt(box, { 4.0, 4.0, 8.0 });
+  ASSERT_GE(pushed, 0);
+  box.points[static_cast<std::size_t>(pushed)] = { 5.6, 5.6, 8.0 };
+  std::vector<std::pair<std::size_t, std::size_t>> crossings;
+  const MeshValidation folded = validateMesh(box, crossings);
+  ASSERT_GT(folded.selfIntersections, 0u) << folded.summary();
+
+  std::vector<char> movable(box.points.size(), 0);
+  for (std::size_t v = 0; v < box.points.size(); ++v)
+    movable[v] = box.points[v].z == 8.0 && std::abs(box.points[v].x - 4.5) < 3.0 && std::abs(box.points[v].y - 4.5) < 3.0;
+  const CrossingRepair repair = repairCrossingsLocally(box, crossings, movable, 1.1);
+
+  const MeshValidation after = validateMesh(box);
+  EXPECT_TRUE(after.valid()) << after.summary();
+  EXPECT_EQ(after.selfIntersections, 0u);
+  EXPECT_EQ(after.eulerCharacteristic, before.eulerCharacteristic);
+  EXPECT_EQ(after.components, 1u);
+  EXPECT_GE(repair.collapses, 1u);
+  // No point moved: the box is the same solid (the top face flat at z = 8).
+  EXPECT_NEAR(after.volume, 512.0, 1e-9);
+  EXPECT_EQ(box.points.size(), before.vertices - repair.collapses);
+  ASSERT_EQ(repair.formerVertex.size(), box.points.size());
+  for (std::size_t v = 0; v < box.points.size(); ++v)
+  {
+    const Point3& was = gridBox(8).points[static_cast<std::size_t>(repair.formerVertex[v])];
+    if (repair.formerVertex[v] != pushed)
+      EXPECT_TRUE(box.points[v].x == was.x && box.points[v].y == was.y && box.points[v].z == was.z) << v;
+  }
+}
+
+TEST(CrossingRepair, TwoBoxesThroughEachOtherStillCrossAndKeepTheirShape)
+{
+  // Crossings that are no fold: two solids through each other. Collapses can make fewer pairs of
+  // (larger) triangles cross, but none parts them; each operation is bounded, so the boxes keep
+  // their volume to within what the operations were allowed, and stay closed manifolds.
+  TriangleMesh boxes = gridBox(4);
+  const TriangleMesh other = gridBox(4, { 2.0, 2.0, 2.0 });
+  const auto offset = static_cast<std::int32_t>(boxes.points.size());
+  boxes.points.insert(boxes.points.end(), other.points.begin(), other.points.end());
+  for (Triangle t : other.triangles)
+    boxes.triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+  std::vector<std::pair<std::size_t, std::size_t>> crossings;
+  const MeshValidation before = validateMesh(boxes, crossings);
+  ASSERT_GT(before.selfIntersections, 0u);
+  const double edge = 1.1;
+
+  const CrossingRepair repair = repairCrossingsLocally(boxes, crossings, std::vector<char>(boxes.points.size(), 1), edge);
+
+  const MeshValidation after = validateMesh(boxes);
+  EXPECT_GT(after.selfIntersections, 0u);
+  EXPECT_TRUE(after.soundTopology()) << after.summary();
+  EXPECT_EQ(after.components, 2u);
+  EXPECT_EQ(after.eulerCharacteristic, before.eulerCharacteristic);
+  const double operations = static_cast<double>(repair.flips + repair.collapses);
+  EXPECT_LE(std::abs(after.volume - before.volume), operations * 0.125 * edge * edge * edge + 1e-9);
+}
