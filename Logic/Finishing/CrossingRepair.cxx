@@ -23,10 +23,11 @@ using TrianglePairs = std::set<std::pair<std::size_t, std::size_t>>;
 /** Narrower than this, a triangle left beside a repaired fold is widened if an operation can. */
 constexpr double narrowAngleDegrees = 20.0;
 
-/** One flip or collapse: the triangles it removes and those it rewrites (slot, new corners). */
+/** One flip, collapse or vertex move: the triangles it removes and those it rewrites (slot, new corners). */
 struct EdgeOperation
 {
   bool collapse = false;
+  bool move = false; ///< a vertex moved: its triangles take a new point
   std::vector<std::size_t> removed;
   std::vector<std::pair<std::size_t, Triangle>> rewritten;
 };
@@ -77,7 +78,7 @@ class LocalRepair
 public:
   LocalRepair(TriangleMesh& mesh, const std::vector<std::pair<std::size_t, std::size_t>>& crossings,
               const std::vector<char>& movable, double edgeLength)
-    : m_Mesh(mesh), m_Movable(movable), m_Edge(edgeLength), m_Alive(mesh.triangles.size(), 1),
+    : m_Mesh(mesh), m_Movable(movable), m_Edge(edgeLength), m_FirstNew(mesh.points.size()), m_Alive(mesh.triangles.size(), 1),
       m_Crossings(crossings.begin(), crossings.end())
   {
     // Two rings past the movable vertices: every triangle a flip or collapse there rewrites, and
@@ -110,29 +111,42 @@ public:
   bool run(CrossingRepair& done)
   {
     const std::size_t most = 8 * m_Crossings.size() + 16;
+    TrianglePairs stuck; // no operation around them leaves fewer crossings, as the mesh is now
     for (std::size_t step = 0; step < most && !m_Crossings.empty(); ++step)
     {
-      const auto [first, second] = *m_Crossings.begin();
+      const auto next = std::find_if(m_Crossings.begin(), m_Crossings.end(), [&](const auto& pair) { return !stuck.count(pair); });
+      if (next == m_Crossings.end())
+        return false;
+      const auto [first, second] = *next;
       std::optional<std::pair<EdgeOperation, Outcome>> best;
+      std::vector<EdgeOperation> candidates;
       for (const auto& [u, v] : edgesAround({ first, second }))
-        for (int kind = 0; kind < 3; ++kind)
+        for (std::optional<EdgeOperation> operation : { flip(u, v), collapse(u, v), collapse(v, u) })
+          if (operation)
+            candidates.push_back(std::move(*operation));
+      for (std::size_t t : { first, second })
+        for (std::int32_t u : Triangle(m_Mesh.triangles[t]))
+          if (std::optional<EdgeOperation> operation = movedToNeighbours(u))
+            candidates.push_back(std::move(*operation));
+      for (EdgeOperation& operation : candidates)
         {
-          std::optional<EdgeOperation> operation = kind == 0 ? flip(u, v) : kind == 1 ? collapse(u, v) : collapse(v, u);
-          if (!operation)
-            continue;
           // Of the operations that leave fewer crossings, the one whose triangles are widest: a
           // single flip can undo a fold and leave a needle, where a collapse beside it would not.
           // (Undoing a fold can take a step that crosses something else on the way.)
-          std::optional<Outcome> outcome = judge(*operation);
+          std::optional<Outcome> outcome = judge(operation);
           if (outcome && outcome->crossings < m_Crossings.size() &&
               (!best || outcome->largestCosine < best->second.largestCosine ||
                (outcome->largestCosine == best->second.largestCosine && outcome->crossings < best->second.crossings)))
-            best.emplace(std::move(*operation), std::move(*outcome));
+            best.emplace(std::move(operation), std::move(*outcome));
         }
       if (!best)
-        return false;
+      {
+        stuck.insert(*next);
+        continue;
+      }
       apply(best->first, best->second);
-      ++(best->first.collapse ? done.collapses : done.flips);
+      count(best->first, done);
+      stuck.clear();
     }
     return m_Crossings.empty();
   }
@@ -168,9 +182,27 @@ public:
         if (best)
         {
           apply(best->first, best->second);
-          ++(best->first.collapse ? done.collapses : done.flips);
+          count(best->first, done);
         }
       }
+  }
+
+  /** The centroids of the triangles of the crossing pairs left. */
+  std::vector<Point3> crossingPlaces() const
+  {
+    std::vector<Point3> places;
+    for (const auto& [first, second] : m_Crossings)
+      for (std::size_t t : { first, second })
+      {
+        Point3 sum{ 0.0, 0.0, 0.0 };
+        for (std::int32_t v : m_Mesh.triangles[t])
+        {
+          const Point3& p = m_Mesh.points[static_cast<std::size_t>(v)];
+          sum = { sum.x + p.x / 3.0, sum.y + p.y / 3.0, sum.z + p.z / 3.0 };
+        }
+        places.push_back(sum);
+      }
+    return places;
   }
 
   /** The mesh without the removed triangles and the vertices no triangle uses any more; `done`
@@ -193,7 +225,7 @@ public:
       if (newNumber[v] == 0)
       {
         newNumber[v] = static_cast<std::int32_t>(former.size());
-        former.push_back(static_cast<std::int32_t>(v));
+        former.push_back(v < m_FirstNew ? static_cast<std::int32_t>(v) : m_Origin[v - m_FirstNew]);
         points.push_back(m_Mesh.points[v]);
       }
     for (Triangle& t : kept)
@@ -306,6 +338,43 @@ private:
     return merged;
   }
 
+  /** Vertex u moved to the mean of its neighbours, where a fold around it untangles: its triangles
+   *  take a new point (added to the mesh; u is left without triangles), within two edge lengths. */
+  std::optional<EdgeOperation> movedToNeighbours(std::int32_t u)
+  {
+    if (!movable(u) || fan(u).empty())
+      return std::nullopt;
+    const std::set<std::int32_t> around = neighbours(u);
+    Point3 mean{ 0.0, 0.0, 0.0 };
+    for (std::int32_t w : around)
+    {
+      const Point3& p = m_Mesh.points[static_cast<std::size_t>(w)];
+      mean = { mean.x + p.x, mean.y + p.y, mean.z + p.z };
+    }
+    const double share = 1.0 / static_cast<double>(around.size());
+    mean = { mean.x * share, mean.y * share, mean.z * share };
+    const auto moved = static_cast<std::int32_t>(m_Mesh.points.size());
+    m_Mesh.points.push_back(mean); // left unused, and dropped by compact, unless the move is made
+    m_Movable.push_back(1);
+    m_Origin.push_back(static_cast<std::size_t>(u) < m_FirstNew ? u : m_Origin[static_cast<std::size_t>(u) - m_FirstNew]);
+    if (!withinReach(u, moved))
+      return std::nullopt;
+    EdgeOperation operation;
+    operation.move = true;
+    for (std::size_t t : fan(u))
+    {
+      Triangle corners = m_Mesh.triangles[t];
+      std::replace(corners.begin(), corners.end(), u, moved);
+      operation.rewritten.emplace_back(t, corners);
+    }
+    return operation;
+  }
+
+  static void count(const EdgeOperation& operation, CrossingRepair& done)
+  {
+    ++(operation.collapse ? done.collapses : operation.move ? done.moves : done.flips);
+  }
+
   /** The largest angle cosine (the narrowest angle) of the triangles the operation changes, as they are. */
   double narrowestBefore(const EdgeOperation& operation) const
   {
@@ -414,13 +483,17 @@ private:
         const auto found = m_Fan.find(v);
         if (found != m_Fan.end())
           found->second.push_back(slot);
+        else if (static_cast<std::size_t>(v) >= m_FirstNew) // a moved vertex's new point
+          m_Fan[v].push_back(slot);
       }
     }
     m_Crossings.insert(outcome.added.begin(), outcome.added.end());
   }
 
   TriangleMesh& m_Mesh;
-  const std::vector<char>& m_Movable;
+  std::vector<char> m_Movable; ///< grows with the points moves add
+  std::size_t m_FirstNew;       ///< the first point a move added
+  std::vector<std::int32_t> m_Origin; ///< of each point a move added: the vertex it moved
   double m_Edge;
   std::vector<char> m_Alive;
   TrianglePairs m_Crossings;
@@ -435,7 +508,9 @@ CrossingRepair repairCrossingsLocally(TriangleMesh& mesh, const std::vector<std:
 {
   CrossingRepair done;
   LocalRepair repair(mesh, crossings, movable, edgeLength);
-  repair.run(done);
+  done.undone = repair.run(done);
+  if (!done.undone)
+    done.stillCrossingAt = repair.crossingPlaces();
   repair.compact(done);
   return done;
 }

@@ -17,6 +17,14 @@ struct CrossingRepair
 {
   std::size_t flips = 0;
   std::size_t collapses = 0;
+  std::size_t moves = 0; ///< vertices moved to the mean of their neighbours
+  std::size_t operations() const { return flips + collapses + moves; }
+  /** Whether every crossing was undone, as judged against the triangles around them (the caller's
+   *  validation of the whole mesh decides); when not, the mesh crosses itself still. */
+  bool undone = false;
+  /** When not undone: where the mesh still crosses itself, the centroids of the triangles of the
+   *  pairs left (as the repair left them). */
+  std::vector<Point3> stillCrossingAt;
   /** For every vertex of the repaired mesh, its number before (collapsed vertices are gone). */
   std::vector<std::int32_t> formerVertex;
 };

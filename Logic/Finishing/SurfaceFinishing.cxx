@@ -222,8 +222,9 @@ struct FinishedPiece
   std::size_t trianglesKeptTiled = 0; ///< of a remeshed piece: tiled triangles kept around `kept`
   /** Of a piece remeshed around places: those places. Remeshed again, it keeps them and adds new ones. */
   KeptPlaces kept;
-  /** The pairs of triangles of `mesh` that cross, from its validation (none in a valid piece). */
-  std::vector<std::pair<std::size_t, std::size_t>> crossings;
+  /** Where `mesh` crosses itself, from its validation: the centroids of the triangles of every
+   *  crossing pair (none in a valid piece). */
+  std::vector<Point3> crossedAt;
   std::size_t edgesRepairedAtCrossings = 0; ///< flipped or collapsed where the remesh crossed itself
 };
 
@@ -413,37 +414,48 @@ void renumber(const CrossingRepair& repair, Arrays&... perVertex)
 /** The few crossings left in a finished piece undone where they are (repairCrossingsLocally), the
  *  points put back where the remesh left them given their smoothed places again where that crosses
  *  nothing (resmoothedAfterRepair), then the slivers there widened (widenNarrowTrianglesLocally).
- *  `unsmoothed` and `smoothed` (a point per vertex) are renumbered with the vertices; `validation`
- *  and `crossings` are the piece's after. Returns the edges flipped or collapsed and sets
+ *  `unsmoothed` and `smoothed` (a point per vertex) are renumbered with the vertices; `validation`,
+ *  `crossings` and `crossedAt` are the piece's after (where crossings remain, `validation` still
+ *  counts those before and `crossedAt` holds their places). Returns the operations made (flips, collapses, moves) and sets
  *  `unsmoothedVertices` when the crossings were all undone. */
 std::size_t repairedLocally(TriangleMesh& mesh, MeshValidation& validation,
-                            std::vector<std::pair<std::size_t, std::size_t>>& crossings, const std::vector<char>& held,
-                            const SurfaceFinishingOptions& options, std::vector<Point3>& unsmoothed,
-                            std::vector<Point3>& smoothed, bool resmooth, std::size_t& unsmoothedVertices)
+                            std::vector<std::pair<std::size_t, std::size_t>>& crossings, std::vector<Point3>& crossedAt,
+                            const std::vector<char>& held, const SurfaceFinishingOptions& options,
+                            std::vector<Point3>& unsmoothed, std::vector<Point3>& smoothed, bool resmooth,
+                            std::size_t& unsmoothedVertices)
 {
   const std::vector<Point3> places = crossingPlaces(mesh, crossings);
   std::vector<char> heldNow = held;
   const CrossingRepair repair =
     repairCrossingsLocally(mesh, crossings, repairableVertices(mesh, places, held, options), options.remeshing.targetEdgeLength);
   renumber(repair, unsmoothed, smoothed, heldNow);
+  // Not all undone: the piece is remeshed around the crossings left (crossedAt); the whole test of
+  // a piece of a million triangles would only confirm them.
+  if (!repair.undone)
+  {
+    crossedAt = repair.stillCrossingAt;
+    return repair.operations();
+  }
   validation = validateMesh(mesh, crossings);
+  crossedAt = crossingPlaces(mesh, crossings);
   if (validation.selfIntersections > 0 || !resmooth)
-    return repair.flips + repair.collapses;
+    return repair.operations();
   unsmoothedVertices = resmoothedAfterRepair(mesh, smoothed, unsmoothed, validation, crossings);
   TriangleMesh widened = mesh;
   const CrossingRepair widening = widenNarrowTrianglesLocally(widened, repairableVertices(widened, places, heldNow, options),
                                                               options.remeshing.targetEdgeLength);
-  if (widening.flips + widening.collapses == 0)
-    return repair.flips + repair.collapses;
+  if (widening.operations() == 0)
+    return repair.operations();
   std::vector<std::pair<std::size_t, std::size_t>> widenedCrossings;
   MeshValidation widenedValidation = validateMesh(widened, widenedCrossings);
   if (!rejection(widenedValidation, validation).empty()) // crossing a sheet the local test did not see
-    return repair.flips + repair.collapses;
+    return repair.operations();
   mesh = std::move(widened);
   validation = widenedValidation;
   crossings.clear();
+  crossedAt.clear();
   renumber(widening, unsmoothed, smoothed);
-  return repair.flips + repair.collapses + widening.flips + widening.collapses;
+  return repair.operations() + widening.operations();
 }
 
 /** A remeshed piece smoothed, given its volume, and put back where smoothing made it cross; its
@@ -466,6 +478,7 @@ FinishedPiece smoothedRemesh(TriangleMesh remeshed, const SurfaceFinishingOption
   MeshValidation validation = validateMesh(remeshed, crossings);
   std::vector<Point3> smoothed = validation.selfIntersections > 0 ? remeshed.points : std::vector<Point3>();
   unsmoothedVertices += unsmoothCrossings(remeshed, unsmoothed, validation, crossings);
+  std::vector<Point3> crossedAt = crossingPlaces(remeshed, crossings);
   // What putting vertices back did not undo is the remesh's own: a chord through the other sheet of
   // a gap a voxel wide, or a fold where two voxels touch along an edge. A few such crossings are
   // undone where they are; else the piece is remeshed again around them (remeshedPiece).
@@ -473,13 +486,13 @@ FinishedPiece smoothedRemesh(TriangleMesh remeshed, const SurfaceFinishingOption
   if (validation.selfIntersections > 0 && validation.selfIntersections <= mostCrossingsRepairedLocally &&
       validation.soundTopology() && validation.degenerateTriangles == 0)
   {
-    repairs = repairedLocally(remeshed, validation, crossings, held, options, unsmoothed, smoothed, leftAsTiled.empty(),
-                              unsmoothedVertices);
+    repairs = repairedLocally(remeshed, validation, crossings, crossedAt, held, options, unsmoothed, smoothed,
+                              leftAsTiled.empty(), unsmoothedVertices);
   }
   if (unsmoothedVertices > 0 && validation.selfIntersections == 0)
     relaxBesidePutBack(remeshed, unsmoothed, validation, options);
   FinishedPiece piece{ std::move(remeshed), SurfaceFinish::Remeshed, {}, unsmoothedVertices, validation, 0, {},
-                       std::move(crossings) };
+                       std::move(crossedAt) };
   piece.edgesRepairedAtCrossings = repairs;
   return piece;
 }
@@ -513,7 +526,7 @@ std::optional<FinishedPiece> remeshedAround(const TriangleMesh& tiled, const Mes
     }
     if (!crossesItselfInAFewPlaces(around->validation))
       return std::nullopt;
-    const std::vector<Point3> more = crossingPlaces(around->mesh, around->crossings);
+    const std::vector<Point3>& more = around->crossedAt;
     places.crossedItself.insert(places.crossedItself.end(), more.begin(), more.end());
   }
   return std::nullopt;
@@ -546,7 +559,7 @@ std::optional<FinishedPiece> remeshedPiece(const TriangleMesh& tiled, const Mesh
     return piece;
   if (!crossesItselfInAFewPlaces(piece->validation))
     return std::nullopt;
-  KeptPlaces places{ crossingPlaces(piece->mesh, piece->crossings), {} };
+  KeptPlaces places{ std::move(piece->crossedAt), {} };
   piece.reset(); // not held beside the second remesh
   return remeshedAround(tiled, reference, options, volume, threads, std::move(places));
 }

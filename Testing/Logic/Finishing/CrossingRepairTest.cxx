@@ -1,6 +1,6 @@
 // The local repair of a surface's crossings, on closed surfaces whose answer is known: a fold made
-// on a flat face, which a collapse undoes without moving the face; and two boxes through each
-// other, which no flip or collapse parts.
+// on a flat face, which a collapse, or a move of its vertex, undoes without moving the face; and two
+// boxes through each other, which no flip, collapse or move parts.
 #include "Finishing/CrossingRepair.h"
 #include "Measures/MeshValidation.h"
 #include "Measures/SelfIntersections.h"
@@ -131,6 +131,40 @@ TEST(CrossingRepair, TwoBoxesThroughEachOtherStillCrossAndKeepTheirShape)
   EXPECT_TRUE(after.soundTopology()) << after.summary();
   EXPECT_EQ(after.components, 2u);
   EXPECT_EQ(after.eulerCharacteristic, before.eulerCharacteristic);
-  const double operations = static_cast<double>(repair.flips + repair.collapses);
+  const double operations = static_cast<double>(repair.operations());
   EXPECT_LE(std::abs(after.volume - before.volume), operations * 0.125 * edge * edge * edge + 1e-9);
+}
+
+TEST(CrossingRepair, AFoldWhoseEdgesMayNotChangeIsUndoneByMovingItsVertex)
+{
+  // The same fold with only the pushed vertex movable: no edge may be flipped or collapsed (both
+  // ends must be movable), so the vertex itself goes to the mean of its neighbours, back into the
+  // face, where its fan no longer folds.
+  TriangleMesh box = gridBox(8);
+  const MeshValidation before = validateMesh(box);
+  const std::int32_t pushed = vertexAt(box, { 4.0, 4.0, 8.0 });
+  ASSERT_GE(pushed, 0);
+  box.points[static_cast<std::size_t>(pushed)] = { 5.4, 5.4, 8.0 }; // within two edges of the mean
+  std::vector<std::pair<std::size_t, std::size_t>> crossings;
+  ASSERT_GT(validateMesh(box, crossings).selfIntersections, 0u);
+  std::vector<char> movable(box.points.size(), 0);
+  movable[static_cast<std::size_t>(pushed)] = 1;
+
+  const CrossingRepair repair = repairCrossingsLocally(box, crossings, movable, 1.1);
+
+  EXPECT_TRUE(repair.undone);
+  EXPECT_EQ(repair.flips + repair.collapses, 0u);
+  EXPECT_GE(repair.moves, 1u);
+  const MeshValidation after = validateMesh(box);
+  EXPECT_TRUE(after.valid()) << after.summary();
+  EXPECT_EQ(after.eulerCharacteristic, before.eulerCharacteristic);
+  EXPECT_EQ(box.points.size(), before.vertices);
+  EXPECT_NEAR(after.volume, 512.0, 1e-9);
+  for (std::size_t v = 0; v < box.points.size(); ++v)
+    if (repair.formerVertex[v] == pushed) // at the mean of its six neighbours: where it was
+    {
+      EXPECT_NEAR(box.points[v].x, 4.0, 1e-12);
+      EXPECT_NEAR(box.points[v].y, 4.0, 1e-12);
+      EXPECT_EQ(box.points[v].z, 8.0);
+    }
 }
