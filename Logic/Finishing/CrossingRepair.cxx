@@ -124,9 +124,12 @@ public:
         for (std::optional<EdgeOperation> operation : { flip(u, v), collapse(u, v), collapse(v, u) })
           if (operation)
             candidates.push_back(std::move(*operation));
-      for (std::size_t t : { first, second })
-        for (std::int32_t u : Triangle(m_Mesh.triangles[t]))
-          if (std::optional<EdgeOperation> operation = movedToNeighbours(u))
+      std::set<std::int32_t> around;
+      for (const auto& [u, v] : edgesAround({ first, second }))
+        around.insert({ u, v });
+      for (std::int32_t u : around)
+        for (double way : { 1.0, 0.5 })
+          if (std::optional<EdgeOperation> operation = movedToNeighbours(u, way))
             candidates.push_back(std::move(*operation));
       for (EdgeOperation& operation : candidates)
         {
@@ -338,9 +341,10 @@ private:
     return merged;
   }
 
-  /** Vertex u moved to the mean of its neighbours, where a fold around it untangles: its triangles
-   *  take a new point (added to the mesh; u is left without triangles), within two edge lengths. */
-  std::optional<EdgeOperation> movedToNeighbours(std::int32_t u)
+  /** Vertex u moved `way` (1: all the way) towards the mean of its neighbours, where a fold around
+   *  it untangles: its triangles take a new point (added to the mesh; u is left without triangles),
+   *  within two edge lengths. */
+  std::optional<EdgeOperation> movedToNeighbours(std::int32_t u, double way)
   {
     if (!movable(u) || fan(u).empty())
       return std::nullopt;
@@ -352,7 +356,9 @@ private:
       mean = { mean.x + p.x, mean.y + p.y, mean.z + p.z };
     }
     const double share = 1.0 / static_cast<double>(around.size());
-    mean = { mean.x * share, mean.y * share, mean.z * share };
+    const Point3& from = m_Mesh.points[static_cast<std::size_t>(u)];
+    mean = { from.x + way * (mean.x * share - from.x), from.y + way * (mean.y * share - from.y),
+             from.z + way * (mean.z * share - from.z) };
     const auto moved = static_cast<std::int32_t>(m_Mesh.points.size());
     m_Mesh.points.push_back(mean); // left unused, and dropped by compact, unless the move is made
     m_Movable.push_back(1);

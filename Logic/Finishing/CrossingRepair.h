@@ -1,5 +1,5 @@
-// Undoing a finished piece's few self-crossings where they are, by edge flips and collapses, so that
-// a large piece is not remeshed whole again for a handful of folds.
+// Undoing a finished piece's few self-crossings where they are, by edge flips, collapses and vertex
+// moves, so that a large piece is not remeshed whole again for a handful of folds.
 #ifndef CrossingRepair_h
 #define CrossingRepair_h
 
@@ -17,7 +17,7 @@ struct CrossingRepair
 {
   std::size_t flips = 0;
   std::size_t collapses = 0;
-  std::size_t moves = 0; ///< vertices moved to the mean of their neighbours
+  std::size_t moves = 0; ///< vertices moved towards the mean of their neighbours
   std::size_t operations() const { return flips + collapses + moves; }
   /** Whether every crossing was undone, as judged against the triangles around them (the caller's
    *  validation of the whole mesh decides); when not, the mesh crosses itself still. */
@@ -25,22 +25,27 @@ struct CrossingRepair
   /** When not undone: where the mesh still crosses itself, the centroids of the triangles of the
    *  pairs left (as the repair left them). */
   std::vector<Point3> stillCrossingAt;
-  /** For every vertex of the repaired mesh, its number before (collapsed vertices are gone). */
+  /** For every vertex of the repaired mesh, its number before (collapsed vertices are gone; a moved
+   *  one's new point has the number of the vertex it moved). */
   std::vector<std::int32_t> formerVertex;
 };
 
 /** Removes the crossings of `mesh` (`crossings`: pairs of triangle numbers, as the self-intersection
- *  test gives them) one at a time, greedily: of the flips and collapses of the edges around the two
- *  triangles of a crossing, the one that leaves the fewest crossings nearby, if that is fewer than
- *  before. Only edges between `movable` vertices (a flag per vertex) change, and a collapse moves no
- *  point: the surviving vertex stays where it is. An operation is made only if it keeps the surface
- *  a closed 2-manifold of the same topology (link condition; no edge twice), makes no degenerate
- *  triangle and none that faces against the triangles it replaces (their area normals summed), and
- *  reshapes nothing larger than a fold: no edge longer than twice `edgeLength` (mm, the remesh's
- *  target) is collapsed or made, and the enclosed volume changes by at most edgeLength^3 / 8 per
- *  operation. The crossings are judged against the triangles around the movable vertices only: the
- *  caller validates the whole mesh after. Returns what it did; `mesh` is left
- *  without the removed triangles and vertices. */
+ *  test gives them) one at a time, greedily. Around the two triangles of a crossing it tries the
+ *  flips and collapses of their edges and the edges at their corners, and moves of those edges'
+ *  vertices to (and half way to) the mean of their neighbours; it makes the one that leaves fewer
+ *  crossings nearby with the widest triangles. A crossing that none improves is passed over for
+ *  the others until an operation changes the mesh. Only `movable` vertices (a flag per vertex)
+ *  change: both ends of a flipped or collapsed edge, a moved vertex. A collapse moves no point (the
+ *  surviving vertex stays where it is); a move gives the vertex's triangles a new point. An
+ *  operation is made only if it keeps the surface a closed 2-manifold of the same topology (link
+ *  condition; no edge twice), makes no degenerate triangle and none that faces against the
+ *  triangles it replaces (their area normals summed), and reshapes nothing larger than a fold: no
+ *  edge longer than twice `edgeLength` (mm, the remesh's target) is collapsed or made, no vertex
+ *  moves farther, and the enclosed volume changes by at most edgeLength^3 / 8 per operation. The
+ *  crossings are judged against the triangles around the movable vertices only: the caller
+ *  validates the whole mesh after. Returns what it did; `mesh` is left without the removed
+ *  triangles and vertices. */
 CrossingRepair repairCrossingsLocally(TriangleMesh& mesh, const std::vector<std::pair<std::size_t, std::size_t>>& crossings,
                                       const std::vector<char>& movable, double edgeLength);
 
