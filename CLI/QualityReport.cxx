@@ -157,7 +157,7 @@ RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshVal
       combined.piecesByFinish[f] += q.piecesByFinish[f];
     combined.unsmoothedVertices += q.unsmoothedVertices;
     combined.trianglesKeptTiled += q.trianglesKeptTiled;
-    combined.edgesRepairedAtCrossings += q.edgesRepairedAtCrossings;
+    combined.crossingRepairOperations += q.crossingRepairOperations;
     if (!q.fallback.empty())
       combined.fallback += (combined.fallback.empty() ? "label " : "; label ") + std::to_string(label.label) + " (" +
                            label.name + "): " + q.fallback;
@@ -251,7 +251,7 @@ void writeMeshBlocks(std::ostream& json, const std::string& indent, const MeshVa
        << q.piecesByFinish[1] << ", \"leftTiled\": " << q.piecesByFinish[2] << " },\n";
   number("verticesLeftUnsmoothed", static_cast<double>(q.unsmoothedVertices));
   number("trianglesKeptTiledAtCrossings", static_cast<double>(q.trianglesKeptTiled));
-  number("edgesRepairedAtCrossings", static_cast<double>(q.edgesRepairedAtCrossings));
+  number("crossingRepairOperations", static_cast<double>(q.crossingRepairOperations));
   json << indent << "  \"fallback\": " << (q.fallback.empty() ? "null" : jsonString(q.fallback)) << "\n";
   json << indent << "},\n";
   json << indent << "\"resolvedOptions\": {\n";

@@ -48,9 +48,9 @@ struct RunQuality
   std::size_t unsmoothedVertices = 0; ///< left at their remeshed positions where smoothing made triangles cross
   /** Of remeshed pieces, kept as tiled where their remesh crossed itself or another piece. */
   std::size_t trianglesKeptTiled = 0;
-  /** Edges flipped or collapsed where a remesh crossed itself in a few places, undoing those
-   *  crossings without a second remesh (FinishedSurface::edgesRepairedAtCrossings). */
-  std::size_t edgesRepairedAtCrossings = 0;
+  /** Flips, collapses and vertex moves that undid a remesh's few crossings without a second remesh
+   *  (FinishedSurface::crossingRepairOperations). */
+  std::size_t crossingRepairOperations = 0;
   /** Connected pieces remeshed, smoothed only and left as tiled (FinishedSurface::piecesByFinish,
    *  indexed by SurfaceFinish); summed over labels. */
   std::array<std::size_t, 3> piecesByFinish{};

@@ -137,7 +137,7 @@ RunQuality runQualityOf(const MeshedContours& m)
   quality.smallPiecesAsTiled = m.surface.smallPiecesAsTiled;
   quality.unsmoothedVertices = m.surface.unsmoothedVertices;
   quality.trianglesKeptTiled = m.surface.trianglesKeptTiled;
-  quality.edgesRepairedAtCrossings = m.surface.edgesRepairedAtCrossings;
+  quality.crossingRepairOperations = m.surface.crossingRepairOperations;
   quality.piecesByFinish = m.surface.piecesByFinish;
   if (finishing.finish == SurfaceFinish::Remeshed)
     quality.targetEdgeLength = finishing.remeshing.targetEdgeLength;

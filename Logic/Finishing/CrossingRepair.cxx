@@ -93,9 +93,14 @@ public:
             grown[static_cast<std::size_t>(v)] = 1;
       near.swap(grown);
     }
+    // And the triangles of every crossing, whatever their corners: a pair is dropped only after both
+    // of its triangles have been tested again.
+    std::vector<char> crossing(mesh.triangles.size(), 0);
+    for (const auto& [first, second] : crossings)
+      crossing[first] = crossing[second] = 1;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     {
-      bool inScope = false;
+      bool inScope = crossing[t] != 0;
       for (std::int32_t v : mesh.triangles[t])
         if (near[static_cast<std::size_t>(v)])
         {

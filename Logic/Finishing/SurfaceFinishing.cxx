@@ -225,7 +225,7 @@ struct FinishedPiece
   /** Where `mesh` crosses itself, from its validation: the centroids of the triangles of every
    *  crossing pair (none in a valid piece). */
   std::vector<Point3> crossedAt;
-  std::size_t edgesRepairedAtCrossings = 0; ///< flipped or collapsed where the remesh crossed itself
+  std::size_t crossingRepairOperations = 0; ///< of the repair that undid its crossings (repairedLocally)
 };
 
 /** The validation of a piece of the tiling as it was tiled, without its self-intersection test:
@@ -352,16 +352,35 @@ bool crossesItselfInAFewPlaces(const MeshValidation& v)
  *  natbrainlab's pieces at most 48), not sheets that pass through each other all along a gap. */
 constexpr std::size_t mostCrossingsRepairedLocally = 64;
 
-/** Undoes the few crossings left in a finished piece where they are (repairCrossingsLocally: edges
- *  flipped and collapsed within two target edges of them, held contour vertices excepted), and
- *  renumbers `perVertex` (arrays of a point per vertex) as the repair renumbers the vertices.
- *  `validation` and `crossings` are then the repaired piece's. Returns what the repair did. */
+bool samePoint(const Point3& p, const Point3& q)
+{
+  return p.x == q.x && p.y == q.y && p.z == q.z;
+}
+
+/** How many vertices are where `unsmoothed` has them. */
+std::size_t verticesAt(const std::vector<Point3>& points, const std::vector<Point3>& unsmoothed)
+{
+  std::size_t at = 0;
+  for (std::size_t v = 0; v < points.size(); ++v)
+    at += samePoint(points[v], unsmoothed[v]);
+  return at;
+}
+
+/** How many vertices that smoothing moved are where the remesh left them (`unsmoothed`). */
+std::size_t verticesLeftUnsmoothed(const std::vector<Point3>& points, const std::vector<Point3>& smoothed,
+                                   const std::vector<Point3>& unsmoothed)
+{
+  std::size_t left = 0;
+  for (std::size_t v = 0; v < points.size(); ++v)
+    left += !samePoint(smoothed[v], unsmoothed[v]) && samePoint(points[v], unsmoothed[v]);
+  return left;
+}
+
 /** After a local repair: the vertices put back for the crossings it undid (the remesh's own folds,
  *  which no smoothing caused) take their `smoothed` places again, except where that makes triangles
- *  cross. Returns how many vertices are still where the remesh left them. */
-std::size_t resmoothedAfterRepair(TriangleMesh& mesh, const std::vector<Point3>& smoothed,
-                                  const std::vector<Point3>& unsmoothed, MeshValidation& validation,
-                                  std::vector<std::pair<std::size_t, std::size_t>>& crossings)
+ *  cross; if that leaves the piece invalid in any way, it stays as repaired. */
+void resmoothedAfterRepair(TriangleMesh& mesh, const std::vector<Point3>& smoothed, const std::vector<Point3>& unsmoothed,
+                           MeshValidation& validation, std::vector<std::pair<std::size_t, std::size_t>>& crossings)
 {
   const std::vector<Point3> repaired = mesh.points;
   const MeshValidation repairedValidation = validation;
@@ -369,18 +388,12 @@ std::size_t resmoothedAfterRepair(TriangleMesh& mesh, const std::vector<Point3>&
   mesh.points = smoothed;
   validation = validateMeshAfterMoving(mesh, validation.selfIntersectionChecked, moved, crossings);
   unsmoothCrossings(mesh, unsmoothed, validation, crossings);
-  if (validation.selfIntersections > 0) // as repaired, then
+  if (!rejection(validation, repairedValidation).empty()) // as repaired, then
   {
     mesh.points = repaired;
     validation = repairedValidation;
     crossings.clear();
   }
-  std::size_t stillUnsmoothed = 0;
-  for (std::size_t v = 0; v < mesh.points.size(); ++v)
-    stillUnsmoothed += (smoothed[v].x != unsmoothed[v].x || smoothed[v].y != unsmoothed[v].y || smoothed[v].z != unsmoothed[v].z) &&
-                       mesh.points[v].x == unsmoothed[v].x && mesh.points[v].y == unsmoothed[v].y &&
-                       mesh.points[v].z == unsmoothed[v].z;
-  return stillUnsmoothed;
 }
 
 /** The vertices a local repair may change: within two target edges of `places`, not held on a
@@ -414,10 +427,11 @@ void renumber(const CrossingRepair& repair, Arrays&... perVertex)
 /** The few crossings left in a finished piece undone where they are (repairCrossingsLocally), the
  *  points put back where the remesh left them given their smoothed places again where that crosses
  *  nothing (resmoothedAfterRepair), then the slivers there widened (widenNarrowTrianglesLocally).
- *  `unsmoothed` and `smoothed` (a point per vertex) are renumbered with the vertices; `validation`,
- *  `crossings` and `crossedAt` are the piece's after (where crossings remain, `validation` still
- *  counts those before and `crossedAt` holds their places). Returns the operations made (flips, collapses, moves) and sets
- *  `unsmoothedVertices` when the crossings were all undone. */
+ *  `unsmoothed` and `smoothed` (a point per vertex) are renumbered with the vertices (a moved vertex
+ *  has its new point for both); `validation`, `crossings`, `crossedAt` and `unsmoothedVertices` are
+ *  the piece's after. Where the repair leaves crossings its own count of them stands in the
+ *  validation, and `crossings` is empty: the piece is remeshed around `crossedAt`. Returns the
+ *  operations made. */
 std::size_t repairedLocally(TriangleMesh& mesh, MeshValidation& validation,
                             std::vector<std::pair<std::size_t, std::size_t>>& crossings, std::vector<Point3>& crossedAt,
                             const std::vector<char>& held, const SurfaceFinishingOptions& options,
@@ -426,21 +440,29 @@ std::size_t repairedLocally(TriangleMesh& mesh, MeshValidation& validation,
 {
   const std::vector<Point3> places = crossingPlaces(mesh, crossings);
   std::vector<char> heldNow = held;
+  const std::size_t atRemeshBefore = verticesAt(mesh.points, unsmoothed);
   const CrossingRepair repair =
     repairCrossingsLocally(mesh, crossings, repairableVertices(mesh, places, held, options), options.remeshing.targetEdgeLength);
   renumber(repair, unsmoothed, smoothed, heldNow);
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    if (!samePoint(mesh.points[v], unsmoothed[v]) && !samePoint(mesh.points[v], smoothed[v])) // moved by the repair
+      unsmoothed[v] = smoothed[v] = mesh.points[v];
+  unsmoothedVertices -= atRemeshBefore - verticesAt(mesh.points, unsmoothed); // those collapsed
   // Not all undone: the piece is remeshed around the crossings left (crossedAt); the whole test of
   // a piece of a million triangles would only confirm them.
   if (!repair.undone)
   {
     crossedAt = repair.stillCrossingAt;
+    crossings.clear();
+    validation.selfIntersections = std::max<std::size_t>(1, repair.stillCrossingAt.size() / 2);
     return repair.operations();
   }
   validation = validateMesh(mesh, crossings);
   crossedAt = crossingPlaces(mesh, crossings);
   if (validation.selfIntersections > 0 || !resmooth)
     return repair.operations();
-  unsmoothedVertices = resmoothedAfterRepair(mesh, smoothed, unsmoothed, validation, crossings);
+  resmoothedAfterRepair(mesh, smoothed, unsmoothed, validation, crossings);
+  unsmoothedVertices = verticesLeftUnsmoothed(mesh.points, smoothed, unsmoothed);
   TriangleMesh widened = mesh;
   const CrossingRepair widening = widenNarrowTrianglesLocally(widened, repairableVertices(widened, places, heldNow, options),
                                                               options.remeshing.targetEdgeLength);
@@ -455,6 +477,7 @@ std::size_t repairedLocally(TriangleMesh& mesh, MeshValidation& validation,
   crossings.clear();
   crossedAt.clear();
   renumber(widening, unsmoothed, smoothed);
+  unsmoothedVertices = verticesLeftUnsmoothed(mesh.points, smoothed, unsmoothed);
   return repair.operations() + widening.operations();
 }
 
@@ -493,7 +516,7 @@ FinishedPiece smoothedRemesh(TriangleMesh remeshed, const SurfaceFinishingOption
     relaxBesidePutBack(remeshed, unsmoothed, validation, options);
   FinishedPiece piece{ std::move(remeshed), SurfaceFinish::Remeshed, {}, unsmoothedVertices, validation, 0, {},
                        std::move(crossedAt) };
-  piece.edgesRepairedAtCrossings = repairs;
+  piece.crossingRepairOperations = repairs;
   return piece;
 }
 
@@ -897,7 +920,7 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
     ++result.piecesByFinish[static_cast<std::size_t>(piece.finish)];
     result.unsmoothedVertices += piece.unsmoothedVertices;
     result.trianglesKeptTiled += piece.trianglesKeptTiled;
-    result.edgesRepairedAtCrossings += piece.edgesRepairedAtCrossings;
+    result.crossingRepairOperations += piece.crossingRepairOperations;
     if (speck[p])
     {
       // A speck left as tiled counts as finished as asked.

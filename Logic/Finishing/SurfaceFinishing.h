@@ -59,10 +59,10 @@ struct FinishedSurface
    *  itself (two sheets closer than the target edge) or, once finished, crossed another piece, the
    *  piece remeshed again around them. */
   std::size_t trianglesKeptTiled = 0;
-  /** Edges flipped or collapsed where a remesh crossed itself in a few places (a fold where two
-   *  voxels touch along an edge, a chord through a gap a voxel wide), which undid those crossings
-   *  without remeshing the piece again. */
-  std::size_t edgesRepairedAtCrossings = 0;
+  /** Edge flips and collapses and vertex moves (CrossingRepair) that undid the few places where a
+   *  remesh crossed itself (a fold where two voxels touch along an edge, a chord through a gap a
+   *  voxel wide) without remeshing the piece again, with those that then widened slivers there. */
+  std::size_t crossingRepairOperations = 0;
   /** How many connected pieces got each finish, indexed by SurfaceFinish (specks left as tiled count
    *  under Tiled). All zero when the tiling was not split (an invalid tiling, or Tiled asked). */
   std::array<std::size_t, 3> piecesByFinish{};

@@ -309,7 +309,11 @@ FinishedSurface expectRemeshedToItsTiledTopology(std::uint64_t seed, RandomMaskK
   MeshingOptions meshing;
   meshing.reconstruction = random.options;
   const MaskMeshResult run = checkedMesh(random.mask, meshing);
-  EXPECT_TRUE(run.error.empty()) << run.error;
+  if (!run.error.empty())
+  {
+    ADD_FAILURE() << run.error;
+    return {};
+  }
   const FinishedSurface& finished = run.meshing.surface;
   const MeshValidation tiled = validateMesh(run.meshing.tiling);
   const MeshValidation v = validateMesh(finished.mesh);
@@ -344,7 +348,7 @@ TEST(FinishingProperty, AFewFoldsOfTheRemeshAreUndoneWhereTheyAre)
   {
     SCOPED_TRACE("seed " + std::to_string(seed));
     const FinishedSurface finished = expectRemeshedToItsTiledTopology(seed, kind);
-    EXPECT_GT(finished.edgesRepairedAtCrossings, 0u);
+    EXPECT_GT(finished.crossingRepairOperations, 0u);
     EXPECT_EQ(finished.trianglesKeptTiled, 0u);
   }
 }

@@ -73,7 +73,8 @@ std::int32_t vertexAt(const TriangleMesh& mesh, const Point3& p)
 
 TEST(CrossingRepair, AFoldOnAFlatFaceIsCollapsedAwayAndTheFaceStaysFlat)
 {
-  TriangleMesh box = gridBox(8);
+  const TriangleMesh original = gridBox(8);
+  TriangleMesh box = original;
   const MeshValidation before = validateMesh(box);
   ASSERT_TRUE(before.valid()) << before.summary();
   // A vertex of the top face pushed past its diagonal neighbour: its triangles fold over their
@@ -102,7 +103,7 @@ TEST(CrossingRepair, AFoldOnAFlatFaceIsCollapsedAwayAndTheFaceStaysFlat)
   ASSERT_EQ(repair.formerVertex.size(), box.points.size());
   for (std::size_t v = 0; v < box.points.size(); ++v)
   {
-    const Point3& was = gridBox(8).points[static_cast<std::size_t>(repair.formerVertex[v])];
+    const Point3& was = original.points[static_cast<std::size_t>(repair.formerVertex[v])];
     if (repair.formerVertex[v] != pushed)
       EXPECT_TRUE(box.points[v].x == was.x && box.points[v].y == was.y && box.points[v].z == was.z) << v;
   }
