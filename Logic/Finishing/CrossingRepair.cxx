@@ -72,7 +72,7 @@ double dot(const Point3& a, const Point3& b)
 }
 
 /** The triangles around the movable vertices and two rings beyond, each of those vertices' fan, and
- *  the crossings among them, while edges are flipped and collapsed. */
+ *  the crossings among them, while edges are flipped and collapsed and vertices moved. */
 class LocalRepair
 {
 public:
@@ -81,8 +81,8 @@ public:
     : m_Mesh(mesh), m_Movable(movable), m_Edge(edgeLength), m_FirstNew(mesh.points.size()), m_Alive(mesh.triangles.size(), 1),
       m_Crossings(crossings.begin(), crossings.end())
   {
-    // Two rings past the movable vertices: every triangle a flip or collapse there rewrites, and
-    // every one it could come to cross, has a corner in them.
+    // Two rings past the movable vertices: every triangle an operation there rewrites, and the
+    // triangles around it that it could come to cross, have a corner in them.
     std::vector<char> near = movable;
     for (int ring = 0; ring < 2; ++ring)
     {
@@ -123,30 +123,32 @@ public:
       if (next == m_Crossings.end())
         return false;
       const auto [first, second] = *next;
-      std::optional<std::pair<EdgeOperation, Outcome>> best;
       std::vector<EdgeOperation> candidates;
-      for (const auto& [u, v] : edgesAround({ first, second }))
+      const std::set<std::pair<std::int32_t, std::int32_t>> edges = edgesAround({ first, second });
+      std::set<std::int32_t> vertices;
+      for (const auto& [u, v] : edges)
+      {
         for (std::optional<EdgeOperation> operation : { flip(u, v), collapse(u, v), collapse(v, u) })
           if (operation)
             candidates.push_back(std::move(*operation));
-      std::set<std::int32_t> around;
-      for (const auto& [u, v] : edgesAround({ first, second }))
-        around.insert({ u, v });
-      for (std::int32_t u : around)
+        vertices.insert({ u, v });
+      }
+      for (std::int32_t u : vertices)
         for (double way : { 1.0, 0.5 })
           if (std::optional<EdgeOperation> operation = movedToNeighbours(u, way))
             candidates.push_back(std::move(*operation));
+      // Of the operations that leave fewer crossings, the one whose triangles are widest: a single
+      // flip can undo a fold and leave a needle, where a collapse beside it would not. (Undoing a
+      // fold can take a step that crosses something else on the way.)
+      std::optional<std::pair<EdgeOperation, Outcome>> best;
       for (EdgeOperation& operation : candidates)
-        {
-          // Of the operations that leave fewer crossings, the one whose triangles are widest: a
-          // single flip can undo a fold and leave a needle, where a collapse beside it would not.
-          // (Undoing a fold can take a step that crosses something else on the way.)
-          std::optional<Outcome> outcome = judge(operation);
-          if (outcome && outcome->crossings < m_Crossings.size() &&
-              (!best || outcome->largestCosine < best->second.largestCosine ||
-               (outcome->largestCosine == best->second.largestCosine && outcome->crossings < best->second.crossings)))
-            best.emplace(std::move(operation), std::move(*outcome));
-        }
+      {
+        std::optional<Outcome> outcome = judge(operation);
+        if (outcome && outcome->crossings < m_Crossings.size() &&
+            (!best || outcome->largestCosine < best->second.largestCosine ||
+             (outcome->largestCosine == best->second.largestCosine && outcome->crossings < best->second.crossings)))
+          best.emplace(std::move(operation), std::move(*outcome));
+      }
       if (!best)
       {
         stuck.insert(*next);
@@ -430,9 +432,14 @@ private:
       volumeChange += volumeOf(corners) - volumeOf(m_Mesh.triangles[slot]);
     if (std::abs(volumeChange) > 0.125 * m_Edge * m_Edge * m_Edge)
       return std::nullopt;
-    for (const auto& [slot, corners] : operation.rewritten)
+    for (const auto& rewritten : operation.rewritten)
     {
-      const auto point = [&](int i) { const Point3& p = points[static_cast<std::size_t>(corners[i])]; return Kernel::Point_3(p.x, p.y, p.z); };
+      const Triangle& corners = rewritten.second; // not a structured binding: a lambda uses it
+      const auto point = [&](int i)
+      {
+        const Point3& p = points[static_cast<std::size_t>(corners[i])];
+        return Kernel::Point_3(p.x, p.y, p.z);
+      };
       if (CGAL::collinear(point(0), point(1), point(2)))
         return std::nullopt;
       if (!(dot(areaNormal(m_Mesh, corners), facing) > 0.0))
