@@ -24,7 +24,7 @@ using TrianglePairs = std::set<std::pair<std::size_t, std::size_t>>;
 constexpr double narrowAngleDegrees = 20.0;
 
 /** One flip, collapse or vertex move: the triangles it removes and those it rewrites (slot, new corners). */
-struct EdgeOperation
+struct Operation
 {
   bool collapse = false;
   bool move = false; ///< a vertex moved: its triangles take a new point
@@ -123,25 +123,25 @@ public:
       if (next == m_Crossings.end())
         return false;
       const auto [first, second] = *next;
-      std::vector<EdgeOperation> candidates;
+      std::vector<Operation> candidates;
       const std::set<std::pair<std::int32_t, std::int32_t>> edges = edgesAround({ first, second });
       std::set<std::int32_t> vertices;
       for (const auto& [u, v] : edges)
       {
-        for (std::optional<EdgeOperation> operation : { flip(u, v), collapse(u, v), collapse(v, u) })
+        for (std::optional<Operation> operation : { flip(u, v), collapse(u, v), collapse(v, u) })
           if (operation)
             candidates.push_back(std::move(*operation));
         vertices.insert({ u, v });
       }
       for (std::int32_t u : vertices)
         for (double way : { 1.0, 0.5 })
-          if (std::optional<EdgeOperation> operation = movedToNeighbours(u, way))
+          if (std::optional<Operation> operation = movedToNeighbours(u, way))
             candidates.push_back(std::move(*operation));
       // Of the operations that leave fewer crossings, the one whose triangles are widest: a single
       // flip can undo a fold and leave a needle, where a collapse beside it would not. (Undoing a
       // fold can take a step that crosses something else on the way.)
-      std::optional<std::pair<EdgeOperation, Outcome>> best;
-      for (EdgeOperation& operation : candidates)
+      std::optional<std::pair<Operation, Outcome>> best;
+      for (Operation& operation : candidates)
       {
         std::optional<Outcome> outcome = judge(operation);
         if (outcome && outcome->crossings < m_Crossings.size() &&
@@ -173,13 +173,13 @@ public:
         if (!m_Alive[t] || !movable(corners[0]) || !movable(corners[1]) || !movable(corners[2]) ||
             largestAngleCosine(m_Mesh.points, corners) <= narrowCosine)
           continue;
-        std::optional<std::pair<EdgeOperation, Outcome>> best;
+        std::optional<std::pair<Operation, Outcome>> best;
         for (int i = 0; i < 3; ++i)
         {
           const std::int32_t u = corners[i], v = corners[(i + 1) % 3];
           for (int kind = 0; kind < 3; ++kind)
           {
-            std::optional<EdgeOperation> operation = kind == 0 ? flip(u, v) : kind == 1 ? collapse(u, v) : collapse(v, u);
+            std::optional<Operation> operation = kind == 0 ? flip(u, v) : kind == 1 ? collapse(u, v) : collapse(v, u);
             if (!operation)
               continue;
             std::optional<Outcome> outcome = judge(*operation);
@@ -304,7 +304,7 @@ private:
   }
 
   /** Edge uv replaced by the other diagonal of its two triangles. */
-  std::optional<EdgeOperation> flip(std::int32_t u, std::int32_t v) const
+  std::optional<Operation> flip(std::int32_t u, std::int32_t v) const
   {
     if (!movable(u) || !movable(v))
       return std::nullopt;
@@ -314,13 +314,13 @@ private:
     const std::int32_t a = left->second, b = right->second;
     if (!withinReach(a, b) || neighbours(a).count(b)) // too long, or the new edge is there already
       return std::nullopt;
-    EdgeOperation flipped;
+    Operation flipped;
     flipped.rewritten = { { left->first, Triangle{ a, u, b } }, { right->first, Triangle{ b, v, a } } };
     return flipped;
   }
 
   /** Vertex u merged into v, which stays where it is. */
-  std::optional<EdgeOperation> collapse(std::int32_t u, std::int32_t v) const
+  std::optional<Operation> collapse(std::int32_t u, std::int32_t v) const
   {
     if (!movable(u) || !movable(v) || !withinReach(u, v))
       return std::nullopt;
@@ -335,7 +335,7 @@ private:
       common += aroundV.count(w);
     if (common != 2 || neighbours(left->second).size() < 4 || neighbours(right->second).size() < 4)
       return std::nullopt;
-    EdgeOperation merged;
+    Operation merged;
     merged.collapse = true;
     merged.removed = { left->first, right->first };
     for (std::size_t t : fan(u))
@@ -351,7 +351,7 @@ private:
   /** Vertex u moved `way` (1: all the way) towards the mean of its neighbours, where a fold around
    *  it untangles: its triangles take a new point (added to the mesh; u is left without triangles),
    *  within two edge lengths. */
-  std::optional<EdgeOperation> movedToNeighbours(std::int32_t u, double way)
+  std::optional<Operation> movedToNeighbours(std::int32_t u, double way)
   {
     if (!movable(u) || fan(u).empty())
       return std::nullopt;
@@ -372,7 +372,7 @@ private:
     m_Origin.push_back(static_cast<std::size_t>(u) < m_FirstNew ? u : m_Origin[static_cast<std::size_t>(u) - m_FirstNew]);
     if (!withinReach(u, moved))
       return std::nullopt;
-    EdgeOperation operation;
+    Operation operation;
     operation.move = true;
     for (std::size_t t : fan(u))
     {
@@ -383,13 +383,13 @@ private:
     return operation;
   }
 
-  static void count(const EdgeOperation& operation, CrossingRepair& done)
+  static void count(const Operation& operation, CrossingRepair& done)
   {
     ++(operation.collapse ? done.collapses : operation.move ? done.moves : done.flips);
   }
 
   /** The largest angle cosine (the narrowest angle) of the triangles the operation changes, as they are. */
-  double narrowestBefore(const EdgeOperation& operation) const
+  double narrowestBefore(const Operation& operation) const
   {
     double largest = -1.0;
     for (std::size_t t : operation.removed)
@@ -400,7 +400,7 @@ private:
   }
 
   /** The operation's outcome, or nothing if it makes a degenerate triangle or turns one over. */
-  std::optional<Outcome> judge(const EdgeOperation& operation) const
+  std::optional<Outcome> judge(const Operation& operation) const
   {
     const std::vector<Point3>& points = m_Mesh.points;
     // Which way the surface faces there: the area normals of every triangle the operation changes,
@@ -469,7 +469,7 @@ private:
     return outcome;
   }
 
-  void apply(const EdgeOperation& operation, const Outcome& outcome)
+  void apply(const Operation& operation, const Outcome& outcome)
   {
     const auto leave = [&](std::size_t t)
     {

@@ -40,12 +40,17 @@ std::string rejection(const MeshValidation& candidate, const MeshValidation& til
   return {};
 }
 
+bool samePoint(const Point3& p, const Point3& q)
+{
+  return p.x == q.x && p.y == q.y && p.z == q.z;
+}
+
 /** A flag per vertex: whether it is somewhere else in `after` than in `before`. */
 std::vector<char> movedVertices(const std::vector<Point3>& before, const std::vector<Point3>& after)
 {
   std::vector<char> moved(before.size(), 0);
   for (std::size_t v = 0; v < before.size(); ++v)
-    moved[v] = before[v].x != after[v].x || before[v].y != after[v].y || before[v].z != after[v].z;
+    moved[v] = !samePoint(before[v], after[v]);
   return moved;
 }
 
@@ -57,8 +62,7 @@ std::size_t unsmooth(TriangleMesh& mesh, const std::vector<Point3>& unsmoothed, 
 {
   std::size_t moved = 0;
   for (std::size_t v = 0; v < mesh.points.size(); ++v)
-    if (marked[v] && (mesh.points[v].x != unsmoothed[v].x || mesh.points[v].y != unsmoothed[v].y ||
-                      mesh.points[v].z != unsmoothed[v].z))
+    if (marked[v] && !samePoint(mesh.points[v], unsmoothed[v]))
     {
       mesh.points[v] = unsmoothed[v];
       ++moved;
@@ -301,8 +305,7 @@ void relaxBesidePutBack(TriangleMesh& mesh, const std::vector<Point3>& unsmoothe
 {
   std::vector<char> putBack(mesh.points.size(), 0);
   for (std::size_t v = 0; v < mesh.points.size(); ++v)
-    putBack[v] = mesh.points[v].x == unsmoothed[v].x && mesh.points[v].y == unsmoothed[v].y &&
-                 mesh.points[v].z == unsmoothed[v].z;
+    putBack[v] = samePoint(mesh.points[v], unsmoothed[v]);
   TriangleMesh relaxed = mesh;
   if (!relaxNarrowTriangles(relaxed, unsmoothed, putBack, options.smoothing))
     return; // nothing narrow beside them: the piece as it is, already validated
@@ -351,11 +354,6 @@ bool crossesItselfInAFewPlaces(const MeshValidation& v)
  *  are what flips and collapses undo (the thresholded Colin27 MRI's two large pieces had 3 and 14,
  *  natbrainlab's pieces at most 48), not sheets that pass through each other all along a gap. */
 constexpr std::size_t mostCrossingsRepairedLocally = 64;
-
-bool samePoint(const Point3& p, const Point3& q)
-{
-  return p.x == q.x && p.y == q.y && p.z == q.z;
-}
 
 /** How many vertices are where `unsmoothed` has them. */
 std::size_t verticesAt(const std::vector<Point3>& points, const std::vector<Point3>& unsmoothed)
