@@ -1,10 +1,12 @@
 #include "Finishing/SurfaceFinishing.h"
 
 #include "Core/ParallelFor.h"
-#include "Core/SpatialHash.h"
-#include "Finishing/CrossingRepair.h"
+#include "Finishing/CrossingPlaces.h"
+#include "Finishing/FinishedPieceRepair.h"
 #include "Finishing/HeldContourEdges.h"
+#include "Finishing/PieceRejection.h"
 #include "Finishing/PieceTargetVolumes.h"
+#include "Finishing/PutBackVertices.h"
 #include "Measures/ComponentOrientation.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/MeshCrossings.h"
@@ -14,96 +16,11 @@
 #include <map>
 #include <numeric>
 #include <optional>
-#include <type_traits>
 
 namespace slicemesh
 {
 namespace
 {
-
-/** Why `candidate` may not replace `tiled`, one connected piece of the tiling; empty when it may:
- *  it must be a closed, manifold, consistently oriented surface without degenerate or crossing
- *  triangles, of the same topology and facing the same way (an inner surface stays inner). */
-std::string rejection(const MeshValidation& candidate, const MeshValidation& tiled)
-{
-  if (!(candidate.closed() && candidate.manifold() && candidate.inconsistentEdges == 0 &&
-        candidate.degenerateTriangles == 0 && candidate.selfIntersectionChecked && candidate.selfIntersections == 0))
-    return candidate.summary();
-  if (candidate.components != tiled.components || candidate.eulerCharacteristic != tiled.eulerCharacteristic)
-  {
-    return "its topology changed (" + std::to_string(candidate.components) + " components and Euler characteristic " +
-           std::to_string(candidate.eulerCharacteristic) + " instead of " + std::to_string(tiled.components) +
-           " and " + std::to_string(tiled.eulerCharacteristic) + ")";
-  }
-  if (!(candidate.volume * tiled.volume > 0.0))
-    return "it turned inside out";
-  return {};
-}
-
-bool samePoint(const Point3& p, const Point3& q)
-{
-  return p.x == q.x && p.y == q.y && p.z == q.z;
-}
-
-/** A flag per vertex: whether it is somewhere else in `after` than in `before`. */
-std::vector<char> movedVertices(const std::vector<Point3>& before, const std::vector<Point3>& after)
-{
-  std::vector<char> moved(before.size(), 0);
-  for (std::size_t v = 0; v < before.size(); ++v)
-    moved[v] = !samePoint(before[v], after[v]);
-  return moved;
-}
-
-/** Puts back where `unsmoothed` (the mesh's points before smoothing) has them the vertices marked;
- *  with `movedBack` (a flag per vertex), flags those that moved. Returns how many vertices moved back. */
-template <typename Marks>
-std::size_t unsmooth(TriangleMesh& mesh, const std::vector<Point3>& unsmoothed, const Marks& marked,
-                     std::vector<char>* movedBack = nullptr)
-{
-  std::size_t moved = 0;
-  for (std::size_t v = 0; v < mesh.points.size(); ++v)
-    if (marked[v] && !samePoint(mesh.points[v], unsmoothed[v]))
-    {
-      mesh.points[v] = unsmoothed[v];
-      ++moved;
-      if (movedBack)
-        (*movedBack)[v] = 1;
-    }
-  return moved;
-}
-
-/** Puts back where `unsmoothed` (the mesh's points before smoothing) has them the vertices of every
- *  triangle in a crossing pair and `rings` rings of triangles around them, flagging them in
- *  `movedBack`. Returns how many vertices moved back. */
-std::size_t unsmoothAround(TriangleMesh& mesh, const std::vector<Point3>& unsmoothed,
-                           const std::vector<std::pair<std::size_t, std::size_t>>& crossings, int rings,
-                           std::vector<char>& movedBack)
-{
-  std::vector<char> marked(mesh.points.size(), 0);
-  for (const auto& [first, second] : crossings)
-    for (std::size_t t : { first, second })
-      for (std::int32_t v : mesh.triangles[t])
-        marked[static_cast<std::size_t>(v)] = 1;
-  growByRings(mesh, marked, rings);
-  return unsmooth(mesh, unsmoothed, marked, &movedBack);
-}
-
-/** Two sheets a voxel apart (a thin gap between gyri, a thin wall) can be smoothed into each other:
- *  there, and only there, the vertices go back to where `unsmoothed` has them (growing rings, three
- *  tries). `validation` and `crossings` are the mesh's (validateMesh), kept up to date. Returns how
- *  many vertices went back. */
-std::size_t unsmoothCrossings(TriangleMesh& mesh, const std::vector<Point3>& unsmoothed, MeshValidation& validation,
-                              std::vector<std::pair<std::size_t, std::size_t>>& crossings)
-{
-  std::size_t moved = 0;
-  for (int rings = 1; rings <= 4 && validation.selfIntersections > 0; rings *= 2)
-  {
-    std::vector<char> movedBack(mesh.points.size(), 0);
-    moved += unsmoothAround(mesh, unsmoothed, crossings, rings, movedBack);
-    validation = validateMeshAfterMoving(mesh, validation.selfIntersectionChecked, movedBack, crossings);
-  }
-  return moved;
-}
 
 /** How far the vertices not held by drawn contours may move to give a piece its volume (mm): a
  *  quarter of the slice spacing; 0 (unbounded) without held contours. On drawn contours only the
@@ -253,48 +170,6 @@ FinishedPiece keptAsTiled(const TriangleMesh& piece, const MeshValidation& tiled
   return { piece, finish, std::move(why), 0, complete(piece, tiled) };
 }
 
-/** How far from a place where a remesh crossed the tiled triangles are kept: one target edge, so
- *  that the remeshed triangles around them, an edge long, stay clear of the crossing. No farther:
- *  each tiled triangle kept is one the remesh does not even out, and their narrow angles were most
- *  of what a tract atlas's finished surface had under 30 degrees. */
-double keptRadius(const SurfaceFinishingOptions& options)
-{
-  return options.remeshing.targetEdgeLength;
-}
-
-/** The vertices of `mesh` within `radius` of one of `points` (found through the points' columns of
- *  the plane's spatial hash, then by their distance in 3D). */
-std::vector<char> verticesNear(const TriangleMesh& mesh, const std::vector<Point3>& points, double radius)
-{
-  SpatialHash columns(radius);
-  for (std::size_t i = 0; i < points.size(); ++i)
-    columns.insert(Point2{ points[i].x, points[i].y }, static_cast<int>(i));
-  std::vector<char> near(mesh.points.size(), 0);
-  for (std::size_t v = 0; v < mesh.points.size(); ++v)
-  {
-    const Point3& q = mesh.points[v];
-    near[v] = columns.anyIn(columns.cellsWithin(Point2{ q.x, q.y }, radius),
-                            [&](int i)
-                            {
-                              const Point3& p = points[static_cast<std::size_t>(i)];
-                              const double dx = q.x - p.x, dy = q.y - p.y, dz = q.z - p.z;
-                              return dx * dx + dy * dy + dz * dz <= radius * radius;
-                            });
-  }
-  return near;
-}
-
-/** The triangles of `mesh` with a corner within `radius` of one of `points`. */
-std::vector<char> trianglesNear(const TriangleMesh& mesh, const std::vector<Point3>& points, double radius)
-{
-  const std::vector<char> near = verticesNear(mesh, points, radius);
-  std::vector<char> flagged(mesh.triangles.size(), 0);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (std::int32_t v : mesh.triangles[t])
-      flagged[t] = flagged[t] || near[static_cast<std::size_t>(v)];
-  return flagged;
-}
-
 /** Vertices put back where they were before the smoothing (where two sheets met) undo its
  *  relaxation around them too, and their triangles are the narrow ones it was for. Relaxed again
  *  with those vertices kept (and, where that makes sheets meet, without the relaxation there), the
@@ -322,24 +197,6 @@ void relaxBesidePutBack(TriangleMesh& mesh, const std::vector<Point3>& unsmoothe
   }
 }
 
-Point3 centroid(const TriangleMesh& mesh, std::size_t t)
-{
-  const Point3& a = mesh.points[static_cast<std::size_t>(mesh.triangles[t][0])];
-  const Point3& b = mesh.points[static_cast<std::size_t>(mesh.triangles[t][1])];
-  const Point3& c = mesh.points[static_cast<std::size_t>(mesh.triangles[t][2])];
-  return { (a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0, (a.z + b.z + c.z) / 3.0 };
-}
-
-/** Where a mesh crosses itself: the centroid of every triangle of a crossing pair. */
-std::vector<Point3> crossingPlaces(const TriangleMesh& mesh, const std::vector<std::pair<std::size_t, std::size_t>>& crossings)
-{
-  std::vector<Point3> places;
-  for (const auto& [first, second] : crossings)
-    for (std::size_t t : { first, second })
-      places.push_back(centroid(mesh, t));
-  return places;
-}
-
 /** More crossings than this and a piece is not remeshed around them: a few thin gaps are what the
  *  second remesh is for, not a piece that is gaps throughout. */
 constexpr std::size_t mostCrossingsRemeshedAround = 500;
@@ -348,135 +205,6 @@ constexpr std::size_t mostCrossingsRemeshedAround = 500;
 bool crossesItselfInAFewPlaces(const MeshValidation& v)
 {
   return v.selfIntersections > 0 && v.selfIntersections <= mostCrossingsRemeshedAround;
-}
-
-/** More crossings than this and they are not repaired where they are (repairedLocally): a few folds
- *  are what flips and collapses undo (the thresholded Colin27 MRI's two large pieces had 3 and 14,
- *  natbrainlab's pieces at most 48), not sheets that pass through each other all along a gap. */
-constexpr std::size_t mostCrossingsRepairedLocally = 64;
-
-/** How many vertices are where `unsmoothed` has them. */
-std::size_t verticesAt(const std::vector<Point3>& points, const std::vector<Point3>& unsmoothed)
-{
-  std::size_t at = 0;
-  for (std::size_t v = 0; v < points.size(); ++v)
-    at += samePoint(points[v], unsmoothed[v]);
-  return at;
-}
-
-/** How many vertices that smoothing moved are where the remesh left them (`unsmoothed`). */
-std::size_t verticesLeftUnsmoothed(const std::vector<Point3>& points, const std::vector<Point3>& smoothed,
-                                   const std::vector<Point3>& unsmoothed)
-{
-  std::size_t left = 0;
-  for (std::size_t v = 0; v < points.size(); ++v)
-    left += !samePoint(smoothed[v], unsmoothed[v]) && samePoint(points[v], unsmoothed[v]);
-  return left;
-}
-
-/** After a local repair: the vertices put back for the crossings it undid (the remesh's own folds,
- *  which no smoothing caused) take their `smoothed` places again, except where that makes triangles
- *  cross; if that leaves the piece invalid in any way, it stays as repaired. */
-void resmoothedAfterRepair(TriangleMesh& mesh, const std::vector<Point3>& smoothed, const std::vector<Point3>& unsmoothed,
-                           MeshValidation& validation, std::vector<std::pair<std::size_t, std::size_t>>& crossings)
-{
-  const std::vector<Point3> repaired = mesh.points;
-  const MeshValidation repairedValidation = validation;
-  const std::vector<char> moved = movedVertices(repaired, smoothed);
-  mesh.points = smoothed;
-  validation = validateMeshAfterMoving(mesh, validation.selfIntersectionChecked, moved, crossings);
-  unsmoothCrossings(mesh, unsmoothed, validation, crossings);
-  if (!rejection(validation, repairedValidation).empty()) // as repaired, then
-  {
-    mesh.points = repaired;
-    validation = repairedValidation;
-    crossings.clear();
-  }
-}
-
-/** The vertices a local repair may change: within two target edges of `places`, not held on a
- *  drawn contour. */
-std::vector<char> repairableVertices(const TriangleMesh& mesh, const std::vector<Point3>& places,
-                                     const std::vector<char>& held, const SurfaceFinishingOptions& options)
-{
-  std::vector<char> movable = verticesNear(mesh, places, 2.0 * keptRadius(options));
-  if (!held.empty())
-    for (std::size_t v = 0; v < movable.size(); ++v)
-      movable[v] = movable[v] && !held[v];
-  return movable;
-}
-
-/** `perVertex` (arrays of one value per vertex) renumbered as a repair renumbered the vertices. */
-template <typename... Arrays>
-void renumber(const CrossingRepair& repair, Arrays&... perVertex)
-{
-  const auto one = [&](auto& values)
-  {
-    if (values.empty()) // held flags, without drawn contours
-      return;
-    std::remove_reference_t<decltype(values)> renumbered(repair.formerVertex.size());
-    for (std::size_t v = 0; v < renumbered.size(); ++v)
-      renumbered[v] = values[static_cast<std::size_t>(repair.formerVertex[v])];
-    values.swap(renumbered);
-  };
-  (one(perVertex), ...);
-}
-
-/** The few crossings left in a finished piece undone where they are (repairCrossingsLocally), the
- *  points put back where the remesh left them given their smoothed places again where that crosses
- *  nothing (resmoothedAfterRepair), then the slivers there widened (widenNarrowTrianglesLocally).
- *  `unsmoothed` and `smoothed` (a point per vertex) are renumbered with the vertices (a moved vertex
- *  has its new point for both); `validation`, `crossings`, `crossedAt` and `unsmoothedVertices` are
- *  the piece's after. Where the repair leaves crossings its own count of them stands in the
- *  validation, and `crossings` is empty: the piece is remeshed around `crossedAt`. Returns the
- *  operations made. */
-std::size_t repairedLocally(TriangleMesh& mesh, MeshValidation& validation,
-                            std::vector<std::pair<std::size_t, std::size_t>>& crossings, std::vector<Point3>& crossedAt,
-                            const std::vector<char>& held, const SurfaceFinishingOptions& options,
-                            std::vector<Point3>& unsmoothed, std::vector<Point3>& smoothed, bool resmooth,
-                            std::size_t& unsmoothedVertices)
-{
-  const std::vector<Point3> places = crossingPlaces(mesh, crossings);
-  std::vector<char> heldNow = held;
-  const std::size_t atRemeshBefore = verticesAt(mesh.points, unsmoothed);
-  const CrossingRepair repair =
-    repairCrossingsLocally(mesh, crossings, repairableVertices(mesh, places, held, options), options.remeshing.targetEdgeLength);
-  renumber(repair, unsmoothed, smoothed, heldNow);
-  for (std::size_t v = 0; v < mesh.points.size(); ++v)
-    if (!samePoint(mesh.points[v], unsmoothed[v]) && !samePoint(mesh.points[v], smoothed[v])) // moved by the repair
-      unsmoothed[v] = smoothed[v] = mesh.points[v];
-  unsmoothedVertices -= atRemeshBefore - verticesAt(mesh.points, unsmoothed); // those collapsed
-  // Not all undone: the piece is remeshed around the crossings left (crossedAt); the whole test of
-  // a piece of a million triangles would only confirm them.
-  if (!repair.undone)
-  {
-    crossedAt = repair.stillCrossingAt;
-    crossings.clear();
-    validation.selfIntersections = std::max<std::size_t>(1, repair.stillCrossingAt.size() / 2);
-    return repair.operations();
-  }
-  validation = validateMesh(mesh, crossings);
-  crossedAt = crossingPlaces(mesh, crossings);
-  if (validation.selfIntersections > 0 || !resmooth)
-    return repair.operations();
-  resmoothedAfterRepair(mesh, smoothed, unsmoothed, validation, crossings);
-  unsmoothedVertices = verticesLeftUnsmoothed(mesh.points, smoothed, unsmoothed);
-  TriangleMesh widened = mesh;
-  const CrossingRepair widening = widenNarrowTrianglesLocally(widened, repairableVertices(widened, places, heldNow, options),
-                                                              options.remeshing.targetEdgeLength);
-  if (widening.operations() == 0)
-    return repair.operations();
-  std::vector<std::pair<std::size_t, std::size_t>> widenedCrossings;
-  MeshValidation widenedValidation = validateMesh(widened, widenedCrossings);
-  if (!rejection(widenedValidation, validation).empty()) // crossing a sheet the local test did not see
-    return repair.operations();
-  mesh = std::move(widened);
-  validation = widenedValidation;
-  crossings.clear();
-  crossedAt.clear();
-  renumber(widening, unsmoothed, smoothed);
-  unsmoothedVertices = verticesLeftUnsmoothed(mesh.points, smoothed, unsmoothed);
-  return repair.operations() + widening.operations();
 }
 
 /** A remeshed piece smoothed, given its volume, and put back where smoothing made it cross; its
@@ -504,8 +232,7 @@ FinishedPiece smoothedRemesh(TriangleMesh remeshed, const SurfaceFinishingOption
   // a gap a voxel wide, or a fold where two voxels touch along an edge. A few such crossings are
   // undone where they are; else the piece is remeshed again around them (remeshedPiece).
   std::size_t repairs = 0;
-  if (validation.selfIntersections > 0 && validation.selfIntersections <= mostCrossingsRepairedLocally &&
-      validation.soundTopology() && validation.degenerateTriangles == 0)
+  if (repairableLocally(validation))
   {
     repairs = repairedLocally(remeshed, validation, crossings, crossedAt, held, options, unsmoothed, smoothed,
                               leftAsTiled.empty(), unsmoothedVertices);

@@ -1,0 +1,145 @@
+#include "Finishing/FinishedPieceRepair.h"
+
+#include "Finishing/CrossingPlaces.h"
+#include "Finishing/CrossingRepair.h"
+#include "Finishing/PieceRejection.h"
+#include "Finishing/PutBackVertices.h"
+
+#include <algorithm>
+#include <type_traits>
+
+namespace slicemesh
+{
+namespace
+{
+
+/** More crossings than this and they are not repaired where they are (repairedLocally): a few folds
+ *  are what flips and collapses undo (the thresholded Colin27 MRI's two large pieces had 3 and 14,
+ *  natbrainlab's pieces at most 48), not sheets that pass through each other all along a gap. */
+constexpr std::size_t mostCrossingsRepairedLocally = 64;
+
+/** How many vertices are where `unsmoothed` has them. */
+std::size_t verticesAt(const std::vector<Point3>& points, const std::vector<Point3>& unsmoothed)
+{
+  std::size_t at = 0;
+  for (std::size_t v = 0; v < points.size(); ++v)
+    at += samePoint(points[v], unsmoothed[v]);
+  return at;
+}
+
+/** How many vertices that smoothing moved are where the remesh left them (`unsmoothed`). */
+std::size_t verticesLeftUnsmoothed(const std::vector<Point3>& points, const std::vector<Point3>& smoothed,
+                                   const std::vector<Point3>& unsmoothed)
+{
+  std::size_t left = 0;
+  for (std::size_t v = 0; v < points.size(); ++v)
+    left += !samePoint(smoothed[v], unsmoothed[v]) && samePoint(points[v], unsmoothed[v]);
+  return left;
+}
+
+/** After a local repair: the vertices put back for the crossings it undid (the remesh's own folds,
+ *  which no smoothing caused) take their `smoothed` places again, except where that makes triangles
+ *  cross; if that leaves the piece invalid in any way, it stays as repaired. */
+void resmoothedAfterRepair(TriangleMesh& mesh, const std::vector<Point3>& smoothed, const std::vector<Point3>& unsmoothed,
+                           MeshValidation& validation, std::vector<std::pair<std::size_t, std::size_t>>& crossings)
+{
+  const std::vector<Point3> repaired = mesh.points;
+  const MeshValidation repairedValidation = validation;
+  const std::vector<char> moved = movedVertices(repaired, smoothed);
+  mesh.points = smoothed;
+  validation = validateMeshAfterMoving(mesh, validation.selfIntersectionChecked, moved, crossings);
+  unsmoothCrossings(mesh, unsmoothed, validation, crossings);
+  if (!rejection(validation, repairedValidation).empty()) // as repaired, then
+  {
+    mesh.points = repaired;
+    validation = repairedValidation;
+    crossings.clear();
+  }
+}
+
+/** The vertices a local repair may change: within two target edges of `places`, not held on a
+ *  drawn contour. */
+std::vector<char> repairableVertices(const TriangleMesh& mesh, const std::vector<Point3>& places,
+                                     const std::vector<char>& held, const SurfaceFinishingOptions& options)
+{
+  std::vector<char> movable = verticesNear(mesh, places, 2.0 * keptRadius(options));
+  if (!held.empty())
+    for (std::size_t v = 0; v < movable.size(); ++v)
+      movable[v] = movable[v] && !held[v];
+  return movable;
+}
+
+/** `perVertex` (arrays of one value per vertex) renumbered as a repair renumbered the vertices. */
+template <typename... Arrays>
+void renumber(const CrossingRepair& repair, Arrays&... perVertex)
+{
+  const auto one = [&](auto& values)
+  {
+    if (values.empty()) // held flags, without drawn contours
+      return;
+    std::remove_reference_t<decltype(values)> renumbered(repair.formerVertex.size());
+    for (std::size_t v = 0; v < renumbered.size(); ++v)
+      renumbered[v] = values[static_cast<std::size_t>(repair.formerVertex[v])];
+    values.swap(renumbered);
+  };
+  (one(perVertex), ...);
+}
+
+} // namespace
+
+bool repairableLocally(const MeshValidation& validation)
+{
+  return validation.selfIntersections > 0 && validation.selfIntersections <= mostCrossingsRepairedLocally &&
+         validation.soundTopology() && validation.degenerateTriangles == 0;
+}
+
+std::size_t repairedLocally(TriangleMesh& mesh, MeshValidation& validation,
+                            std::vector<std::pair<std::size_t, std::size_t>>& crossings, std::vector<Point3>& crossedAt,
+                            const std::vector<char>& held, const SurfaceFinishingOptions& options,
+                            std::vector<Point3>& unsmoothed, std::vector<Point3>& smoothed, bool resmooth,
+                            std::size_t& unsmoothedVertices)
+{
+  const std::vector<Point3> places = crossingPlaces(mesh, crossings);
+  std::vector<char> heldNow = held;
+  const std::size_t atRemeshBefore = verticesAt(mesh.points, unsmoothed);
+  const CrossingRepair repair =
+    repairCrossingsLocally(mesh, crossings, repairableVertices(mesh, places, held, options), options.remeshing.targetEdgeLength);
+  renumber(repair, unsmoothed, smoothed, heldNow);
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    if (!samePoint(mesh.points[v], unsmoothed[v]) && !samePoint(mesh.points[v], smoothed[v])) // moved by the repair
+      unsmoothed[v] = smoothed[v] = mesh.points[v];
+  unsmoothedVertices -= atRemeshBefore - verticesAt(mesh.points, unsmoothed); // those collapsed
+  // Not all undone: the piece is remeshed around the crossings left (crossedAt); the whole test of
+  // a piece of a million triangles would only confirm them.
+  if (!repair.undone)
+  {
+    crossedAt = repair.stillCrossingAt;
+    crossings.clear();
+    validation.selfIntersections = std::max<std::size_t>(1, repair.stillCrossingAt.size() / 2);
+    return repair.operations();
+  }
+  validation = validateMesh(mesh, crossings);
+  crossedAt = crossingPlaces(mesh, crossings);
+  if (validation.selfIntersections > 0 || !resmooth)
+    return repair.operations();
+  resmoothedAfterRepair(mesh, smoothed, unsmoothed, validation, crossings);
+  unsmoothedVertices = verticesLeftUnsmoothed(mesh.points, smoothed, unsmoothed);
+  TriangleMesh widened = mesh;
+  const CrossingRepair widening = widenNarrowTrianglesLocally(widened, repairableVertices(widened, places, heldNow, options),
+                                                              options.remeshing.targetEdgeLength);
+  if (widening.operations() == 0)
+    return repair.operations();
+  std::vector<std::pair<std::size_t, std::size_t>> widenedCrossings;
+  MeshValidation widenedValidation = validateMesh(widened, widenedCrossings);
+  if (!rejection(widenedValidation, validation).empty()) // crossing a sheet the local test did not see
+    return repair.operations();
+  mesh = std::move(widened);
+  validation = widenedValidation;
+  crossings.clear();
+  crossedAt.clear();
+  renumber(widening, unsmoothed, smoothed);
+  unsmoothedVertices = verticesLeftUnsmoothed(mesh.points, smoothed, unsmoothed);
+  return repair.operations() + widening.operations();
+}
+
+} // namespace slicemesh
