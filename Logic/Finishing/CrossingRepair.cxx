@@ -197,34 +197,18 @@ public:
       }
   }
 
-  /** The centroids of the triangles of the crossing pairs left. */
-  std::vector<Point3> crossingPlaces() const
-  {
-    std::vector<Point3> places;
-    for (const auto& [first, second] : m_Crossings)
-      for (std::size_t t : { first, second })
-      {
-        Point3 sum{ 0.0, 0.0, 0.0 };
-        for (std::int32_t v : m_Mesh.triangles[t])
-        {
-          const Point3& p = m_Mesh.points[static_cast<std::size_t>(v)];
-          sum = { sum.x + p.x / 3.0, sum.y + p.y / 3.0, sum.z + p.z / 3.0 };
-        }
-        places.push_back(sum);
-      }
-    return places;
-  }
-
   /** The mesh without the removed triangles and the vertices no triangle uses any more; `done`
-   *  gets the vertices' former numbers. */
+   *  gets the vertices' former numbers and the crossing pairs left, in the triangles' new numbers. */
   void compact(CrossingRepair& done)
   {
     std::vector<std::int32_t> newNumber(m_Mesh.points.size(), -1);
+    std::vector<std::size_t> newTriangle(m_Mesh.triangles.size());
     std::vector<Triangle> kept;
     kept.reserve(m_Mesh.triangles.size());
     for (std::size_t t = 0; t < m_Mesh.triangles.size(); ++t)
       if (m_Alive[t])
       {
+        newTriangle[t] = kept.size();
         kept.push_back(m_Mesh.triangles[t]);
         for (std::int32_t v : m_Mesh.triangles[t])
           newNumber[static_cast<std::size_t>(v)] = 0;
@@ -244,6 +228,9 @@ public:
     m_Mesh.points = std::move(points);
     m_Mesh.triangles = std::move(kept);
     done.formerVertex = std::move(former);
+    // Only triangles alive cross: apply drops the pairs of those it removes.
+    for (const auto& [first, second] : m_Crossings)
+      done.stillCrossing.emplace_back(newTriangle[first], newTriangle[second]);
   }
 
 private:
@@ -527,8 +514,6 @@ CrossingRepair repairCrossingsLocally(TriangleMesh& mesh, const std::vector<std:
   CrossingRepair done;
   LocalRepair repair(mesh, crossings, movable, edgeLength);
   done.undone = repair.run(done);
-  if (!done.undone)
-    done.stillCrossingAt = repair.crossingPlaces();
   repair.compact(done);
   return done;
 }

@@ -22,9 +22,9 @@ struct CrossingRepair
   /** Whether every crossing was undone, as judged against the triangles around them (the caller's
    *  validation of the whole mesh decides); when not, the mesh crosses itself still. */
   bool undone = false;
-  /** When not undone: where the mesh still crosses itself, the centroids of the triangles of the
-   *  pairs left (as the repair left them). */
-  std::vector<Point3> stillCrossingAt;
+  /** When not undone: the pairs of triangles that still cross (lower number first), numbered as in
+   *  the repaired mesh. */
+  std::vector<std::pair<std::size_t, std::size_t>> stillCrossing;
   /** For every vertex of the repaired mesh, its number before (collapsed vertices are gone; a moved
    *  one's new point has the number of the vertex it moved). */
   std::vector<std::int32_t> formerVertex;

@@ -113,9 +113,9 @@ std::size_t repairedLocally(TriangleMesh& mesh, MeshValidation& validation,
   // a piece of a million triangles would only confirm them.
   if (!repair.undone)
   {
-    crossedAt = repair.stillCrossingAt;
+    crossedAt = crossingPlaces(mesh, repair.stillCrossing);
     crossings.clear();
-    validation.selfIntersections = std::max<std::size_t>(1, repair.stillCrossingAt.size() / 2);
+    validation.selfIntersections = std::max<std::size_t>(1, repair.stillCrossing.size());
     return repair.operations();
   }
   validation = validateMesh(mesh, crossings);
