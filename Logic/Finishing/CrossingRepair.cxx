@@ -20,6 +20,10 @@ namespace
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using TrianglePairs = std::set<std::pair<std::size_t, std::size_t>>;
 
+/** The operations the search for two in a row (undoneInTwoSteps) may judge in one repair: a real
+ *  remesh fold took about 650; two solids through each other, whose hundreds of crossings no
+ *  operation parts, took millions (a minute) without a bound. */
+constexpr std::size_t twoStepJudgements = 16384;
 /** Narrower than this, a triangle left beside a repaired fold is widened if an operation can. */
 constexpr double narrowAngleDegrees = 20.0;
 
@@ -123,42 +127,145 @@ public:
       if (next == m_Crossings.end())
         return false;
       const auto [first, second] = *next;
-      std::vector<Operation> candidates;
-      const std::set<std::pair<std::int32_t, std::int32_t>> edges = edgesAround({ first, second });
-      std::set<std::int32_t> vertices;
-      for (const auto& [u, v] : edges)
+      std::optional<std::pair<Operation, Outcome>> best = widestFewer(candidatesAround(first, second), m_Crossings.size());
+      if (best)
       {
-        for (std::optional<Operation> operation : { flip(u, v), collapse(u, v), collapse(v, u) })
-          if (operation)
-            candidates.push_back(std::move(*operation));
-        vertices.insert({ u, v });
+        apply(best->first, best->second);
+        count(best->first, done);
+        stuck.clear();
       }
-      for (std::int32_t u : vertices)
-        for (double way : { 1.0, 0.5 })
-          if (std::optional<Operation> operation = movedToNeighbours(u, way))
-            candidates.push_back(std::move(*operation));
-      // Of the operations that leave fewer crossings, the one whose triangles are widest: a single
-      // flip can undo a fold and leave a needle, where a collapse beside it would not. (Undoing a
-      // fold can take a step that crosses something else on the way.)
-      std::optional<std::pair<Operation, Outcome>> best;
-      for (Operation& operation : candidates)
-      {
-        std::optional<Outcome> outcome = judge(operation);
-        if (outcome && outcome->crossings < m_Crossings.size() &&
-            (!best || outcome->largestCosine < best->second.largestCosine ||
-             (outcome->largestCosine == best->second.largestCosine && outcome->crossings < best->second.crossings)))
-          best.emplace(std::move(operation), std::move(*outcome));
-      }
-      if (!best)
-      {
+      else if (undoneInTwoSteps(first, second, done))
+        stuck.clear();
+      else
         stuck.insert(*next);
-        continue;
-      }
-      apply(best->first, best->second);
-      count(best->first, done);
-      stuck.clear();
     }
     return m_Crossings.empty();
+  }
+
+  /** The flips and collapses of the edges around a crossing's two triangles (the edges of every
+   *  triangle at their corners), and the moves of those edges' vertices to and half way to the mean
+   *  of their neighbours. */
+  std::vector<Operation> candidatesAround(std::size_t first, std::size_t second)
+  {
+    std::vector<Operation> candidates;
+    const std::set<std::pair<std::int32_t, std::int32_t>> edges = edgesAround({ first, second });
+    std::set<std::int32_t> vertices;
+    for (const auto& [u, v] : edges)
+    {
+      for (std::optional<Operation> operation : { flip(u, v), collapse(u, v), collapse(v, u) })
+        if (operation)
+          candidates.push_back(std::move(*operation));
+      vertices.insert({ u, v });
+    }
+    for (std::int32_t u : vertices)
+      for (double way : { 1.0, 0.5 })
+        if (std::optional<Operation> operation = movedToNeighbours(u, way))
+          candidates.push_back(std::move(*operation));
+    return candidates;
+  }
+
+  /** Of the operations that leave fewer than `crossings` crossings, the one whose triangles are
+   *  widest: a single flip can undo a fold and leave a needle, where a collapse beside it would not.
+   *  (Undoing a fold can take a step that crosses something else on the way.) */
+  std::optional<std::pair<Operation, Outcome>> widestFewer(std::vector<Operation> candidates, std::size_t crossings) const
+  {
+    std::optional<std::pair<Operation, Outcome>> best;
+    for (Operation& operation : candidates)
+    {
+      std::optional<Outcome> outcome = judge(operation);
+      if (outcome && outcome->crossings < crossings &&
+          (!best || outcome->largestCosine < best->second.largestCosine ||
+           (outcome->largestCosine == best->second.largestCosine && outcome->crossings < best->second.crossings)))
+        best.emplace(std::move(operation), std::move(*outcome));
+    }
+    return best;
+  }
+
+  /** What an operation changes in the repair's state, to be put back if it leads nowhere. */
+  struct Undo
+  {
+    std::unordered_map<std::int32_t, std::vector<std::size_t>> fan;
+    TrianglePairs crossings;
+    std::vector<std::pair<std::size_t, Triangle>> triangles; ///< every slot it removes or rewrites, as it was
+  };
+
+  Undo undoOf(const Operation& operation) const
+  {
+    Undo undo{ m_Fan, m_Crossings, {} };
+    for (std::size_t t : operation.removed)
+      undo.triangles.emplace_back(t, m_Mesh.triangles[t]);
+    for (const auto& rewritten : operation.rewritten)
+      undo.triangles.emplace_back(rewritten.first, m_Mesh.triangles[rewritten.first]);
+    return undo;
+  }
+
+  void undo(Undo& before)
+  {
+    m_Fan.swap(before.fan);
+    m_Crossings.swap(before.crossings);
+    for (const auto& [t, corners] : before.triangles)
+    {
+      m_Mesh.triangles[t] = corners;
+      m_Alive[t] = 1;
+    }
+  }
+
+  /** A fold that no single operation improves, undone by two: the first leaving as many crossings
+   *  (a flip that turns the fold's inner edge, so that a collapse or a move can then take it out),
+   *  the second, around a crossing the first touched, leaving fewer. The first such pair of
+   *  operations, each first operation tried in turn with the widest second. (A fold of the Colin27
+   *  T1's surface, where a voxel edge pinches two sheets, took four such pairs.) */
+  bool undoneInTwoSteps(std::size_t first, std::size_t second, CrossingRepair& done)
+  {
+    const std::size_t before = m_Crossings.size();
+    std::vector<Operation> firsts = candidatesAround(first, second);
+    if (!spend(firsts.size()))
+      return false;
+    for (Operation& operation : firsts)
+    {
+      std::optional<Outcome> outcome = judge(operation);
+      if (!outcome || outcome->crossings > before)
+        continue;
+      Undo undoFirst = undoOf(operation);
+      apply(operation, *outcome);
+      // The second around a crossing of a triangle the first rewrote.
+      std::set<std::size_t> rewritten;
+      for (const auto& slot : operation.rewritten)
+        rewritten.insert(slot.first);
+      const std::vector<std::pair<std::size_t, std::size_t>> left(m_Crossings.begin(), m_Crossings.end());
+      for (const auto& [one, other] : left)
+      {
+        if (!rewritten.count(one) && !rewritten.count(other))
+          continue;
+        std::vector<Operation> seconds = candidatesAround(one, other);
+        if (!spend(seconds.size()))
+        {
+          undo(undoFirst);
+          return false;
+        }
+        if (std::optional<std::pair<Operation, Outcome>> then = widestFewer(std::move(seconds), before))
+        {
+          apply(then->first, then->second);
+          count(operation, done);
+          count(then->first, done);
+          return true;
+        }
+      }
+      undo(undoFirst);
+    }
+    return false;
+  }
+
+  /** Takes `judgements` from what the two-step search may still judge; false if that is less. */
+  bool spend(std::size_t judgements)
+  {
+    if (judgements > m_TwoStepBudget)
+    {
+      m_TwoStepBudget = 0;
+      return false;
+    }
+    m_TwoStepBudget -= judgements;
+    return true;
   }
 
   /** Each triangle of movable corners narrower than narrowAngleDegrees flipped or collapsed away
@@ -504,6 +611,7 @@ private:
   TrianglePairs m_Crossings;
   std::unordered_map<std::int32_t, std::vector<std::size_t>> m_Fan;
   std::vector<std::size_t> m_Scope;
+  std::size_t m_TwoStepBudget = twoStepJudgements;
 };
 
 } // namespace
