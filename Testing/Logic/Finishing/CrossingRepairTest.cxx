@@ -8,10 +8,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -104,6 +106,41 @@ TriangleMesh readObj(const std::string& path)
   return mesh;
 }
 
+/** What the finishing relies on to test only the changed part of a repaired piece: every triangle
+ *  of `repaired` that `before` did not have (by the corners' former numbers and points) has a
+ *  movable corner. */
+void expectEveryChangedTriangleHasAMovableCorner(const TriangleMesh& before, const TriangleMesh& repaired,
+                                                 const CrossingRepair& repair, const std::vector<char>& movable)
+{
+  const auto canonical = [](Triangle t)
+  {
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    return t;
+  };
+  std::set<Triangle> had;
+  for (const Triangle& t : before.triangles)
+    had.insert(canonical(t));
+  std::size_t changed = 0;
+  for (const Triangle& t : repaired.triangles)
+  {
+    Triangle former{};
+    bool moved = false;
+    for (int i = 0; i < 3; ++i)
+    {
+      const auto v = static_cast<std::size_t>(t[i]);
+      former[i] = repair.formerVertex[v];
+      const Point3 &now = repaired.points[v], &was = before.points[static_cast<std::size_t>(former[i])];
+      moved = moved || now.x != was.x || now.y != was.y || now.z != was.z;
+    }
+    if (!moved && had.count(canonical(former)))
+      continue;
+    ++changed;
+    EXPECT_TRUE(movable[static_cast<std::size_t>(former[0])] || movable[static_cast<std::size_t>(former[1])] ||
+                movable[static_cast<std::size_t>(former[2])]);
+  }
+  EXPECT_GT(changed, 0u);
+}
+
 } // namespace
 
 TEST(CrossingRepair, AFoldOnAFlatFaceIsCollapsedAwayAndTheFaceStaysFlat)
@@ -124,6 +161,7 @@ TEST(CrossingRepair, AFoldOnAFlatFaceIsCollapsedAwayAndTheFaceStaysFlat)
   std::vector<char> movable(box.points.size(), 0);
   for (std::size_t v = 0; v < box.points.size(); ++v)
     movable[v] = box.points[v].z == 8.0 && std::abs(box.points[v].x - 4.5) < 3.0 && std::abs(box.points[v].y - 4.5) < 3.0;
+  const TriangleMesh folding = box;
   const CrossingRepair repair = repairCrossingsLocally(box, crossings, movable, 1.1);
 
   const MeshValidation after = validateMesh(box);
@@ -132,6 +170,7 @@ TEST(CrossingRepair, AFoldOnAFlatFaceIsCollapsedAwayAndTheFaceStaysFlat)
   EXPECT_EQ(after.eulerCharacteristic, before.eulerCharacteristic);
   EXPECT_EQ(after.components, 1u);
   EXPECT_GE(repair.collapses, 1u);
+  expectEveryChangedTriangleHasAMovableCorner(folding, box, repair, movable);
   // No point moved: the box is the same solid (the top face flat at z = 8).
   EXPECT_NEAR(after.volume, 512.0, 1e-9);
   EXPECT_EQ(box.points.size(), before.vertices - repair.collapses);
@@ -241,9 +280,11 @@ TEST(CrossingRepair, ARemeshFoldThatNoSingleOperationImprovesIsUndoneInTwo)
   // origin) is the volume between them.
   const double volumeBefore = signedVolume(patch);
 
+  const TriangleMesh folded = patch;
   const CrossingRepair repair = repairCrossingsLocally(patch, crossings, movable, edge);
 
   EXPECT_TRUE(repair.undone);
+  expectEveryChangedTriangleHasAMovableCorner(folded, patch, repair, movable);
   EXPECT_TRUE(selfIntersectingTrianglePairs(patch).empty());
   const MeshValidation after = validateMesh(patch);
   EXPECT_EQ(after.boundaryEdges, before.boundaryEdges); // the patch's rim, untouched
