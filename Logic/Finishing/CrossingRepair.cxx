@@ -126,7 +126,9 @@ public:
       const auto next = std::find_if(m_Crossings.begin(), m_Crossings.end(), [&](const auto& pair) { return !stuck.count(pair); });
       if (next == m_Crossings.end())
         return false;
-      const auto [first, second] = *next;
+      // A copy: the two-step search replaces the set (undo) and with it the element `next` points at.
+      const std::pair<std::size_t, std::size_t> crossing = *next;
+      const auto [first, second] = crossing;
       std::optional<std::pair<Operation, Outcome>> best = widestFewer(candidatesAround(first, second), m_Crossings.size());
       if (best)
       {
@@ -137,7 +139,7 @@ public:
       else if (undoneInTwoSteps(first, second, done))
         stuck.clear();
       else
-        stuck.insert(*next);
+        stuck.insert(crossing);
     }
     return m_Crossings.empty();
   }
