@@ -2,6 +2,7 @@
 // on a flat face, which a collapse, or a move of its vertex, undoes without moving the face; and two
 // boxes through each other, which no flip, collapse or move parts. And on a real remesh's fold that
 // takes two operations in a row.
+#include "Finishing/CrossingPlaces.h"
 #include "Finishing/CrossingRepair.h"
 #include "Measures/MeshValidation.h"
 #include "Measures/SelfIntersections.h"
@@ -75,7 +76,8 @@ std::int32_t vertexAt(const TriangleMesh& mesh, const Point3& p)
   return -1;
 }
 
-/** The vertices (v x y z) and triangles (f a b c, numbered from 1) of a Wavefront OBJ file. */
+/** The vertices (v x y z) and triangles (f a b c, numbered from 1) of a Wavefront OBJ file. (The
+ *  project's mesh reader is VTK's, in the Mesh module; the Logic suite links the Logic library only.) */
 TriangleMesh readObj(const std::string& path)
 {
   TriangleMesh mesh;
@@ -257,24 +259,7 @@ TEST(CrossingRepair, ARemeshFoldThatNoSingleOperationImprovesIsUndoneInTwo)
   const std::vector<std::pair<std::size_t, std::size_t>> crossings = selfIntersectingTrianglePairs(patch);
   ASSERT_GT(crossings.size(), 0u);
   // Movable as the finishing makes them: within two target edges of a crossing triangle's centroid.
-  std::vector<char> movable(patch.points.size(), 0);
-  for (const auto& [first, second] : crossings)
-    for (std::size_t t : { first, second })
-    {
-      Point3 centroid{ 0.0, 0.0, 0.0 };
-      for (std::int32_t v : patch.triangles[t])
-      {
-        const Point3& p = patch.points[static_cast<std::size_t>(v)];
-        centroid = { centroid.x + p.x / 3.0, centroid.y + p.y / 3.0, centroid.z + p.z / 3.0 };
-      }
-      for (std::size_t v = 0; v < patch.points.size(); ++v)
-      {
-        const Point3& p = patch.points[v];
-        const double dx = p.x - centroid.x, dy = p.y - centroid.y, dz = p.z - centroid.z;
-        if (dx * dx + dy * dy + dz * dz <= 4.0 * edge * edge)
-          movable[v] = 1;
-      }
-    }
+  const std::vector<char> movable = verticesNear(patch, crossingPlaces(patch, crossings), 2.0 * edge);
   const std::vector<Point3> pointsBefore = patch.points;
   // For two patches of the same rim, the difference of their signed volumes (tetrahedra from the
   // origin) is the volume between them.
