@@ -19,7 +19,7 @@ set(SLICEMESH_INTERNAL_HEADERS
   Contours/ContourCrossings.h
   Correspondence/PolygonProximity.h Correspondence/MutualIntersections.h
   Finishing/RemeshingRegions.h Finishing/PieceTargetVolumes.h Finishing/PieceRejection.h Finishing/PutBackVertices.h
-  Finishing/CrossingPlaces.h Finishing/FinishedPieceRepair.h
+  Finishing/CrossingPlaces.h Finishing/FinishedPieceRepair.h Finishing/PackedTaubinSteps.h
   Measures/SurfaceMeshConversion.h Measures/TriangleMeshTree.h
   Tiling/SlabTiling.h Tiling/SlabOverlayState.h Tiling/MeshBuilder.h)
 file(GLOB SLICEMESH_LOGIC_HEADERS RELATIVE ${PROJECT_SOURCE_DIR}/Logic ${PROJECT_SOURCE_DIR}/Logic/*/*.h)

@@ -1,5 +1,7 @@
 #include "Finishing/SurfaceSmoothing.h"
 
+#include "Finishing/PackedTaubinSteps.h"
+
 #include "Core/AreaNormal.h"
 #include "Core/ParallelFor.h"
 #include "Measures/MeshComponents.h"
@@ -186,26 +188,6 @@ inline __attribute__((always_inline)) Point3 neighbourMean(const std::vector<Poi
   }
   const double inverse = neighbours.inverseCount[v];
   return { x * inverse, y * inverse, z * inverse };
-}
-
-/** p += factor * (mean of the neighbours - p), for every vertex at once; with `bound`, each result
- *  clamped to its vertex's ellipsoid. */
-void umbrellaStep(std::vector<Point3>& points, const VertexNeighbours& neighbours, double factor,
-                  std::vector<Point3>& scratch, const DisplacementBound& bound, unsigned int threads)
-{
-  parallelForRanges(points.size(), threads,
-                    [&](std::size_t first, std::size_t last)
-                    {
-                      for (std::size_t v = first; v < last; ++v)
-                      {
-                        const Point3 mean = neighbourMean(points, neighbours, v);
-                        scratch[v] = bound.clamped({ points[v].x + factor * (mean.x - points[v].x),
-                                                     points[v].y + factor * (mean.y - points[v].y),
-                                                     points[v].z + factor * (mean.z - points[v].z) },
-                                                   v);
-                      }
-                    });
-  points.swap(scratch);
 }
 
 /** Signed volume and area of every component (by the component of each triangle's first vertex).
@@ -568,8 +550,7 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
   std::vector<Point3> start(order.size());
   for (std::size_t i = 0; i < order.size(); ++i)
     start[i] = mesh.points[static_cast<std::size_t>(order[i])];
-  std::vector<Point3> points = start, scratch(order.size());
-  const DisplacementBound free(start, {}, false);
+  std::vector<Point3> points(order.size());
   DisplacementBound bound(start, options.maxDisplacement, bounded);
   // Vertices held where they are (drawn contours' own), by row: they take each pair's steps, as a
   // sharp feature's do (below), and are put back after the pair and after each relaxation.
@@ -587,38 +568,28 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
       points[r] = start[r];
   };
   const int wholePairs = pairsBeforeFeaturesHeld(options);
-  for (int i = 0; i < wholePairs; ++i)
-  {
-    umbrellaStep(points, neighbours, lambda, scratch, free, threads);
-    umbrellaStep(points, neighbours, mu, scratch, bound, threads); // the bound is checked after every pair
-    putBackHeld();
-  }
   const RowTriangles around = trianglesOfRows(mesh, rank);
   std::vector<char> sharp;
-  if (options.iterations > wholePairs)
   {
-    // Found after the first pairs, which take the staircase's own creases out. A held vertex still
-    // takes each pair's steps, so that its neighbours see the filter's shrinking and inflating steps
-    // alike, and is put back after it: held through both, a feature pulled its neighbours outwards
-    // in every inflating step (a torus's mean distance 7% up, where this gives 2.5% down).
-    sharp = sharpFeatureRows(points, mesh, rank, around, options.featureAngle, 2, threads);
-    std::vector<std::size_t> featureRows;
-    for (std::size_t r = 0; r < sharp.size(); ++r)
-      if (sharp[r])
-        featureRows.push_back(r);
-    std::vector<Point3> heldAt(featureRows.size());
-    for (std::size_t i = 0; i < featureRows.size(); ++i)
-      heldAt[i] = points[featureRows[i]];
-    bound.holdFeatures(sharp, boundAwayFromFeatures(options)); // the relaxation below keeps the plain bound on them
-    for (int i = wholePairs; i < options.iterations; ++i)
+    // On a packed copy of the points (PackedTaubinSteps.h), freed before the relaxation's.
+    TaubinPairs pairs(start, neighbours.first, neighbours.ids, options.maxDisplacement, bounded, heldRows);
+    pairs.run(wholePairs, lambda, mu, threads);
+    if (options.iterations > wholePairs)
     {
-      umbrellaStep(points, neighbours, lambda, scratch, free, threads);
-      umbrellaStep(points, neighbours, mu, scratch, bound, threads);
-      for (std::size_t k = 0; k < featureRows.size(); ++k)
-        points[featureRows[k]] = heldAt[k];
-      putBackHeld();
+      // Found after the first pairs, which take the staircase's own creases out. A held vertex still
+      // takes each pair's steps, so that its neighbours see the filter's shrinking and inflating steps
+      // alike, and is put back after it: held through both, a feature pulled its neighbours outwards
+      // in every inflating step (a torus's mean distance 7% up, where this gives 2.5% down).
+      pairs.unpackInto(points);
+      sharp = sharpFeatureRows(points, mesh, rank, around, options.featureAngle, 2, threads);
+      bound.holdFeatures(sharp, boundAwayFromFeatures(options)); // the relaxation below keeps the plain bound on them
+      pairs.holdFeatures(sharp, boundAwayFromFeatures(options));
+      pairs.run(options.iterations - wholePairs, lambda, mu, threads);
     }
+    pairs.unpackInto(points);
+    putBackHeld(); // exactly, not as rounded in the packed copy
   }
+  std::vector<Point3> scratch(order.size());
   // The filter moves vertices along the surface too, and where it folds sharply (a tract a voxel or
   // two thick) it crowds them: triangles it leaves with small angles, relaxed back along the surface.
   for (int i = 0; i < options.tangentialRelaxations; ++i)

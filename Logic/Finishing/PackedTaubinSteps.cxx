@@ -1,0 +1,155 @@
+#include "Finishing/PackedTaubinSteps.h"
+
+#include "Core/ParallelFor.h"
+
+#include <algorithm>
+
+namespace slicemesh
+{
+namespace
+{
+
+Point3 middleOf(const std::vector<Point3>& points)
+{
+  if (points.empty())
+    return {};
+  Point3 low = points.front(), high = points.front();
+  for (const Point3& p : points)
+  {
+    low = { std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z) };
+    high = { std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z) };
+  }
+  return { 0.5 * (low.x + high.x), 0.5 * (low.y + high.y), 0.5 * (low.z + high.z) };
+}
+
+Float4 inverseOf(const std::array<double, 3>& axes)
+{
+  return Float4{ static_cast<float>(1.0 / axes[0]), static_cast<float>(1.0 / axes[1]),
+                 static_cast<float>(1.0 / axes[2]), 0.0f };
+}
+
+} // namespace
+
+PackedPoints::PackedPoints(const std::vector<Point3>& points)
+  : origin(middleOf(points))
+  , packed(points.size() + 1, Float4{ 0.0f, 0.0f, 0.0f, 0.0f })
+{
+  for (std::size_t v = 0; v < points.size(); ++v)
+    packed[v] = pack(points[v]);
+}
+
+Float4 PackedPoints::pack(const Point3& p) const
+{
+  return Float4{ static_cast<float>(p.x - origin.x), static_cast<float>(p.y - origin.y),
+                 static_cast<float>(p.z - origin.z), 0.0f };
+}
+
+Point3 PackedPoints::unpack(std::size_t v) const
+{
+  const Float4& p = packed[v];
+  return { origin.x + static_cast<double>(p[0]), origin.y + static_cast<double>(p[1]),
+           origin.z + static_cast<double>(p[2]) };
+}
+
+void PackedPoints::unpackInto(std::vector<Point3>& points) const
+{
+  for (std::size_t v = 0; v + 1 < packed.size(); ++v)
+    points[v] = unpack(v);
+}
+
+NeighbourSlots::NeighbourSlots(const std::vector<std::size_t>& first, const std::vector<std::int32_t>& neighbours)
+  : zero(first.size() - 1)
+{
+  ids.assign(slots * zero, static_cast<std::int32_t>(zero));
+  inverseCount.resize(zero);
+  moreOf.assign(zero + 1, 0);
+  for (std::size_t v = 0; v < zero; ++v)
+  {
+    const std::size_t begin = first[v], end = first[v + 1];
+    if (begin == end)
+      std::fill_n(ids.begin() + static_cast<std::ptrdiff_t>(slots * v), slots, static_cast<std::int32_t>(v));
+    for (std::size_t i = begin; i < end; ++i)
+      if (i - begin < slots)
+        ids[slots * v + (i - begin)] = neighbours[i];
+      else
+        more.push_back(neighbours[i]);
+    moreOf[v + 1] = more.size();
+    inverseCount[v] = 1.0f / static_cast<float>(begin == end ? slots : end - begin);
+  }
+}
+
+PackedBound::PackedBound(const std::vector<Float4>& start, const std::array<double, 3>& bound, bool active)
+  : start(start)
+  , active(active)
+  , inverse(inverseOf(bound))
+  , wideInverse(inverse)
+{
+}
+
+void PackedBound::holdFeatures(const std::vector<char>& held, const std::array<double, 3>& wide)
+{
+  this->held = &held;
+  wideInverse = inverseOf(wide);
+}
+
+void packedUmbrellaStep(std::vector<Float4>& points, const NeighbourSlots& neighbours, float factor,
+                        std::vector<Float4>& scratch, const PackedBound& bound, unsigned int threads)
+{
+  parallelForRanges(neighbours.zero, threads,
+                    [&](std::size_t first, std::size_t last)
+                    {
+                      for (std::size_t v = first; v < last; ++v)
+                      {
+                        const std::int32_t* slot = &neighbours.ids[NeighbourSlots::slots * v];
+                        auto at = [&](int k) -> const Float4& { return points[static_cast<std::size_t>(slot[k])]; };
+                        // Four sums side by side, not one chain of eight adds.
+                        Float4 sum = ((at(0) + at(1)) + (at(2) + at(3))) + ((at(4) + at(5)) + (at(6) + at(7)));
+                        for (std::size_t i = neighbours.moreOf[v]; i < neighbours.moreOf[v + 1]; ++i)
+                          sum += points[static_cast<std::size_t>(neighbours.more[i])];
+                        const Float4 p = points[v];
+                        scratch[v] = bound.clamped(p + factor * (sum * neighbours.inverseCount[v] - p), v);
+                      }
+                    });
+  points.swap(scratch);
+}
+
+TaubinPairs::TaubinPairs(const std::vector<Point3>& startPoints, const std::vector<std::size_t>& first,
+                         const std::vector<std::int32_t>& ids, const std::array<double, 3>& displacementBound,
+                         bool bounded, std::vector<std::size_t> heldVertices)
+  : packed(startPoints)
+  , start(packed.data())
+  , scratch(packed.data())
+  , neighbours(first, ids)
+  , free(start, {}, false)
+  , bound(start, displacementBound, bounded)
+  , held(std::move(heldVertices))
+{
+}
+
+void TaubinPairs::run(int pairs, double lambda, double mu, unsigned int threads)
+{
+  for (int i = 0; i < pairs; ++i)
+  {
+    packedUmbrellaStep(packed.data(), neighbours, static_cast<float>(lambda), scratch, free, threads);
+    packedUmbrellaStep(packed.data(), neighbours, static_cast<float>(mu), scratch, bound, threads);
+    for (std::size_t k = 0; k < features.size(); ++k)
+      packed.data()[features[k]] = featuresAt[k];
+    for (std::size_t v : held)
+      packed.data()[v] = start[v];
+  }
+}
+
+void TaubinPairs::holdFeatures(const std::vector<char>& flags, const std::array<double, 3>& wide)
+{
+  features.clear();
+  featuresAt.clear();
+  for (std::size_t v = 0; v < flags.size(); ++v)
+    if (flags[v])
+    {
+      features.push_back(v);
+      featuresAt.push_back(packed.data()[v]);
+    }
+  bound.holdFeatures(flags, wide);
+}
+
+} // namespace slicemesh

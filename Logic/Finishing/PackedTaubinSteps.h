@@ -1,0 +1,128 @@
+// The Taubin pairs' steps on a working copy of the points packed for speed: single precision, four
+// floats a point, and every vertex's neighbours in eight slots. The pairs are most of the smoothing's
+// time, and a step's time is its instructions and its branches, not memory: in double precision with
+// a loop over each vertex's five to seven neighbours, the loop's end was mispredicted at about every
+// vertex. Internal to the finishing (SurfaceSmoothing).
+#ifndef PackedTaubinSteps_h
+#define PackedTaubinSteps_h
+
+#include "Core/SliceMeshTypes.h"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace slicemesh
+{
+
+/** Four floats in one 16-byte register (GCC's and Clang's vector extension): x, y, z and a zero. */
+using Float4 = float __attribute__((vector_size(16)));
+
+/** Points in single precision, relative to the middle of their box (the rounding, under 0.1 um a
+ *  coordinate for a surface a metre across, is far below what the filter moves), and one more point
+ *  at the origin that stays there: NeighbourSlots' empty slots name it. */
+class PackedPoints
+{
+public:
+  explicit PackedPoints(const std::vector<Point3>& points);
+
+  Float4 pack(const Point3& p) const;
+  Point3 unpack(std::size_t v) const;
+  /** points[v] = unpack(v) for every point but the extra one. */
+  void unpackInto(std::vector<Point3>& points) const;
+
+  std::vector<Float4>& data() { return packed; }
+  const std::vector<Float4>& data() const { return packed; }
+
+private:
+  Point3 origin;
+  std::vector<Float4> packed;
+};
+
+/** The neighbours of every vertex in slots of eight: a vertex with fewer has the rest name the extra
+ *  point at the origin (`zero`), one with more has the others in `more`, and an isolated vertex names
+ *  itself eight times. Every vertex then sums eight points, with no branch on how many it has. */
+struct NeighbourSlots
+{
+  static constexpr std::size_t slots = 8;
+  /** From compressed rows: the neighbours of v are ids[first[v]] .. ids[first[v + 1]] - 1. */
+  NeighbourSlots(const std::vector<std::size_t>& first, const std::vector<std::int32_t>& ids);
+
+  std::vector<std::int32_t> ids;   ///< vertex v's slots are ids[slots * v] .. ids[slots * v + slots - 1]
+  std::vector<float> inverseCount; ///< 1 / the number of neighbours (1 / slots when isolated)
+  std::vector<std::int32_t> more;  ///< the neighbours past the eighth, by vertex
+  std::vector<std::size_t> moreOf; ///< vertex v's are more[moreOf[v]] .. more[moreOf[v + 1] - 1]
+  std::size_t zero = 0;            ///< the extra point's index: the number of vertices
+};
+
+/** Where a packed point may go: within the ellipsoid of semi-axes `bound` around its start
+ *  (inactive: anywhere); once `holdFeatures` is called, the points not flagged `held` within the
+ *  ellipsoid of semi-axes `wide`. The smoothing's bound, on packed points. */
+class PackedBound
+{
+public:
+  PackedBound(const std::vector<Float4>& start, const std::array<double, 3>& bound, bool active);
+
+  void holdFeatures(const std::vector<char>& held, const std::array<double, 3>& wide);
+
+  /** p, or if it has left its ellipsoid, the point where its displacement meets it. */
+  Float4 clamped(const Float4& p, std::size_t v) const
+  {
+    if (!active)
+      return p;
+    const Float4 d = p - start[v];
+    const Float4 u = d * (held && !(*held)[v] ? wideInverse : inverse);
+    const float reachSquared = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+    if (reachSquared <= 1.0f)
+      return p;
+    return start[v] + d * (1.0f / std::sqrt(reachSquared));
+  }
+
+private:
+  const std::vector<Float4>& start;
+  bool active;
+  Float4 inverse;
+  Float4 wideInverse;
+  const std::vector<char>* held = nullptr;
+};
+
+/** p += factor * (mean of the neighbours - p), for every vertex at once, each result clamped by
+ *  `bound`; `scratch` (as large as `points`) receives the new points and is swapped in. */
+void packedUmbrellaStep(std::vector<Float4>& points, const NeighbourSlots& neighbours, float factor,
+                        std::vector<Float4>& scratch, const PackedBound& bound, unsigned int threads);
+
+/** Taubin's lambda/mu pairs on a packed copy of `start`: each pair a free shrinking step and an
+ *  inflating step within the bound, then the held vertices put back. */
+class TaubinPairs
+{
+public:
+  /** `first`/`ids`: the vertices' neighbours in compressed rows; `bound`, `bounded`: the smoothing's
+   *  displacement bound; `held`: vertices put back where they started after every pair. */
+  TaubinPairs(const std::vector<Point3>& start, const std::vector<std::size_t>& first,
+              const std::vector<std::int32_t>& ids, const std::array<double, 3>& bound, bool bounded,
+              std::vector<std::size_t> held);
+
+  void run(int pairs, double lambda, double mu, unsigned int threads);
+  /** From now on the `features` (a flag per vertex) stay where they are, and the others move within
+   *  the ellipsoid of semi-axes `wide`. */
+  void holdFeatures(const std::vector<char>& features, const std::array<double, 3>& wide);
+  /** The points as they are now. */
+  void unpackInto(std::vector<Point3>& points) const { packed.unpackInto(points); }
+
+private:
+  PackedPoints packed;
+  std::vector<Float4> start;
+  std::vector<Float4> scratch;
+  NeighbourSlots neighbours;
+  PackedBound free;
+  PackedBound bound;
+  std::vector<std::size_t> held;
+  std::vector<std::size_t> features;
+  std::vector<Float4> featuresAt;
+};
+
+} // namespace slicemesh
+
+#endif
