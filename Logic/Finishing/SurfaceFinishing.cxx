@@ -540,14 +540,14 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
   std::size_t components = 0;
   vertexComponents(tiling, components);
   const bool onePiece = components == 1 && !tiling.triangles.empty();
-  // A tiling of one piece owns the target whatever the shortfall: a structure in one slice a few
-  // millimetres across is tiled at about 60% of its slab's volume. Among several pieces each gets
-  // the shares of its own contours (without shares, the target in proportion to the tiled volumes),
-  // followed within a quarter of its tiled volume: between thick slices a thin or branching piece
-  // falls short of its voxels by up to a tenth or so, while a speck falls far shorter (a voxel is
-  // tiled at a sixth of its volume: its domed caps are most of it), and an offset that gave that
-  // back would bend it out of shape. No piece makes up for another: shared in proportion, a cube
-  // beside twenty single voxels was finished 1.7% too large.
+  // Each piece gets its own voxels' volume, whatever its tiling's shortfall: a structure in one slice
+  // a few millimetres across is tiled at about half of its slab's volume. With several pieces, a
+  // piece's target is the shares of its own contours (without shares, the target in proportion to
+  // the tiled volumes), so a piece's volume does not depend on what else the label holds. A speck
+  // follows its target only within a quarter of its tiled volume: a voxel is tiled at a sixth of its
+  // volume (its domed caps are most of it), and an offset that gave that back would bend it out of
+  // shape. No piece makes up for another: shared in proportion, a cube beside twenty single voxels
+  // was finished 1.7% too large.
   const double scale = targetVolume > 0.0 ? targetVolume / tilingValidation.volume : 1.0;
   auto followed = [](double s) { return std::abs(s - 1.0) <= 0.25 ? s : 1.0; };
   std::vector<TriangleMesh> split = onePiece ? std::vector<TriangleMesh>() : splitIntoPieces(tiling);
@@ -584,7 +584,7 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
                 speck[p] = isSpeck(tiledValidations[p], options.remeshing.targetEdgeLength);
                 // A hole's piece and its shares are both negative.
                 const double own = targets.empty() ? scale : targets[p] / tiledValidations[p].volume;
-                volumeScales[p] = onePiece && !speck[p] ? scale : own > 0.0 ? followed(own) : 1.0;
+                volumeScales[p] = !(own > 0.0) ? 1.0 : speck[p] ? followed(own) : own;
                 if (speck[p])
                   pieces[p] = finishedSpeck(*tiledPieces[p], tiledValidations[p], options, volumeScales[p], threads);
                 else
