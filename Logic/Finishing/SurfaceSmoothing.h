@@ -15,7 +15,7 @@ struct SurfaceSmoothingOptions
 {
   /** Number of lambda/mu step pairs; 0 leaves the mesh as it is. Sharp features get the first
    *  featurePairs of them only. */
-  int iterations = 130;
+  int iterations = 200;
   /** Pairs the whole surface gets, within maxDisplacement. Then the sharp features are found (a
    *  vertex one of whose triangles turns from its normal by more than featureAngle, and the vertices
    *  within two rings of it) and held where they are, while the rest of the surface gets the other
