@@ -103,6 +103,9 @@ public:
   TaubinPairs(const std::vector<Point3>& start, const std::vector<std::size_t>& first,
               const std::vector<std::int32_t>& ids, const std::array<double, 3>& bound, bool bounded,
               std::vector<std::size_t> held);
+  // Its bounds refer to its own start points: not to be copied.
+  TaubinPairs(const TaubinPairs&) = delete;
+  TaubinPairs& operator=(const TaubinPairs&) = delete;
 
   void run(int pairs, double lambda, double mu, unsigned int threads);
   /** From now on the `features` (a flag per vertex) stay where they are, and the others move within
