@@ -21,7 +21,7 @@ overrides:
     options: {splitLabels: false, inputKind: Grayscale}
 CONF
 snapshots=""
-if [ -n "${DISPLAY:-}" ] || command -v xvfb-run >/dev/null; then snapshots=--snapshots; fi
+if [ -n "${DISPLAY:-}" ] || command -v Xvfb >/dev/null; then snapshots=--snapshots; fi
 smk() { snakemake -s "$workflow/Snakefile" --configfile study.yaml --cores 2 "$@"; }
 
 # Run 1: SliceMesh on sub-03 is held until snakemake is interrupted.

@@ -60,7 +60,7 @@ done
 smk >run1.log 2>&1 || { cat run1.log; fail "the run through Slurm failed"; }
 grep -Eq '^mesh +4( |$)' run1.log || { cat run1.log; fail "the run after the interruption did not mesh the 4 inputs"; }
 snapshots=""
-command -v xvfb-run >/dev/null && snapshots=--snapshots
+command -v Xvfb >/dev/null && snapshots=--snapshots
 python3 "$here/check_cohort.py" results bids/expected.json $snapshots || fail "the results are wrong (above)"
 jobs=$(python3 -c '
 import glob, json

@@ -23,17 +23,48 @@ def error_line(stderr):
     return (errors or lines or [""])[-1]
 
 
-def snapshot_wrapper(setting):
-    """(take a snapshot?, command prefix). Without a display, a private Xvfb per job: xvfb-run
-    -a alone races when several jobs start at once, so each starts its search at its own number."""
+def snapshot_display(setting):
+    """(take a snapshot?, start a private X server for it?). Without a display, a private Xvfb per
+    job (PrivateDisplay); with neither, `true` still asks, and SliceMesh then stops with exit code 6."""
     if setting is False or str(setting).lower() == "false":
-        return False, []
+        return False, False
     if os.environ.get("DISPLAY"):
-        return True, []
-    if shutil.which("xvfb-run"):
-        display = 100 + os.getpid() % 30000
-        return True, ["xvfb-run", "-a", "-n", str(display), "-s", "-screen 0 1024x768x24"]
-    return str(setting).lower() == "true", []  # true: SliceMesh then stops with exit code 6
+        return True, False
+    if shutil.which("Xvfb"):
+        return True, True
+    return str(setting).lower() == "true", False
+
+
+class PrivateDisplay:
+    """An Xvfb for one job, for as long as the job runs. Xvfb picks a free display number itself and
+    writes it to a pipe once it accepts clients (-displayfd), so jobs started together never race
+    for one, and no wrapper stands between the job and SliceMesh's exit code. The server listens
+    on its local socket only, with no authority file to write and clean up: no other machine can
+    reach it."""
+
+    def __enter__(self):
+        read, write = os.pipe()
+        try:
+            self.server = subprocess.Popen(
+                ["Xvfb", "-displayfd", str(write), "-screen", "0", "1024x768x24", "-nolisten", "tcp"],
+                pass_fds=(write,), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        finally:
+            os.close(write)
+        with os.fdopen(read, "rb") as pipe:
+            number = pipe.readline().strip().decode()  # empty if Xvfb ended without a display
+        if not number.isdigit():
+            self.__exit__(None, None, None)
+            raise OSError("Xvfb did not start a display")
+        self.display = ":" + number
+        return self
+
+    def __exit__(self, *unused):
+        self.server.terminate()
+        try:
+            self.server.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            self.server.kill()
+            self.server.wait()
 
 
 def remove_previous(paths):
@@ -68,17 +99,22 @@ def main(snakemake):
     command += ["--report", files["report"]]
     if files["labels"]:
         command += ["--outputDirectory", files["labels"]]
-    snapshot, prefix = snapshot_wrapper(config.get("snapshot", "auto"))
+    snapshot, private_display = snapshot_display(config.get("snapshot", "auto"))
     if snapshot:
         command += ["--snapshot", files["snapshot"]]
-    command = prefix + command + [entry["path"], files["model"]]
+    command = command + [entry["path"], files["model"]]
 
     began = time.monotonic()
     try:
-        run = subprocess.run(command, capture_output=True, text=True)
+        if private_display:
+            with PrivateDisplay() as display:
+                run = subprocess.run(command, capture_output=True, text=True,
+                                     env=dict(os.environ, DISPLAY=display.display))
+        else:
+            run = subprocess.run(command, capture_output=True, text=True)
         code, stdout, stderr = run.returncode, run.stdout, run.stderr
     except OSError as error:
-        code, stdout, stderr = 127, "", f"cannot run {command[0]}: {error.strerror}"
+        code, stdout, stderr = 127, "", f"cannot run {command[0]}: {error.strerror or error}"
     seconds = time.monotonic() - began
 
     with open(files["log"], "w") as log:
