@@ -1,5 +1,6 @@
 #include "Finishing/PackedTaubinSteps.h"
 
+#include "Core/BoundingBox.h"
 #include "Core/ParallelFor.h"
 
 #include <algorithm>
@@ -13,13 +14,10 @@ Point3 middleOf(const std::vector<Point3>& points)
 {
   if (points.empty())
     return {};
-  Point3 low = points.front(), high = points.front();
+  BoundingBox box;
   for (const Point3& p : points)
-  {
-    low = { std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z) };
-    high = { std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z) };
-  }
-  return { 0.5 * (low.x + high.x), 0.5 * (low.y + high.y), 0.5 * (low.z + high.z) };
+    box.add(p);
+  return { 0.5 * (box.low[0] + box.high[0]), 0.5 * (box.low[1] + box.high[1]), 0.5 * (box.low[2] + box.high[2]) };
 }
 
 Float4 inverseOf(const std::array<double, 3>& axes)

@@ -1,9 +1,8 @@
 #include "Finishing/SurfaceSmoothing.h"
 
-#include "Finishing/PackedTaubinSteps.h"
-
 #include "Core/AreaNormal.h"
 #include "Core/ParallelFor.h"
+#include "Finishing/PackedTaubinSteps.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/TriangleAngles.h"
 

@@ -35,6 +35,19 @@ double meanDistance(const Phantom& phantom, const TriangleMesh& mesh)
   return sum / mesh.points.size();
 }
 
+/** A mask of this size (voxels) and spacing (mm), every voxel 0. */
+MaskVolume::Pointer emptyMask(const std::array<std::size_t, 3>& size, const std::array<double, 3>& spacing)
+{
+  auto mask = MaskVolume::New();
+  MaskVolume::SizeType itkSize;
+  for (unsigned int axis = 0; axis < 3; ++axis)
+    itkSize[axis] = size[axis];
+  mask->SetRegions(itkSize);
+  mask->SetSpacing(spacing.data());
+  mask->Allocate(true);
+  return mask;
+}
+
 /** Flying edges' triangle count on this grid for a surface of this area (SurfaceRemeshing.h). */
 double flyingEdgesTriangles(double area, const std::array<double, 3>& s)
 {
@@ -280,12 +293,7 @@ TEST(SurfaceFinishingPhantom, EachPieceEnclosesItsOwnVoxels)
 {
   for (const std::array<double, 3>& spacing : { std::array<double, 3>{ 1.0, 1.0, 1.0 }, std::array<double, 3>{ 0.6, 0.8, 2.0 } })
   {
-    auto mask = MaskVolume::New();
-    MaskVolume::SizeType size;
-    size[0] = 40, size[1] = 34, size[2] = 16;
-    mask->SetRegions(size);
-    mask->SetSpacing(spacing.data());
-    mask->Allocate(true);
+    const MaskVolume::Pointer mask = emptyMask({ 40, 34, 16 }, spacing);
     auto set = [&](long i, long j, long k) { mask->SetPixel({ { i, j, k } }, 1); };
     for (long k = 2; k < 12; ++k)
       for (long j = 2; j < 12; ++j)
@@ -328,12 +336,7 @@ TEST(SurfaceFinishingPhantom, AThinPieceEnclosesItsVoxelsAloneAndBesideAnother)
   {
     auto plateVolume = [&](bool withBlock)
     {
-      auto mask = MaskVolume::New();
-      MaskVolume::SizeType size;
-      size[0] = 40, size[1] = 34, size[2] = 12;
-      mask->SetRegions(size);
-      mask->SetSpacing(spacing.data());
-      mask->Allocate(true);
+      const MaskVolume::Pointer mask = emptyMask({ 40, 34, 12 }, spacing);
       for (long j = 3; j < 6; ++j)
         for (long i = 3; i < 33; ++i)
           mask->SetPixel({ { i, j, 5 } }, 1); // 90 voxels in one slice
