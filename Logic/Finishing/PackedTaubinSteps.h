@@ -7,6 +7,7 @@
 #define PackedTaubinSteps_h
 
 #include "Core/SliceMeshTypes.h"
+#include "Finishing/EllipsoidClamp.h"
 
 #include <array>
 #include <cmath>
@@ -67,17 +68,20 @@ public:
 
   void holdFeatures(const std::vector<char>& held, const std::array<double, 3>& wide);
 
-  /** p, or if it has left its ellipsoid, the point where its displacement meets it. */
+  /** p, or if it has left its ellipsoid, the ellipsoid's point nearest to it. */
   Float4 clamped(const Float4& p, std::size_t v) const
   {
     if (!active)
       return p;
     const Float4 d = p - start[v];
-    const Float4 u = d * (held && !(*held)[v] ? wideInverse : inverse);
+    const Float4 axes = held && !(*held)[v] ? wideInverse : inverse;
+    const Float4 u = d * axes;
     const float reachSquared = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
     if (reachSquared <= 1.0f)
       return p;
-    return start[v] + d * (1.0f / std::sqrt(reachSquared));
+    const Float4 w = axes * axes;
+    const std::array<float, 3> f = nearestOnEllipsoidFactors<float>({ u[0], u[1], u[2] }, { w[0], w[1], w[2] });
+    return start[v] + d * Float4{ f[0], f[1], f[2], 0.0f };
   }
 
 private:

@@ -2,6 +2,7 @@
 
 #include "Core/AreaNormal.h"
 #include "Core/ParallelFor.h"
+#include "Finishing/EllipsoidClamp.h"
 #include "Finishing/PackedTaubinSteps.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/TriangleAngles.h"
@@ -138,7 +139,7 @@ public:
     wideInverse = inverseOf(wide);
   }
 
-  /** p, or if it has left the ellipsoid, the point where its displacement meets it. */
+  /** p, or if it has left the ellipsoid, the ellipsoid's point nearest to it. */
   Point3 clamped(const Point3& p, std::size_t v) const
   {
     if (!active)
@@ -151,8 +152,9 @@ public:
     const double reachSquared = ux * ux + uy * uy + uz * uz;
     if (reachSquared <= 1.0)
       return p;
-    const double f = 1.0 / std::sqrt(reachSquared);
-    return { s.x + f * dx, s.y + f * dy, s.z + f * dz };
+    const std::array<double, 3> f =
+      nearestOnEllipsoidFactors<double>({ ux, uy, uz }, { axes[0] * axes[0], axes[1] * axes[1], axes[2] * axes[2] });
+    return { s.x + f[0] * dx, s.y + f[1] * dy, s.z + f[2] * dz };
   }
 
 private:

@@ -36,7 +36,7 @@ struct SurfaceSmoothingOptions
   double passBand = 0.01;
   /** No vertex ends outside the ellipsoid of these semi-axes around where it started (mm, along the
    *  mesh's x, y and z: for a stack, the image's voxel axes; all 0: unbounded), checked after every
-   *  step pair. The staircase of a mask is a fraction of a voxel deep along each axis, so a bound of
+   *  step pair; a vertex that has left it goes to its nearest point (EllipsoidClamp.h). The staircase of a mask is a fraction of a voxel deep along each axis, so a bound of
    *  that fraction of each voxel side takes it out but keeps the filter from rounding a sharp edge
    *  over more than that. */
   std::array<double, 3> maxDisplacement{ 0.0, 0.0, 0.0 };

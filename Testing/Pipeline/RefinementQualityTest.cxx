@@ -66,11 +66,13 @@ void expectRefinedQuality(const char* name, const Phantom& phantom)
     // over vertices would weigh against the unrefined mesh's contour vertices alone. The finished
     // surface encloses the voxels' volume, which the tiling falls short of at edges and corners: on
     // a box the offset moves the flat faces out too, and the smoothing's bound of 0.3 of each voxel
-    // side lets its edges round over 0.9 mm across 3 mm slices (9% farther than the tiling at
-    // 0.8 x 0.8 x 3 mm, 6% before the smoothing held sharp features and went on elsewhere with the
+    // side lets its edges round over 0.9 mm across 3 mm slices (12.5% farther than the tiling at
+    // 0.8 x 0.8 x 3 mm since a move that leaves the bound goes to its nearest point, which keeps an
+    // edge vertex's move along the slices' long axis instead of shortening it with the move across
+    // them; 9% before, 6% before the smoothing held sharp features and went on elsewhere with the
     // wider bound, which brought the benchmark's boxes 3% closer on average; 3% with the bound of
     // the smallest side, which left curved shapes farther).
-    EXPECT_LE(on.surfaceDistance, off.surfaceDistance * 1.10);
+    EXPECT_LE(on.surfaceDistance, off.surfaceDistance * 1.15);
   }
 }
 
