@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -34,6 +35,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 using namespace slicemesh;
@@ -353,6 +355,16 @@ int main(int argc, char* argv[])
         }
         placements = static_cast<int>(n);
       }
+    }
+    // Made before the meshing, so that a folder that cannot be made stops the run at once instead of
+    // failing the first missed case's write minutes in.
+    std::error_code made;
+    if (!missedFolder.empty() && !std::filesystem::is_directory(missedFolder, made) &&
+        !std::filesystem::create_directories(missedFolder, made))
+    {
+      std::fprintf(stderr, "SliceMeshBenchmark: cannot make the folder %s for --missed: %s\n", missedFolder.c_str(),
+                   made.message().c_str());
+      return 2;
     }
     std::printf("%s", targetsTable(grids, placements, missedFolder).c_str());
     return 0;
