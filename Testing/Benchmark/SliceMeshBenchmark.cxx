@@ -274,8 +274,22 @@ std::string machine()
 }
 
 /** Documentation/Benchmark.md: what is compared, how, the command, the machine, the tables. */
+/** The hand-written notes on the targets kept from the document as it was (empty if it has none):
+ *  the text from the opening marker to the closing one, both included. */
+constexpr const char* targetNotesBegin = "<!-- targets notes: kept by SliceMeshBenchmark -->";
+constexpr const char* targetNotesEnd = "<!-- /targets notes -->";
+
+std::string targetNotes(const std::string& previous)
+{
+  const std::size_t begin = previous.find(targetNotesBegin);
+  const std::size_t end = previous.find(targetNotesEnd, begin == std::string::npos ? 0 : begin);
+  if (begin == std::string::npos || end == std::string::npos)
+    return {};
+  return previous.substr(begin, end + std::string(targetNotesEnd).size() - begin) + "\n";
+}
+
 std::string benchmarkDocument(const std::string& table, const std::string& ratios, const std::string& targets,
-                              const std::string& sections)
+                              const std::string& notes, const std::string& sections)
 {
   const std::time_t now = std::time(nullptr);
   char date[32];
@@ -303,7 +317,7 @@ std::string benchmarkDocument(const std::string& table, const std::string& ratio
          "Slicer's. `SliceMeshBenchmark --targets` prints this table alone, and `--targets --grids\n"
          "0.6x0.6x1,1.2x1.2x2.5` the same for other grids (mm, x by y by slice); `--placements 8` puts each\n"
          "phantom at 8 places on each grid, fractions of a voxel apart, and prints the means over them.\n\n" +
-         targets +
+         targets + (notes.empty() ? "" : "\n" + notes) +
          "\nIntermediate sections (variational implicit function) on two circles 12 mm apart, sections until the\n"
          "slab is no thicker than twice the point spacing: the fit uses at most 600 centres, so its time does\n"
          "not grow with the contours.\n\n" +
@@ -443,18 +457,21 @@ int main(int argc, char* argv[])
     sections += line;
   }
 
-  const std::string document = benchmarkDocument(table, ratios, targetsTable(targetGrids()), sections);
-  std::printf("%s", document.c_str());
   const std::string path = argc > 1 ? argv[1] : SLICEMESH_SOURCE_DIR "/Documentation/Benchmark.md";
-  // The scaling section (Utilities/scaling-benchmark.sh's) and what follows it (the profile) are kept.
-  std::string scaling;
+  // Kept from the document as it was: the notes on the targets (between their markers), and the
+  // scaling section (Utilities/scaling-benchmark.sh's) with what follows it (the profile).
+  std::string previous;
   {
     std::ifstream in(path);
-    const std::string previous((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const std::size_t begin = previous.find("<!-- scaling");
-    if (begin != std::string::npos)
-      scaling = "\n" + previous.substr(begin);
+    previous.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   }
+  std::string scaling;
+  const std::size_t scalingBegin = previous.find("<!-- scaling");
+  if (scalingBegin != std::string::npos)
+    scaling = "\n" + previous.substr(scalingBegin);
+  const std::string document =
+    benchmarkDocument(table, ratios, targetsTable(targetGrids()), targetNotes(previous), sections);
+  std::printf("%s", document.c_str());
   std::ofstream out(path);
   out << document << scaling;
   if (!out)
