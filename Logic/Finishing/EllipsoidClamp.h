@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace slicemesh
 {
@@ -26,7 +27,15 @@ namespace slicemesh
 template <typename Real>
 std::array<Real, 3> nearestOnEllipsoidFactors(const std::array<Real, 3>& u, const std::array<Real, 3>& w)
 {
+  if (w[0] == w[1] && w[1] == w[2]) // a sphere: the nearest point is on the ray, found without steps
+  {
+    const Real onto = Real(1) / std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    return { onto, onto, onto };
+  }
+  // Steps stop once the point is within a few roundings of the ellipsoid (the scaling below puts it
+  // on); from a move one or two bounds long, three or four steps get there.
   constexpr int newtonSteps = 6;
+  const Real closeEnough = Real(16) * std::numeric_limits<Real>::epsilon();
   Real t = 0;
   std::array<Real, 3> f{ 1, 1, 1 };
   for (int step = 0; step < newtonSteps; ++step)
@@ -39,7 +48,7 @@ std::array<Real, 3> nearestOnEllipsoidFactors(const std::array<Real, 3>& u, cons
       g += reach * reach;
       slope -= Real(2) * reach * reach * w[i] * f[i];
     }
-    if (!(g > Real(0)) || !(slope < Real(0)))
+    if (!(g > closeEnough) || !(slope < Real(0)))
       break;
     t -= g / slope;
   }
