@@ -158,6 +158,7 @@ RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshVal
     combined.unsmoothedVertices += q.unsmoothedVertices;
     combined.trianglesKeptTiled += q.trianglesKeptTiled;
     combined.crossingRepairOperations += q.crossingRepairOperations;
+    combined.narrowTrianglesWidened += q.narrowTrianglesWidened;
     if (!q.fallback.empty())
       combined.fallback += (combined.fallback.empty() ? "label " : "; label ") + std::to_string(label.label) + " (" +
                            label.name + "): " + q.fallback;
@@ -252,6 +253,7 @@ void writeMeshBlocks(std::ostream& json, const std::string& indent, const MeshVa
   number("verticesLeftUnsmoothed", static_cast<double>(q.unsmoothedVertices));
   number("trianglesKeptTiledAtCrossings", static_cast<double>(q.trianglesKeptTiled));
   number("crossingRepairOperations", static_cast<double>(q.crossingRepairOperations));
+  number("narrowTrianglesWidened", static_cast<double>(q.narrowTrianglesWidened));
   json << indent << "  \"fallback\": " << (q.fallback.empty() ? "null" : jsonString(q.fallback)) << "\n";
   json << indent << "},\n";
   json << indent << "\"resolvedOptions\": {\n";

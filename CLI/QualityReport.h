@@ -51,6 +51,9 @@ struct RunQuality
   /** Flips, collapses and vertex moves that undid a remesh's few crossings without a second remesh
    *  (FinishedSurface::crossingRepairOperations). */
   std::size_t crossingRepairOperations = 0;
+  /** Flips and collapses that took narrow triangles away from finished pieces
+   *  (FinishedSurface::narrowTrianglesWidened). */
+  std::size_t narrowTrianglesWidened = 0;
   /** Connected pieces remeshed, smoothed only and left as tiled (FinishedSurface::piecesByFinish,
    *  indexed by SurfaceFinish); summed over labels. */
   std::array<std::size_t, 3> piecesByFinish{};

@@ -138,6 +138,7 @@ RunQuality runQualityOf(const MeshedContours& m)
   quality.unsmoothedVertices = m.surface.unsmoothedVertices;
   quality.trianglesKeptTiled = m.surface.trianglesKeptTiled;
   quality.crossingRepairOperations = m.surface.crossingRepairOperations;
+  quality.narrowTrianglesWidened = m.surface.narrowTrianglesWidened;
   quality.piecesByFinish = m.surface.piecesByFinish;
   if (finishing.finish == SurfaceFinish::Remeshed)
     quality.targetEdgeLength = finishing.remeshing.targetEdgeLength;

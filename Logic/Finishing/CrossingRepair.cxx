@@ -2,6 +2,7 @@
 
 #include "Core/AreaNormal.h"
 #include "Core/BoundingBox.h"
+#include "Core/SpatialHash.h"
 #include "Measures/SelfIntersections.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -24,8 +25,6 @@ using TrianglePairs = std::set<std::pair<std::size_t, std::size_t>>;
  *  remesh fold took about 650; two solids through each other, whose hundreds of crossings no
  *  operation parts, took millions (a minute) without a bound. */
 constexpr std::size_t twoStepJudgements = 16384;
-/** Narrower than this, a triangle left beside a repaired fold is widened if an operation can. */
-constexpr double narrowAngleDegrees = 20.0;
 
 /** One flip, collapse or vertex move: the triangles it removes and those it rewrites (slot, new corners). */
 struct Operation
@@ -83,7 +82,7 @@ public:
   LocalRepair(TriangleMesh& mesh, const std::vector<std::pair<std::size_t, std::size_t>>& crossings,
               const std::vector<char>& movable, double edgeLength)
     : m_Mesh(mesh), m_Movable(movable), m_Edge(edgeLength), m_FirstNew(mesh.points.size()), m_Alive(mesh.triangles.size(), 1),
-      m_Crossings(crossings.begin(), crossings.end())
+      m_Crossings(crossings.begin(), crossings.end()), m_Cells(2.0 * edgeLength)
   {
     // Two rings past the movable vertices: every triangle an operation there rewrites, and the
     // triangles around it that it could come to cross, have a corner in them.
@@ -112,7 +111,10 @@ public:
           inScope = true;
         }
       if (inScope)
+      {
         m_Scope.push_back(t);
+        index(t);
+      }
     }
   }
 
@@ -270,9 +272,9 @@ public:
     return true;
   }
 
-  /** Each triangle of movable corners narrower than narrowAngleDegrees flipped or collapsed away
-   *  where that widens the narrowest angle it touches and makes no crossing; two sweeps. */
-  void widenNarrowTriangles(CrossingRepair& done)
+  /** Each triangle of movable corners with an angle under narrowAngleDegrees flipped or collapsed
+   *  away where that widens the narrowest angle it touches and makes no crossing; two sweeps. */
+  void widenNarrowTriangles(CrossingRepair& done, double narrowAngleDegrees)
   {
     const double narrowCosine = std::cos(narrowAngleDegrees * M_PI / 180.0);
     for (int sweep = 0; sweep < 2; ++sweep)
@@ -553,7 +555,7 @@ private:
     for (std::size_t i = 0; i < operation.rewritten.size(); ++i)
     {
       const auto& [slot, corners] = operation.rewritten[i];
-      for (std::size_t other : m_Scope)
+      for (std::size_t other : trianglesNear(boxes[i]))
         if (m_Alive[other] && !changed(other) && boxes[i].overlaps(boxOf(points, m_Mesh.triangles[other])) &&
             trianglesCross(points, corners, m_Mesh.triangles[other]))
           outcome.added.emplace_back(std::minmax(slot, other));
@@ -592,6 +594,7 @@ private:
       leave(slot);
       changedPair(slot);
       m_Mesh.triangles[slot] = corners;
+      index(slot);
       for (std::int32_t v : corners)
       {
         const auto found = m_Fan.find(v);
@@ -604,6 +607,29 @@ private:
     m_Crossings.insert(outcome.added.begin(), outcome.added.end());
   }
 
+  /** A box's extent in x and y: the cells are those of the plane. */
+  static Box2 planeBox(const BoundingBox& box) { return { box.low[0], box.low[1], box.high[0], box.high[1] }; }
+
+  /** Files triangle t under the cells of its box as it is now. A triangle's earlier places stay
+   *  filed (an undo may give it its earlier corners back): a query checks the box it has. */
+  void index(std::size_t t)
+  {
+    const BoundingBox box = boxOf(m_Mesh.points, m_Mesh.triangles[t]);
+    m_Cells.insert(m_Cells.cellsOf(planeBox(box)), static_cast<int>(t));
+  }
+
+  /** The triangles of the scope (and those operations rewrote) filed under the cells of this box,
+   *  each once, in increasing order: a candidate's own box is still to be checked. */
+  std::vector<std::size_t> trianglesNear(const BoundingBox& box) const
+  {
+    std::vector<std::size_t> near;
+    m_Cells.forEachIn(m_Cells.cellsOf(planeBox(box)),
+                      [&](int t) { near.push_back(static_cast<std::size_t>(t)); });
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    return near;
+  }
+
   TriangleMesh& m_Mesh;
   std::vector<char> m_Movable; ///< grows with the points moves add
   std::size_t m_FirstNew;       ///< the first point a move added
@@ -613,6 +639,11 @@ private:
   TrianglePairs m_Crossings;
   std::unordered_map<std::int32_t, std::vector<std::size_t>> m_Fan;
   std::vector<std::size_t> m_Scope;
+  /** The scope's triangles by where they are (index), in cells of two target edges, so that an
+   *  operation is judged against the triangles near it only, not against the whole scope: a scope of
+   *  every triangle of a piece (widenNarrowTrianglesLocally on a whole piece) made the judging
+   *  quadratic. */
+  SpatialHash m_Cells;
   std::size_t m_TwoStepBudget = twoStepJudgements;
 };
 
@@ -628,11 +659,12 @@ CrossingRepair repairCrossingsLocally(TriangleMesh& mesh, const std::vector<std:
   return done;
 }
 
-CrossingRepair widenNarrowTrianglesLocally(TriangleMesh& mesh, const std::vector<char>& movable, double edgeLength)
+CrossingRepair widenNarrowTrianglesLocally(TriangleMesh& mesh, const std::vector<char>& movable, double edgeLength,
+                                           double narrowAngleDegrees)
 {
   CrossingRepair done;
   LocalRepair repair(mesh, {}, movable, edgeLength);
-  repair.widenNarrowTriangles(done);
+  repair.widenNarrowTriangles(done, narrowAngleDegrees);
   repair.compact(done);
   return done;
 }

@@ -49,12 +49,13 @@ struct CrossingRepair
 CrossingRepair repairCrossingsLocally(TriangleMesh& mesh, const std::vector<std::pair<std::size_t, std::size_t>>& crossings,
                                       const std::vector<char>& movable, double edgeLength);
 
-/** After a repair, where the points have taken their last places: each triangle of `movable`
- *  corners with an angle under 20 degrees (a remesh sliver beside a repaired fold) flipped or
- *  collapsed away where that widens the narrowest angle among the triangles it changes and makes no
- *  crossing with the triangles around, under the bounds of repairCrossingsLocally. The caller
- *  validates the whole mesh after. */
-CrossingRepair widenNarrowTrianglesLocally(TriangleMesh& mesh, const std::vector<char>& movable, double edgeLength);
+/** Each triangle of `movable` corners with an angle under `narrowAngleDegrees` (a remesh sliver
+ *  beside a repaired fold; a finished piece's narrow triangles) flipped or collapsed away where that
+ *  widens the narrowest angle among the triangles it changes and makes no crossing with the
+ *  triangles around, under the bounds of repairCrossingsLocally; two sweeps. The caller validates
+ *  the mesh after (the triangles that changed against the rest suffice). */
+CrossingRepair widenNarrowTrianglesLocally(TriangleMesh& mesh, const std::vector<char>& movable, double edgeLength,
+                                           double narrowAngleDegrees);
 
 } // namespace slicemesh
 

@@ -18,6 +18,10 @@ namespace
  *  natbrainlab's pieces at most 48), not sheets that pass through each other all along a gap. */
 constexpr std::size_t mostCrossingsRepairedLocally = 64;
 
+/** Narrower than this (degrees), a triangle left beside a repaired fold is widened if an operation
+ *  can; the whole piece's narrow triangles are widened later (widenedNarrowTriangles). */
+constexpr double besideRepairNarrowAngle = 20.0;
+
 /** How many vertices are where `unsmoothed` has them. */
 std::size_t verticesAt(const std::vector<Point3>& points, const std::vector<Point3>& unsmoothed)
 {
@@ -131,7 +135,8 @@ std::size_t repairedLocally(TriangleMesh& mesh, MeshValidation& validation,
   unsmoothedVertices = verticesLeftUnsmoothed(mesh.points, smoothed, unsmoothed);
   TriangleMesh widened = mesh;
   std::vector<char> widenable = repairableVertices(widened, places, heldNow, options);
-  const CrossingRepair widening = widenNarrowTrianglesLocally(widened, widenable, options.remeshing.targetEdgeLength);
+  const CrossingRepair widening =
+    widenNarrowTrianglesLocally(widened, widenable, options.remeshing.targetEdgeLength, besideRepairNarrowAngle);
   if (widening.operations() == 0)
     return repair.operations();
   // The piece crossed nothing before: as above, the triangles the widening changed against the rest.

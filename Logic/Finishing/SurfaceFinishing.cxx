@@ -4,6 +4,7 @@
 #include "Finishing/CrossingPlaces.h"
 #include "Finishing/FinishedPieceRepair.h"
 #include "Finishing/HeldContourEdges.h"
+#include "Finishing/NarrowTriangleWidening.h"
 #include "Finishing/PieceRejection.h"
 #include "Finishing/PieceTargetVolumes.h"
 #include "Finishing/PutBackVertices.h"
@@ -147,6 +148,7 @@ struct FinishedPiece
    *  crossing pair (none in a valid piece). */
   std::vector<Point3> crossedAt;
   std::size_t crossingRepairOperations = 0; ///< of the repair that undid its crossings (repairedLocally)
+  std::size_t narrowTrianglesWidened = 0;   ///< operations that widened its narrow triangles at the end
 };
 
 /** The validation of a piece of the tiling as it was tiled, without its self-intersection test:
@@ -239,9 +241,21 @@ FinishedPiece smoothedRemesh(TriangleMesh remeshed, const SurfaceFinishingOption
   }
   if (unsmoothedVertices > 0 && validation.selfIntersections == 0)
     relaxBesidePutBack(remeshed, unsmoothed, validation, options);
+  // Last, on the valid piece: its narrow triangles where a structure is as thin as an edge. The
+  // vertices on drawn contours and those left as tiled beside another piece stay. (The per-vertex
+  // arrays above are not used past here: the widening renumbers the vertices.)
+  std::vector<char> fixed = held;
+  if (!leftAsTiled.empty())
+  {
+    fixed.resize(remeshed.points.size(), 0);
+    for (std::size_t v = 0; v < leftAsTiled.size(); ++v)
+      fixed[v] = fixed[v] || leftAsTiled[v];
+  }
+  const std::size_t widenings = widenNarrowTriangles(remeshed, validation, fixed, options.remeshing.targetEdgeLength);
   FinishedPiece piece{ std::move(remeshed), SurfaceFinish::Remeshed, {}, unsmoothedVertices, validation, 0, {},
                        std::move(crossedAt) };
   piece.crossingRepairOperations = repairs;
+  piece.narrowTrianglesWidened = widenings;
   return piece;
 }
 
@@ -646,6 +660,7 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
     result.unsmoothedVertices += piece.unsmoothedVertices;
     result.trianglesKeptTiled += piece.trianglesKeptTiled;
     result.crossingRepairOperations += piece.crossingRepairOperations;
+    result.narrowTrianglesWidened += piece.narrowTrianglesWidened;
     if (speck[p])
     {
       // A speck left as tiled counts as finished as asked.

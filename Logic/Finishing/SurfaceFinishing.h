@@ -63,6 +63,9 @@ struct FinishedSurface
    *  remesh crossed itself (a fold where two voxels touch along an edge, a chord through a gap a
    *  voxel wide) without remeshing the piece again, with those that then widened slivers there. */
   std::size_t crossingRepairOperations = 0;
+  /** Edge flips and collapses that took away triangles with an angle under 30 degrees from valid
+   *  finished pieces (NarrowTriangleWidening.h), where a structure is about as thin as an edge. */
+  std::size_t narrowTrianglesWidened = 0;
   /** How many connected pieces got each finish, indexed by SurfaceFinish (specks left as tiled count
    *  under Tiled). All zero when the tiling was not split (an invalid tiling, or Tiled asked). */
   std::array<std::size_t, 3> piecesByFinish{};

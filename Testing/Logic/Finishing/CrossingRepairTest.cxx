@@ -1,9 +1,11 @@
 // The local repair of a surface's crossings, on closed surfaces whose answer is known: a fold made
 // on a flat face, which a collapse, or a move of its vertex, undoes without moving the face; and two
 // boxes through each other, which no flip, collapse or move parts. And on a real remesh's fold that
-// takes two operations in a row.
+// takes two operations in a row. And the widening of a finished piece's narrow triangles, made of
+// the same operations.
 #include "Finishing/CrossingPlaces.h"
 #include "Finishing/CrossingRepair.h"
+#include "Finishing/NarrowTriangleWidening.h"
 #include "Measures/MeshValidation.h"
 #include "Measures/SelfIntersections.h"
 
@@ -290,4 +292,48 @@ TEST(CrossingRepair, ARemeshFoldThatNoSingleOperationImprovesIsUndoneInTwo)
   }
   EXPECT_LE(std::abs(signedVolume(patch) - volumeBefore),
             static_cast<double>(repair.operations()) * 0.125 * edge * edge * edge);
+}
+
+// A finished piece's narrow triangles widened where they are (NarrowTriangleWidening): on a box whose
+// face has one vertex pushed most of the way to its neighbour, the needles and caps around it are
+// flipped or collapsed away; no point moves, so the face stays flat; vertices held fixed stay.
+TEST(NarrowTriangleWidening, TheNeedlesAroundAPushedVertexAreTakenAwayAndTheFaceStaysFlat)
+{
+  TriangleMesh box = gridBox(4);
+  const std::int32_t pushed = vertexAt(box, { 2.0, 2.0, 0.0 });
+  ASSERT_GE(pushed, 0);
+  box.points[static_cast<std::size_t>(pushed)] = { 2.8, 2.05, 0.0 };
+  MeshValidation before = validateMesh(box);
+  ASSERT_TRUE(before.valid()) << before.summary();
+  ASSERT_GT(before.fractionAnglesBelow30, 0.0);
+
+  // Every vertex fixed: nothing to do.
+  TriangleMesh held = box;
+  MeshValidation heldValidation = before;
+  EXPECT_EQ(widenNarrowTriangles(held, heldValidation, std::vector<char>(box.points.size(), 1), 1.0), 0u);
+  EXPECT_EQ(held.triangles, box.triangles);
+
+  TriangleMesh widened = box;
+  MeshValidation after = before;
+  const std::size_t operations = widenNarrowTriangles(widened, after, {}, 1.0);
+  std::printf("%zu operations; under 30 degrees %.1f%% -> %.1f%% of the triangles\n", operations,
+              100.0 * before.fractionAnglesBelow30, 100.0 * after.fractionAnglesBelow30);
+  EXPECT_GT(operations, 0u);
+  EXPECT_TRUE(after.valid()) << after.summary();
+  EXPECT_EQ(after.components, before.components);
+  EXPECT_EQ(after.eulerCharacteristic, before.eulerCharacteristic);
+  EXPECT_LT(after.fractionAnglesBelow30, 0.5 * before.fractionAnglesBelow30);
+  // The validation handed back is the mesh's own.
+  const MeshValidation again = validateMesh(widened);
+  EXPECT_EQ(again.fractionAnglesBelow30, after.fractionAnglesBelow30);
+  EXPECT_EQ(again.selfIntersections, 0u);
+  // Collapses and flips move no point: every vertex is one of the box's, the pushed one included.
+  for (const Point3& p : widened.points)
+    EXPECT_NE(vertexAt(box, p), -1);
+  EXPECT_NEAR(after.volume, before.volume, 1e-9);
+
+  // Without narrow triangles, nothing is done.
+  TriangleMesh plain = gridBox(4);
+  MeshValidation plainValidation = validateMesh(plain);
+  EXPECT_EQ(widenNarrowTriangles(plain, plainValidation, {}, 1.0), 0u);
 }
