@@ -54,6 +54,8 @@ std::vector<char> widenableVertices(const TriangleMesh& mesh, const std::vector<
         narrowCorner[static_cast<std::size_t>(t[2])])
       for (std::int32_t v : t)
         widenable[static_cast<std::size_t>(v)] = 1;
+  if (!fixed.empty() && fixed.size() != mesh.points.size())
+    throw Error("narrow triangle widening: the fixed vertices' flags do not match the mesh");
   for (std::size_t v = 0; v < fixed.size(); ++v)
     widenable[v] = widenable[v] && !fixed[v];
   return widenable;

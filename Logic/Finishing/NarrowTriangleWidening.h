@@ -17,11 +17,11 @@ namespace slicemesh
 
 /** The triangles of a valid finished piece with an angle under 30 degrees flipped or collapsed away
  *  where that widens the narrowest angle among the triangles an operation changes and crosses nothing
- *  around (widenNarrowTrianglesLocally); the vertices flagged in `fixed` (a flag per vertex, or
- *  empty: none) stay as they are. The result replaces the piece only if it is then a valid surface of
- *  the same topology, the triangles that changed tested against the rest; `validation` is the
- *  piece's, before and after. `edgeLength`: the remesh's target (mm), which bounds the operations.
- *  Returns the operations made (0: the piece as it was). */
+ *  around (widenNarrowTrianglesLocally); the vertices flagged in `fixed` (a flag per vertex of the
+ *  mesh as it is, or empty: none; another size throws) stay as they are. The result replaces the
+ *  piece only if it is then a valid surface of the same topology, the triangles that changed tested
+ *  against the rest; `validation` is the piece's, before and after. `edgeLength`: the remesh's
+ *  target (mm), which bounds the operations. Returns the operations made (0: the piece as it was). */
 std::size_t widenNarrowTriangles(TriangleMesh& mesh, MeshValidation& validation, const std::vector<char>& fixed,
                                  double edgeLength);
 

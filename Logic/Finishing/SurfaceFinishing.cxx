@@ -242,14 +242,16 @@ FinishedPiece smoothedRemesh(TriangleMesh remeshed, const SurfaceFinishingOption
   if (unsmoothedVertices > 0 && validation.selfIntersections == 0)
     relaxBesidePutBack(remeshed, unsmoothed, validation, options);
   // Last, on the valid piece: its narrow triangles where a structure is as thin as an edge. The
-  // vertices on drawn contours and those left as tiled beside another piece stay. (The per-vertex
-  // arrays above are not used past here: the widening renumbers the vertices.)
-  std::vector<char> fixed = held;
-  if (!leftAsTiled.empty())
+  // vertices on drawn contours and those left as tiled beside another piece stay, found again on the
+  // piece as it is now: a local repair above renumbers its vertices (and the widening does too, so
+  // no per-vertex array above is used past here).
+  std::vector<char> fixed = heldVertices(remeshed, options);
+  if (!crossedOthers.empty())
   {
+    const std::vector<char> asTiled = verticesNear(remeshed, crossedOthers, keptRadius(options));
     fixed.resize(remeshed.points.size(), 0);
-    for (std::size_t v = 0; v < leftAsTiled.size(); ++v)
-      fixed[v] = fixed[v] || leftAsTiled[v];
+    for (std::size_t v = 0; v < fixed.size(); ++v)
+      fixed[v] = fixed[v] || asTiled[v];
   }
   const std::size_t widenings = widenNarrowTriangles(remeshed, validation, fixed, options.remeshing.targetEdgeLength);
   FinishedPiece piece{ std::move(remeshed), SurfaceFinish::Remeshed, {}, unsmoothedVertices, validation, 0, {},
