@@ -6,6 +6,7 @@
 #include "Core/SliceMeshTypes.h"
 
 #include <cstdint>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -56,6 +57,23 @@ CrossingRepair repairCrossingsLocally(TriangleMesh& mesh, const std::vector<std:
  *  the mesh after (the triangles that changed against the rest suffice). */
 CrossingRepair widenNarrowTrianglesLocally(TriangleMesh& mesh, const std::vector<char>& movable, double edgeLength,
                                            double narrowAngleDegrees);
+
+/** `perVertex` (arrays of one value per vertex; an empty one stays empty) renumbered as `repair`
+ *  renumbered the vertices (CrossingRepair::formerVertex). */
+template <typename... Arrays>
+void renumber(const CrossingRepair& repair, Arrays&... perVertex)
+{
+  const auto one = [&](auto& values)
+  {
+    if (values.empty()) // held flags, without drawn contours
+      return;
+    std::remove_reference_t<decltype(values)> renumbered(repair.formerVertex.size());
+    for (std::size_t v = 0; v < renumbered.size(); ++v)
+      renumbered[v] = values[static_cast<std::size_t>(repair.formerVertex[v])];
+    values.swap(renumbered);
+  };
+  (one(perVertex), ...);
+}
 
 } // namespace slicemesh
 

@@ -6,7 +6,6 @@
 #include "Finishing/PutBackVertices.h"
 
 #include <algorithm>
-#include <type_traits>
 
 namespace slicemesh
 {
@@ -71,22 +70,6 @@ std::vector<char> repairableVertices(const TriangleMesh& mesh, const std::vector
     for (std::size_t v = 0; v < movable.size(); ++v)
       movable[v] = movable[v] && !held[v];
   return movable;
-}
-
-/** `perVertex` (arrays of one value per vertex) renumbered as a repair renumbered the vertices. */
-template <typename... Arrays>
-void renumber(const CrossingRepair& repair, Arrays&... perVertex)
-{
-  const auto one = [&](auto& values)
-  {
-    if (values.empty()) // held flags, without drawn contours
-      return;
-    std::remove_reference_t<decltype(values)> renumbered(repair.formerVertex.size());
-    for (std::size_t v = 0; v < renumbered.size(); ++v)
-      renumbered[v] = values[static_cast<std::size_t>(repair.formerVertex[v])];
-    values.swap(renumbered);
-  };
-  (one(perVertex), ...);
 }
 
 } // namespace

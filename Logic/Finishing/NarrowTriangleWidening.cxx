@@ -2,12 +2,9 @@
 
 #include "Finishing/CrossingRepair.h"
 #include "Finishing/PieceRejection.h"
-#include "Finishing/PutBackVertices.h"
 #include "Measures/TriangleAngles.h"
 
-#include <algorithm>
 #include <cmath>
-#include <set>
 
 namespace slicemesh
 {
@@ -16,14 +13,6 @@ namespace
 
 /** The smallest angle the widening aims at (degrees): the quality measure's threshold. */
 constexpr double narrowAngle = 30.0;
-
-/** A triangle's corners turned to start at the smallest: the same triangle, facing the same way,
- *  whatever corner it was written from. */
-Triangle canonical(Triangle t)
-{
-  std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-  return t;
-}
 
 /** The vertices the widening may change: the corners of the triangles under narrowAngle and of the
  *  triangles around them (a flip of a narrow triangle's edge rewrites its neighbour too), except the
@@ -61,41 +50,6 @@ std::vector<char> widenableVertices(const TriangleMesh& mesh, const std::vector<
   return widenable;
 }
 
-/** The vertices of `widened` (numbered as the repair left them) on triangles that `before` did not
- *  have, by their corners' former numbers and points: those of the flipped and collapsed edges, the
- *  only ones whose triangles can cross anything they did not cross before. Every triangle an
- *  operation makes has a `widenable` corner (the ends of a flipped or collapsed edge), so only
- *  those are looked up. */
-std::vector<char> verticesOfNewTriangles(const TriangleMesh& before, const TriangleMesh& widened,
-                                         const CrossingRepair& widening, const std::vector<char>& widenable)
-{
-  const auto touches = [&](const Triangle& t)
-  {
-    return widenable[static_cast<std::size_t>(t[0])] || widenable[static_cast<std::size_t>(t[1])] ||
-           widenable[static_cast<std::size_t>(t[2])];
-  };
-  std::set<Triangle> had;
-  for (const Triangle& t : before.triangles)
-    if (touches(t))
-      had.insert(canonical(t));
-  std::vector<char> changed(widened.points.size(), 0);
-  for (const Triangle& t : widened.triangles)
-  {
-    Triangle former{};
-    bool moved = false;
-    for (int i = 0; i < 3; ++i)
-    {
-      const auto v = static_cast<std::size_t>(t[i]);
-      former[i] = widening.formerVertex[v];
-      moved = moved || !samePoint(widened.points[v], before.points[static_cast<std::size_t>(former[i])]);
-    }
-    if (moved || (touches(former) && !had.count(canonical(former))))
-      for (std::int32_t v : t)
-        changed[static_cast<std::size_t>(v)] = 1;
-  }
-  return changed;
-}
-
 } // namespace
 
 std::size_t widenNarrowTriangles(TriangleMesh& mesh, MeshValidation& validation, const std::vector<char>& fixed,
@@ -110,9 +64,13 @@ std::size_t widenNarrowTriangles(TriangleMesh& mesh, MeshValidation& validation,
   const CrossingRepair widening = widenNarrowTrianglesLocally(widened, widenable, edgeLength, narrowAngle);
   if (widening.operations() == 0)
     return 0;
-  std::vector<std::pair<std::size_t, std::size_t>> crossings; // the piece crossed nothing before
-  const MeshValidation after = validateMeshAfterMoving(widened, validation.selfIntersectionChecked,
-                                                       verticesOfNewTriangles(mesh, widened, widening, widenable), crossings);
+  // Every triangle the widening made has a widenable corner (an end of the flipped or collapsed
+  // edge), and the piece crossed nothing before: those triangles against the rest are the whole
+  // test's answer.
+  std::vector<char> moved = widenable;
+  renumber(widening, moved);
+  std::vector<std::pair<std::size_t, std::size_t>> crossings;
+  const MeshValidation after = validateMeshAfterMoving(widened, validation.selfIntersectionChecked, moved, crossings);
   if (!rejection(after, validation).empty())
     return 0;
   mesh = std::move(widened);
