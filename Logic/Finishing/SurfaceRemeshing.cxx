@@ -5,7 +5,7 @@
 #include "Finishing/HeldContourEdges.h"
 #include "Finishing/RemeshingPasses.h"
 #include "Finishing/RemeshingRegions.h"
-#include "Measures/TriangleMeshTree.h"
+#include "Measures/ClosestPointGrid.h"
 #include "Measures/TriangleAngles.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/SurfaceMeshConversion.h"
@@ -32,7 +32,7 @@ namespace
 using Kernel = CgalKernel;
 using SurfaceMesh = CgalSurfaceMesh;
 using Vertex = SurfaceMesh::Vertex_index;
-using Tree = TriangleMeshTree;
+using InputGrid = ClosestPointGrid;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 SurfaceMesh surfaceOf(const TriangleMesh& mesh)
@@ -248,15 +248,14 @@ bool known(const Kernel::Point_3& p)
   return !std::isnan(p.x());
 }
 
-/** Moves every vertex but the border's to its closest point on the input piece (`tree`), and records
+/** Moves every vertex but the border's to its closest point on the input piece (`grid`), and records
  *  it in `onInput`. The search starts from the vertex's last point on the input, or for a vertex a
- *  split made, a neighbour's: the relaxation moved it a fraction of an edge from there, so the tree
- *  is searched only within that distance. (Without a hint CGAL first looks for one in a k-d tree of
- *  all triangles, which took most of the projection's time.) A vertex with no hint at all (none in
- *  its connected piece has one, which the remesh does not make) is still projected right, only slowly.
+ *  split made, a neighbour's: the relaxation moved it a fraction of an edge from there, so the grid
+ *  is searched only within that distance. A vertex with no hint at all (none in its connected piece
+ *  has one, which the remesh does not make) is still projected right, only slowly.
  *  With `only` (a flag per vertex index), only the vertices flagged are projected. */
 template <typename PointMap>
-void projectOntoInput(SurfaceMesh& surface, PointMap onInput, const Tree& tree, unsigned int threads,
+void projectOntoInput(SurfaceMesh& surface, PointMap onInput, const InputGrid& grid, unsigned int threads,
                       const std::vector<char>* only = nullptr)
 {
   const std::size_t vertexCount = surface.number_of_vertices();
@@ -291,7 +290,7 @@ void projectOntoInput(SurfaceMesh& surface, PointMap onInput, const Tree& tree, 
                         if (surface.is_border(v) || (only && !(*only)[index]))
                           continue;
                         const Kernel::Point_3& p = surface.point(v);
-                        surface.point(v) = known(hints[index]) ? closestPoint(tree, p, hints[index]) : tree.closest_point(p);
+                        surface.point(v) = known(hints[index]) ? grid.closestPoint(p, hints[index]) : grid.closestPoint(p);
                         onInput[v] = surface.point(v);
                       }
                     });
@@ -305,7 +304,7 @@ void projectOntoInput(SurfaceMesh& surface, PointMap onInput, const Tree& tree, 
 template <typename PointMap, typename HeldMap>
 void remeshAroundNarrowTriangles(SurfaceMesh& surface,
                                  const SurfaceMesh::Property_map<SurfaceMesh::Edge_index, bool>& constrained,
-                                 double targetEdgeLength, PointMap onInput, HeldMap heldOnContour, const Tree& tree,
+                                 double targetEdgeLength, PointMap onInput, HeldMap heldOnContour, const InputGrid& grid,
                                  unsigned int threads)
 {
   const std::vector<Vertex> collapsed = collapseNarrowEdges(surface, constrained, targetEdgeLength);
@@ -357,72 +356,63 @@ void remeshAroundNarrowTriangles(SurfaceMesh& surface,
     moving[v.idx()] = inPatch[v] && !heldOnContour[v];
   surface.remove_property_map(inPatch);
   relaxTangentially(surface, threads, &moving);
-  projectOntoInput(surface, onInput, tree, threads, &moving);
+  projectOntoInput(surface, onInput, grid, threads, &moving);
 }
 
-/** The tree a piece's remesh projects onto, built on the piece itself. (Whether the piece fits a
- *  manifold surface is found where each region of it is turned into CGAL's surface to be remeshed:
- *  a whole copy of the piece made only to check that first was a tiling's worth of memory.) */
-void buildTreeOf(const TriangleMesh& mesh, Tree& tree)
-{
-  insertTriangles(tree, mesh);
-  // No k-d tree of hints: every query brings its own (projectOntoInput).
-  tree.do_not_accelerate_distance_queries();
-  tree.build(); // before the queries run side by side
-}
-
-/** The projection tree of a piece (buildTreeOf), built on a thread of its own beside the remesh's
- *  rounds when `alongside`: the rounds need it only for their projection, after the last one, and
- *  built first on one thread it left the other cores idle (a quarter of a second on the large
- *  scaling volume). get() waits for it and passes on what the build threw. */
-class ProjectionTree
+/** The grid a piece's remesh projects onto (ClosestPointGrid), built on the piece itself, on a thread
+ *  of its own beside the remesh's rounds when `alongside`: the rounds need it only for their
+ *  projection, after the last one, and built first on one thread it left the other cores idle.
+ *  get() waits for it and passes on what the build threw. (Whether the piece fits a manifold
+ *  surface is found where each region of it is turned into CGAL's surface to be remeshed: a whole
+ *  copy of the piece made only to check that first was a tiling's worth of memory.) */
+class ProjectionGrid
 {
 public:
-  ProjectionTree(const TriangleMesh& mesh, bool alongside)
+  ProjectionGrid(const TriangleMesh& mesh, bool alongside)
   {
     if (alongside)
-      m_Built = std::async(std::launch::async, [this, &mesh] { buildTreeOf(mesh, m_Tree); }).share();
+      m_Built = std::async(std::launch::async, [this, &mesh] { m_Grid = std::make_unique<InputGrid>(mesh); }).share();
     else
-      buildTreeOf(mesh, m_Tree);
+      m_Grid = std::make_unique<InputGrid>(mesh);
   }
 
-  ProjectionTree(const ProjectionTree&) = delete;
-  ProjectionTree& operator=(const ProjectionTree&) = delete;
+  ProjectionGrid(const ProjectionGrid&) = delete;
+  ProjectionGrid& operator=(const ProjectionGrid&) = delete;
 
-  ~ProjectionTree()
+  ~ProjectionGrid()
   {
     if (m_Built.valid())
-      m_Built.wait(); // the build reads the mesh and writes the tree
+      m_Built.wait(); // the build reads the mesh and writes the grid
   }
 
-  /** Whether the tree is built (get() would not wait). */
+  /** Whether the grid is built (get() would not wait). */
   bool built() const
   {
     return !m_Built.valid() || m_Built.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
   }
 
-  const Tree& get() const
+  const InputGrid& get() const
   {
     if (m_Built.valid())
       m_Built.get();
-    return m_Tree;
+    return *m_Grid;
   }
 
 private:
-  Tree m_Tree;
+  std::unique_ptr<InputGrid> m_Grid;
   std::shared_future<void> m_Built;
 };
 
 /** Remeshes one region of the input piece (all of it, or a slab or band of it) in two steps: the
  *  rounds, then the finish. Per round, a split, collapse and flip (splitCollapseFlip), then a
- *  relaxation sweep; after the last round, the projection onto the input piece (the tree). A round's
+ *  relaxation sweep; after the last round, the projection onto the input piece (the grid). A round's
  *  relaxation moves a vertex within its tangent plane by a fraction of an edge, so the rounds between
  *  stay close to a piece many edges across: projecting after each (as Botsch and Kobbelt do) gave the
  *  same distances and triangles within 0.3% for three times the projection's cost. A speck is
  *  projected after each (projectEachRound). Then the triangles still under 30 degrees are remeshed
  *  around (remeshAroundNarrowTriangles). The region's border, where it meets the rest of the piece, is
  *  kept exactly: its edges are neither split nor collapsed, its vertices not moved. The two steps
- *  apart let a region whose rounds end before the tree is built wait without holding a thread
+ *  apart let a region whose rounds end before the grid is built wait without holding a thread
  *  (remeshRegions). Throws Error if the region does not fit a manifold surface. */
 class RegionRemesh
 {
@@ -465,8 +455,8 @@ public:
   RegionRemesh(const RegionRemesh&) = delete;
   RegionRemesh& operator=(const RegionRemesh&) = delete;
 
-  /** The rounds but the last one's projection; `tree` is waited for only with projectEachRound. */
-  void rounds(const ProjectionTree& tree, unsigned int threads)
+  /** The rounds but the last one's projection; `grid` is waited for only with projectEachRound. */
+  void rounds(const ProjectionGrid& grid, unsigned int threads)
   {
     const ContourVertices contourVertices{ m_HeldOnContour, m_SlidingOnContour };
     for (int round = 0; round < m_Options.iterations; ++round)
@@ -476,17 +466,17 @@ public:
       m_Surface.collect_garbage(); // the next round's face index map must be dense
       relaxTangentially(m_Surface, threads, freeVertices()); // the round's vertices, after its garbage went
       if (m_Options.projectEachRound && round + 1 < m_Options.iterations)
-        projectOntoInput(m_Surface, m_OnInput, tree.get(), threads, freeVertices());
+        projectOntoInput(m_Surface, m_OnInput, grid.get(), threads, freeVertices());
     }
   }
 
   /** The last projection and the remesh around narrow triangles: the remeshed region. */
-  MeshRegion finish(const Tree& tree, unsigned int threads)
+  MeshRegion finish(const InputGrid& grid, unsigned int threads)
   {
     if (m_Options.iterations > 0)
-      projectOntoInput(m_Surface, m_OnInput, tree, threads, freeVertices());
+      projectOntoInput(m_Surface, m_OnInput, grid, threads, freeVertices());
     remeshAroundNarrowTriangles(m_Surface, m_Constrained, m_Options.targetEdgeLength, m_OnInput, m_HeldOnContour,
-                                tree, threads);
+                                grid, threads);
     MeshRegion result;
     result.mesh = toTriangleMesh(m_Surface);
     for (Vertex v : m_Surface.vertices())
@@ -538,20 +528,20 @@ private:
 };
 
 /** One region remeshed (RegionRemesh), both steps at once. */
-MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions& options, const ProjectionTree& tree,
+MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions& options, const ProjectionGrid& grid,
                         unsigned int threads, const ContourStack* heldContours)
 {
   RegionRemesh remesh(region, options, heldContours);
-  remesh.rounds(tree, threads);
-  return remesh.finish(tree.get(), threads);
+  remesh.rounds(grid, threads);
+  return remesh.finish(grid.get(), threads);
 }
 
 /** Remeshes the regions of `mesh` (regionOf, -1: left alone) side by side; a region that cannot be
  *  remeshed is kept as it was when `keepFailed`, else the whole call throws. A region whose rounds
- *  end before the tree is built waits for its finish until all have had their rounds: the threads
- *  go on with other regions meanwhile instead of waiting with the one building the tree. */
+ *  end before the grid is built waits for its finish until all have had their rounds: the threads
+ *  go on with other regions meanwhile instead of waiting with the one building the grid. */
 TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& regionOf, int count,
-                           const SurfaceRemeshingOptions& options, const ProjectionTree& tree, unsigned int threads,
+                           const SurfaceRemeshingOptions& options, const ProjectionGrid& grid, unsigned int threads,
                            bool keepFailed, const ContourStack* heldContours)
 {
   std::vector<MeshRegion> regions(static_cast<std::size_t>(count));
@@ -578,9 +568,9 @@ TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& reg
                          {
                            auto remesh = std::make_unique<RegionRemesh>(
                              extractRegion(mesh, regionOf, static_cast<int>(r)), options, heldContours);
-                           remesh->rounds(tree, 1);
-                           if (tree.built())
-                             regions[r] = remesh->finish(tree.get(), 1);
+                           remesh->rounds(grid, 1);
+                           if (grid.built())
+                             regions[r] = remesh->finish(grid.get(), 1);
                            else
                              waiting[r] = std::move(remesh);
                          });
@@ -589,7 +579,7 @@ TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& reg
               [&](std::size_t r)
               {
                 if (waiting[r])
-                  remeshed(r, [&] { regions[r] = waiting[r]->finish(tree.get(), 1); });
+                  remeshed(r, [&] { regions[r] = waiting[r]->finish(grid.get(), 1); });
                 waiting[r].reset();
               });
   return reassembleRegions(mesh, regionOf, regions);
@@ -610,19 +600,19 @@ constexpr double slabEdges = 2.0 * bandRings * 4.0 / 3.0 + 2.0;
 /** The triangles not flagged in `keep` (none: every triangle) as one region, remeshed around the
  *  kept ones, whose border is kept exactly as between slabs. */
 TriangleMesh remeshedAsOneRegion(const TriangleMesh& mesh, const std::vector<char>* keep, const SurfaceRemeshingOptions& options,
-                                 const ProjectionTree& tree, unsigned int threads, const ContourStack* heldContours)
+                                 const ProjectionGrid& grid, unsigned int threads, const ContourStack* heldContours)
 {
   if (!keep)
   {
     MeshRegion whole{ mesh, {} };
     for (std::size_t v = 0; v < mesh.points.size(); ++v)
       whole.origin.push_back(static_cast<std::int32_t>(v));
-    return remeshRegion(whole, options, tree, threads, heldContours).mesh;
+    return remeshRegion(whole, options, grid, threads, heldContours).mesh;
   }
   std::vector<int> regionOf(mesh.triangles.size());
   for (std::size_t t = 0; t < keep->size(); ++t)
     regionOf[t] = (*keep)[t] ? -1 : 0;
-  const std::vector<MeshRegion> remeshed{ remeshRegion(extractRegion(mesh, regionOf, 0), options, tree, threads, heldContours) };
+  const std::vector<MeshRegion> remeshed{ remeshRegion(extractRegion(mesh, regionOf, 0), options, grid, threads, heldContours) };
   return withoutUnusedVertices(reassembleRegions(mesh, regionOf, remeshed));
 }
 
@@ -634,14 +624,14 @@ TriangleMesh remeshedAsOneRegion(const TriangleMesh& mesh, const std::vector<cha
 TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions& options, unsigned int threads,
                          const ContourStack* heldContours, const std::vector<char>* keep = nullptr)
 {
-  const ProjectionTree tree(mesh, threadCount(threads) > 1);
+  const ProjectionGrid grid(mesh, threadCount(threads) > 1);
   const std::size_t perRegion = options.trianglesPerRegion;
   int slabs = 1;
   std::vector<int> slabOf = perRegion == 0 || mesh.triangles.size() < 2 * perRegion
                               ? std::vector<int>()
                               : slabRegions(mesh, perRegion, slabEdges * options.targetEdgeLength, slabs);
   if (slabs == 1) // small, or too flat for two slabs
-    return remeshedAsOneRegion(mesh, keep, options, tree, threads, heldContours);
+    return remeshedAsOneRegion(mesh, keep, options, grid, threads, heldContours);
   std::vector<char> seam = seamVertices(mesh, slabOf); // between slabs, not around kept triangles
   std::size_t kept = 0;
   if (keep)
@@ -654,11 +644,11 @@ TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions
   TriangleMesh slabbed;
   try
   {
-    slabbed = remeshRegions(mesh, slabOf, slabs, options, tree, threads, /*keepFailed=*/false, heldContours);
+    slabbed = remeshRegions(mesh, slabOf, slabs, options, grid, threads, /*keepFailed=*/false, heldContours);
   }
   catch (const std::exception&) // a slab that is no manifold surface on its own (two fans at a vertex)
   {
-    return remeshedAsOneRegion(mesh, keep, options, tree, threads, heldContours);
+    return remeshedAsOneRegion(mesh, keep, options, grid, threads, heldContours);
   }
   seam.resize(slabbed.points.size(), 0); // the slabs' own vertices come after the piece's
   int bands = 0;
@@ -666,7 +656,7 @@ TriangleMesh remeshPiece(const TriangleMesh& mesh, const SurfaceRemeshingOptions
   // The kept triangles come first in the reassembled mesh (reassembleRegions), in their order.
   std::fill(bandOf.begin(), bandOf.begin() + static_cast<std::ptrdiff_t>(kept), -1);
   const TriangleMesh banded =
-    remeshRegions(slabbed, bandOf, bands, options, tree, threads, /*keepFailed=*/true, heldContours);
+    remeshRegions(slabbed, bandOf, bands, options, grid, threads, /*keepFailed=*/true, heldContours);
   slabbed = TriangleMesh(); // not held beside the banded mesh and its copy without unused vertices
   return withoutUnusedVertices(banded);
 }
