@@ -26,6 +26,13 @@ std::string lowerCase(std::string text)
   return text;
 }
 
+/** How many of `values` are `value`, within 1% of it. */
+std::size_t alikeCount(const std::vector<double>& values, double value)
+{
+  return static_cast<std::size_t>(
+    std::count_if(values.begin(), values.end(), [value](double v) { return std::abs(v - value) <= 0.01 * value; }));
+}
+
 /** The value most of `values` share (within 1% of it; ties: the smallest); 0 for none. */
 double mostCommon(std::vector<double> values)
 {
@@ -33,13 +40,53 @@ double mostCommon(std::vector<double> values)
   double common = 0.0;
   std::size_t most = 0;
   for (double value : values)
-  {
-    const auto alike = static_cast<std::size_t>(
-      std::count_if(values.begin(), values.end(), [value](double v) { return std::abs(v - value) <= 0.01 * value; }));
-    if (alike > most)
+    if (const std::size_t alike = alikeCount(values, value); alike > most)
       most = alike, common = value;
-  }
   return common;
+}
+
+/** mostCommon, when no other value is as common; else 0. */
+double clearlyMostCommon(const std::vector<double>& values)
+{
+  const double common = mostCommon(values);
+  if (common == 0.0)
+    return 0.0;
+  const std::size_t most = alikeCount(values, common);
+  for (double value : values)
+    if (std::abs(value - common) > 0.01 * common && alikeCount(values, value) == most)
+      return 0.0;
+  return common;
+}
+
+/** The slice spacings a structure set's ROIs are drawn at, each ROI's own: of every ROI in the file,
+ *  chosen or not, so that what is meshed of one ROI does not depend on which others are asked for. */
+struct SetSpacings
+{
+  std::vector<double> ofSeveralSlices; ///< ROIs of two slices or more
+  std::vector<double> ofManySlices;    ///< ROIs of three slices or more: their spacing is a pattern, not one gap
+};
+
+SetSpacings setSpacings(const StructureSet& set, const ContourStackingOptions& stacking)
+{
+  SetSpacings spacings;
+  for (const PlanarStructure& roi : set.structures)
+  {
+    if (roi.contours.empty())
+      continue;
+    try
+    {
+      const StackedContours stacked = stackContours(roi.contours, stacking);
+      const std::size_t slices = stacked.stack.slices.size();
+      if (slices > 1)
+        spacings.ofSeveralSlices.push_back(stacked.stack.sliceSpacing);
+      if (slices > 2)
+        spacings.ofManySlices.push_back(stacked.stack.sliceSpacing);
+    }
+    catch (const Error&) // in one slice, or nothing to stack: no spacing of its own
+    {
+    }
+  }
+  return spacings;
 }
 
 /** The largest distance between two neighbouring slices of the stack (mm). */
@@ -258,7 +305,6 @@ std::vector<Structure> roiStructures(const StructureSet& set, const std::optiona
     stacking.sliceNormal = reference->sliceDirection();
     stacking.expectedSliceSpacing = reference->spacing[2];
   }
-  std::vector<double> spacings;
   auto stack = [&](std::size_t n)
   {
     try
@@ -295,20 +341,27 @@ std::vector<Structure> roiStructures(const StructureSet& set, const std::optiona
                   << "not meshed" << std::endl;
       }
     }
-    else if (stack(n) && s.contours.stack.slices.size() > 1)
-      spacings.push_back(s.contours.stack.sliceSpacing);
+    else
+      stack(n);
   }
-  // The set's slice spacing: the most common of its ROIs' own (ties: the smallest). Most ROIs are
-  // drawn on every slice of the planning image; the median of 2.5, 5 and 20 mm ROIs is not its
-  // spacing. An ROI in one slice gets it as its thickness, and an ROI drawn several of its slices
-  // apart is stacked on it (ContourStackingOptions::fallbackSliceSpacing).
-  stacking.fallbackSliceSpacing = mostCommon(spacings);
+  // The set's slice spacing: the most common of its ROIs' own. Most ROIs are drawn on every slice of
+  // the planning image; the median of 2.5, 5 and 20 mm ROIs is not its spacing. An ROI in one slice
+  // gets it as its thickness (ties: the smallest). An ROI drawn several of its slices apart is
+  // stacked on them, stopping and starting again between its contours, only where the set shows
+  // that spacing clearly: most of its ROIs of three slices or more are drawn at it, and no other
+  // spacing as many. A liver drawn every 3 mm beside one MR target drawn every 1 mm is a liver of
+  // 3 mm slices, not 29 discs on 1 mm ones.
+  const SetSpacings spacings = setSpacings(set, stacking);
+  stacking.fallbackSliceSpacing = mostCommon(spacings.ofSeveralSlices);
+  stacking.setSliceSpacing = clearlyMostCommon(spacings.ofManySlices);
   for (std::size_t n = 0; n < rois.size(); ++n)
   {
-    const bool oneSlice = !structures[n].report.error.empty() && !rois[n].contours.empty();
+    const bool oneSlice =
+      !structures[n].report.error.empty() && !rois[n].contours.empty() && stacking.fallbackSliceSpacing > 0.0;
     const bool farApart = structures[n].report.error.empty() && !rois[n].contours.empty() &&
-                          structures[n].contours.stack.sliceSpacing > 2.5 * stacking.fallbackSliceSpacing;
-    if ((oneSlice || farApart) && stacking.fallbackSliceSpacing > 0.0)
+                          stacking.setSliceSpacing > 0.0 &&
+                          structures[n].contours.stack.sliceSpacing > 2.5 * stacking.setSliceSpacing;
+    if (oneSlice || farApart)
       stack(n);
   }
   // Contours off the image's slices are a mismatch of the whole set as a rule: one line for all.

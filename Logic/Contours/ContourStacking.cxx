@@ -410,8 +410,8 @@ StackedContours stackContours(const std::vector<Polygon3>& contours, const Conto
       result.notes.push_back("no two slices of contours are one image slice (" + millimetres(expected) +
                              ") apart: their own spacing (" + millimetres(spacing) + ") is used");
   }
-  else if (options.fallbackSliceSpacing > 0.0 && !gaps.empty() && severalSlicesOf(options.fallbackSliceSpacing))
-    spacing = options.fallbackSliceSpacing;
+  else if (options.setSliceSpacing > 0.0 && !gaps.empty() && severalSlicesOf(options.setSliceSpacing))
+    spacing = options.setSliceSpacing;
   if (!(spacing > 0.0))
   {
     std::ostringstream message;

@@ -48,12 +48,14 @@ struct ContourStackingOptions
   /** Contours closer than this along the normal share a slice (mm); 0: a quarter of the median gap
    *  over 0.05 mm between contour positions (the slice spacing), at most 0.25 mm. */
   double sliceTolerance = 0.0;
-  /** The slice spacing when the contours cannot tell it (all in one slice); 0: none known. Also, with
-   *  no image spacing known (expectedSliceSpacing), the spacing of the set the contours belong to: a
-   *  structure whose own gaps are three or more of these slices (a whole number, within 5%) is
-   *  drawn on the set's slices and stops and starts again between them, as it does when the image's
-   *  spacing is known; it is not a structure of slices that far apart. */
+  /** The slice spacing when the contours cannot tell it (all in one slice); 0: none known. */
   double fallbackSliceSpacing = 0.0;
+  /** With no image spacing known (expectedSliceSpacing), the slice spacing of the set the contours
+   *  belong to, where the set shows one clearly; 0: none. A structure whose own gaps are three or
+   *  more of these slices (a whole number, within 5%) is drawn on the set's slices and stops and
+   *  starts again between them, as it does when the image's spacing is known; it is not a structure
+   *  of slices that far apart. */
+  double setSliceSpacing = 0.0;
   /** Resample spacing in the slice plane (mm); 0: automaticPointSpacing of the stack. */
   double pointSpacing = 0.0;
 };

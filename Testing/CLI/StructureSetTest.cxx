@@ -362,6 +362,43 @@ TEST(StructureSet, SlicesSeveralOfTheSetsApartAreSlabsOfTheSetsSpacing)
   EXPECT_EQ(other.components, 1u);
 }
 
+TEST(StructureSet, AnROIIsNotSplitOnASpacingTheSetDoesNotClearlyHave)
+{
+  // An organ drawn every 3 mm and a target drawn every 1 mm (from an MR), and nothing else: the set
+  // does not say which spacing its image has, so each ROI keeps its own. Stacked on the target's
+  // 1 mm, the organ stopped and started again between its contours, a third of its volume. And
+  // what is meshed of the organ does not depend on the other ROIs asked for with it.
+  PlanarStructure organ = roi(1, "Organ", { 1, 2, 3 });
+  for (int k = 0; k < 12; ++k)
+    organ.contours.push_back(circle(0.0, 0.0, Spacing * k, 15.0));
+  PlanarStructure target = roi(2, "Target", { 4, 5, 6 });
+  for (int k = 0; k < 9; ++k)
+    target.contours.push_back(circle(50.0, 0.0, Spacing / 3.0 * k, 5.0));
+  const double prism = polygonArea(15.0) * 12.0 * Spacing; // half a slice beyond each end contour
+  for (const std::string& chosen : { std::string(), std::string("--rois Organ") })
+  {
+    const SetRun run = meshSet(chosen.empty() ? "UnclearSpacing" : "UnclearSpacingOne", { organ, target }, chosen);
+    ASSERT_EQ(run.result.exitCode, cli::Success) << run.result.err;
+    EXPECT_FALSE(hasLine(run.result.err, "stops and starts again")) << run.result.err;
+    const MeshValidation v = expectValid(run.folder / "rois" / "001_Organ.vtp");
+    EXPECT_EQ(v.components, 1u) << chosen;
+    EXPECT_NEAR(v.volume, prism, 0.01 * prism) << chosen;
+  }
+  // Two more ROIs every 1 mm make it the set's spacing: the organ is then drawn on every third of
+  // its slices and counted as a planning system counts it, a slab of 1 mm per contour.
+  PlanarStructure more = roi(3, "More", { 7, 8, 9 }), again = roi(4, "Again", { 7, 8, 9 });
+  for (int k = 0; k < 9; ++k)
+  {
+    more.contours.push_back(circle(-50.0, 0.0, Spacing / 3.0 * k, 5.0));
+    again.contours.push_back(circle(0.0, 50.0, Spacing / 3.0 * k, 5.0));
+  }
+  const SetRun run = meshSet("ClearSpacing", { organ, target, more, again }, "--rois Organ");
+  ASSERT_EQ(run.result.exitCode, cli::Success) << run.result.err;
+  const MeshValidation discs = expectValid(run.folder / "rois" / "001_Organ.vtp");
+  EXPECT_EQ(discs.components, 12u);
+  EXPECT_NEAR(discs.volume, prism / 3.0, 0.05 * prism / 3.0);
+}
+
 TEST(StructureSet, SmallROIsInOneSliceEncloseTheirSlabVolume)
 {
   // A structure a few millimetres across drawn in one slice: its caps, domes half a slice high,
