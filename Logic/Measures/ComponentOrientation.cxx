@@ -7,9 +7,11 @@
 #include "Measures/TriangleMeshTree.h"
 
 #include <CGAL/Polygon_mesh_processing/internal/Side_of_triangle_mesh/Point_inside_vertical_ray_cast.h>
+#include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
 #include <memory>
+#include <utility>
 
 namespace slicemesh
 {
@@ -55,14 +57,29 @@ std::size_t misorientedComponents(const std::vector<const TriangleMesh*>& compon
   for (const TriangleMesh* c : components)
     boxes.push_back(boxOfTriangles(*c));
   // Surfaces that do not cross nest only if their boxes do: most components nest in none, and only
-  // a component whose box holds another's needs a tree.
-  auto mayEnclose = [&](std::size_t b, std::size_t a)
-  { return b != a && !components[b]->triangles.empty() && boxes[b].contains(boxes[a]); };
+  // a component whose box holds another's needs a tree. The pairs of boxes that meet come from
+  // CGAL's box intersection (n log n), not from every pair: a thresholded noisy MRI has a hundred
+  // thousand specks.
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
+  std::vector<Box> meeting;
+  for (std::size_t c = 0; c < n; ++c)
+    if (!components[c]->triangles.empty())
+    {
+      BoundingBox box = boxes[c]; // CGAL takes non-const arrays
+      meeting.emplace_back(box.low.data(), box.high.data(), c);
+    }
+  std::vector<std::vector<std::size_t>> enclosing(n); // per component, those whose box holds its own
   std::vector<char> needed(n, 0);
-  for (std::size_t a = 0; a < n; ++a)
-    if (!components[a]->triangles.empty())
-      for (std::size_t b = 0; b < n; ++b)
-        needed[b] = needed[b] || mayEnclose(b, a);
+  CGAL::box_self_intersection_d(meeting.begin(), meeting.end(),
+                                [&](const Box& x, const Box& y)
+                                {
+                                  for (const auto& [b, a] : { std::pair(x.info(), y.info()), std::pair(y.info(), x.info()) })
+                                    if (boxes[b].contains(boxes[a]))
+                                    {
+                                      enclosing[a].push_back(b);
+                                      needed[b] = 1;
+                                    }
+                                });
   std::vector<std::unique_ptr<Enclosure>> enclosures(n);
   parallelFor(n, threads,
               [&](std::size_t b)
@@ -79,9 +96,8 @@ std::size_t misorientedComponents(const std::vector<const TriangleMesh*>& compon
                   return;
                 const Point3& probe = component.points[static_cast<std::size_t>(component.triangles.front()[0])];
                 std::size_t depth = 0;
-                for (std::size_t b = 0; b < n; ++b)
-                  if (mayEnclose(b, a))
-                    depth += enclosures[b]->encloses(probe);
+                for (std::size_t b : enclosing[a])
+                  depth += enclosures[b]->encloses(probe);
                 const bool outward = depth % 2 == 0;
                 misoriented[a] = outward ? !(volumes[a] > 0.0) : !(volumes[a] < 0.0);
               });

@@ -87,6 +87,30 @@ TEST(ComponentOrientation, AnIslandInACavityFacesOut)
     EXPECT_EQ(misorientedComponents(pointers, volumes, threads), 1u) << threads << " threads";
 }
 
+TEST(ComponentOrientation, AmongManyPiecesEachIsJudgedByThoseAroundIt)
+{
+  // A hollow ball with three islands in its cavity, beside a row of 120 specks (as a thresholded
+  // noisy image has by the thousand): one island and one speck inside out, and only they are caught.
+  // The boxes that hold one another are found among all pairs of boxes that meet, not pair by pair.
+  std::vector<TriangleMesh> pieces{ ball(0.0, 20.0), insideOut(ball(0.0, 15.0)), ball(-8.0, 2.0),
+                                    insideOut(ball(0.0, 2.0)), ball(8.0, 2.0) };
+  for (int k = 0; k < 120; ++k)
+    pieces.push_back(k == 77 ? insideOut(ball(25.0 + 4.0 * k, 1.5)) : ball(25.0 + 4.0 * k, 1.5));
+  EXPECT_EQ(misorientedComponents(joined(pieces)), 2u);
+  std::vector<const TriangleMesh*> pointers;
+  std::vector<double> volumes;
+  for (const TriangleMesh& p : pieces)
+  {
+    pointers.push_back(&p);
+    volumes.push_back(signedVolume(p));
+  }
+  for (unsigned int threads : { 1u, 2u })
+    EXPECT_EQ(misorientedComponents(pointers, volumes, threads), 2u) << threads << " threads";
+  // The cavity's wall facing out too: now three.
+  pieces[1] = ball(0.0, 15.0);
+  EXPECT_EQ(misorientedComponents(joined(pieces)), 3u);
+}
+
 TEST(ComponentOrientation, TheTilingOfAHollowStackIsOriented)
 {
   // Slices of a hollow ball (outer radius 8, cavity radius 4), the cavity as a clockwise hole: the
