@@ -91,6 +91,12 @@ void readArguments(const ParsedArguments& arguments, PipelineSettings& settings)
   multi.colorTable = arguments.text("colorTable");
   multi.enabled = arguments.flag("splitLabels") || !multi.labels.empty() || !multi.labelNames.empty() ||
                   !multi.outputDirectory.empty();
+  // Nor --label beside --splitLabels or --outputDirectory, which mesh every label.
+  if (settings.segmentation.label && multi.enabled)
+    throw ArgumentError(std::string("--label picks one label for one mesh and ") +
+                        (arguments.flag("splitLabels") ? "--splitLabels" : "--outputDirectory") +
+                        " meshes every label, each in its own file: give one of them (--labels " +
+                        std::to_string(*settings.segmentation.label) + " for that label alone, in its own file)");
 }
 
 } // namespace

@@ -194,6 +194,20 @@ TEST(Executable, LabelAndLabelsTogetherAreAUsageError)
               .exitCode,
             cli::UnreadableInput)
     << "label 0 (every label, Slicer's default) goes with --labels";
+  // Nor beside --splitLabels or --outputDirectory, which mesh every label (the run meshed them all).
+  for (const std::string every : { std::string("--splitLabels"), "--outputDirectory " + quoted((folder / "labels").string()) })
+  {
+    const RunResult both = runSliceMesh("--label 2 " + every + " " + quoted((folder / "missing.nrrd").string()) + " " +
+                                        quoted((folder / "out.vtp").string()));
+    EXPECT_EQ(both.exitCode, cli::BadArguments) << every;
+    EXPECT_EQ(linesOf(both.err).size(), 1u) << both.err;
+    EXPECT_NE(both.err.find("--label picks one label"), std::string::npos) << both.err;
+    EXPECT_EQ(runSliceMesh("--label 0 " + every + " " + quoted((folder / "missing.nrrd").string()) + " " +
+                           quoted((folder / "out.vtp").string()))
+                .exitCode,
+              cli::UnreadableInput)
+      << every;
+  }
 }
 
 TEST(Executable, MissingOutputFolderIsAWriteFailureBeforeAnyWork)
