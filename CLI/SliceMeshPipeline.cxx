@@ -4,12 +4,15 @@
 #include "PipelineStep.h"
 #include "PipelineStructures.h"
 
+#include "Core/AreaNormal.h"
 #include "Core/ParallelFor.h"
 #include "FileReplacement.h"
 #include "Finishing/SurfaceSmoothing.h"
 #include "MaskMeshing.h"
 #include "MeshSnapshot.h"
 #include "Measures/MeshComponents.h"
+#include "Measures/MeshQuality.h"
+#include "Measures/MeshValidation.h"
 #include "NiftiOrientation.h"
 #include "SegmentationFile.h"
 #include "StructureSet.h"
@@ -112,6 +115,36 @@ ColorTable checkBeforeWork(const PipelineSettings& settings)
 }
 
 /** The run's figures of one finished structure, for the summary line and the report. */
+/** Whether the frame's axes are not at right angles (a sheared grid, which NRRD and MetaImage can
+ *  state): the stack frame's volumes, areas and angles are then not the physical mesh's. */
+bool shears(const SliceFrame& frame)
+{
+  const auto& d = frame.direction;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b)
+    {
+      const double dot = d[0][a] * d[0][b] + d[1][a] * d[1][b] + d[2][a] * d[2][b];
+      if (std::abs(dot - (a == b ? 1.0 : 0.0)) > 1e-6)
+        return true;
+    }
+  return false;
+}
+
+/** The validation's and the quality's measures of a structure, taken again on its mesh in physical
+ *  space where its frame shears: the report says what the file holds. */
+void measuredInPhysicalSpace(const TriangleMesh& physical, MeshValidation& validation, RunQuality& quality)
+{
+  double area = 0.0;
+  for (const Triangle& t : physical.triangles)
+  {
+    const Point3 n = areaNormal(physical, t);
+    area += 0.5 * std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+  }
+  validation.area = area;
+  validation.volume = signedVolume(physical);
+  quality.shape = measureMeshQuality(physical);
+}
+
 RunQuality runQualityOf(const MeshedContours& m)
 {
   RunQuality quality;
@@ -433,11 +466,13 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
       const FinishedSurface& surface = s.meshing.surface;
       s.report.validation = surface.validation;
       s.report.quality = runQualityOf(s.meshing);
+      if (shears(s.frame()))
+        measuredInPhysicalSpace(physical[n], s.report.validation, s.report.quality);
       s.report.contourPoints = contourPoints(s.meshing.stack);
       if (!surface.fallback.empty())
         std::cerr << "SliceMesh: warning: " << who(s, noun) << "surface finishing: " << oneLine(surface.fallback)
                   << std::endl;
-      validations.push_back(surface.validation);
+      validations.push_back(s.report.validation);
       if (perLabel)
       {
         const MeshAttributes attributes = attributesOf(s, physical[n].triangles.size());

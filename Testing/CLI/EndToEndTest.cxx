@@ -4,6 +4,8 @@
 #include "ExitCodes.h"
 #include "ModuleDescription.h"
 #include "ModuleXml.h"
+#include "MeshReader.h"
+#include "Measures/MeshValidation.h"
 
 #include <gtest/gtest.h>
 
@@ -647,4 +649,35 @@ TEST(EndToEnd, AnAutomaticInputKindIsSaidWithItsReason)
 }
 
 } // namespace
+TEST(EndToEnd, AShearedGridsReportSaysWhatItsFileHolds)
+{
+  // NRRD can state axes that are not at right angles (here the second leans 0.3 mm per mm towards
+  // the first, and slices are 2 mm): a voxel is then 2 mm^3, not the product of the axes' lengths
+  // (2.09). The mesh lands in physical space through the sheared axes; its report's volume, area and
+  // angles are measured there too, not in the grid's own frame.
+  const fs::path folder = freshFolder("sheared");
+  const fs::path input = folder / "sheared.nrrd", output = folder / "box.vtp", report = folder / "box.json";
+  {
+    std::ofstream out(input, std::ios::binary);
+    out << "NRRD0004\ntype: uint8\ndimension: 3\nspace: left-posterior-superior\nsizes: 16 14 12\n"
+        << "space directions: (1,0,0) (0.3,1,0) (0,0,2)\nkinds: domain domain domain\nendian: little\n"
+        << "encoding: raw\nspace origin: (3,-4,5)\n\n";
+    for (int k = 0; k < 12; ++k)
+      for (int j = 0; j < 14; ++j)
+        for (int i = 0; i < 16; ++i)
+          out.put(static_cast<char>(i >= 3 && i < 13 && j >= 3 && j < 11 && k >= 3 && k < 9 ? 1 : 0));
+  }
+  const RunResult r = runSliceMesh("--report " + quoted(report.string()) + " " + quoted(input.string()) + " " +
+                                   quoted(output.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const TriangleMesh mesh = readMesh(output.string()).mesh;
+  const MeshValidation file = validateMesh(mesh);
+  EXPECT_TRUE(file.valid()) << file.summary();
+  const double voxels = 10.0 * 8.0 * 6.0 * 2.0;
+  EXPECT_NEAR(file.volume, voxels, 0.01 * voxels);
+  const std::string json = fileText(report);
+  EXPECT_NEAR(jsonNumberAfter(json, "volumeMm3"), file.volume, 1e-6 * voxels);
+  EXPECT_NEAR(jsonNumberAfter(json, "areaMm2"), file.area, 1e-6 * file.area);
+}
+
 } // namespace slicemesh::testing
