@@ -4,6 +4,7 @@
 #include <dcmtk/dcmdata/dcfilefo.h>
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcitem.h>
+#include <dcmtk/dcmdata/dcvr.h>
 #include <dcmtk/dcmrt/seq/drtssrs.h>
 #include <dcmtk/oflog/oflog.h>
 
@@ -46,6 +47,26 @@ std::string trimmed(const OFString& text)
   const auto last = s.find_last_not_of(" \t\r\n");
   return first == std::string::npos ? std::string() : s.substr(first, last - first + 1);
 }
+
+/** Sets one of DCMTK's global flags for as long as it lives, then puts its value back: the flags are
+ *  the process's, and an application that loads this plugin may rely on their defaults. */
+class DcmtkFlag
+{
+public:
+  DcmtkFlag(OFGlobal<OFBool>& flag, OFBool value)
+    : m_Flag(flag)
+    , m_Before(flag.get())
+  {
+    m_Flag.set(value);
+  }
+  ~DcmtkFlag() { m_Flag.set(m_Before); }
+  DcmtkFlag(const DcmtkFlag&) = delete;
+  DcmtkFlag& operator=(const DcmtkFlag&) = delete;
+
+private:
+  OFGlobal<OFBool>& m_Flag;
+  const OFBool m_Before;
+};
 
 /** The numbers of a decimal string (DS) element, backslash-separated, each read as the nearest
  *  double (std::from_chars); none when the element is absent. `where` names the ROI in the error a
@@ -107,7 +128,14 @@ StructureSet readWithDcmtk(const std::string& path)
   const auto bytes = std::filesystem::file_size(path, sizeError);
   const Uint32 maxReadLength =
     !sizeError && bytes <= largestStructureSetBytes ? static_cast<Uint32>(bytes) : DCM_MaxReadLength;
-  const OFCondition loaded = file.loadFile(path.c_str(), EXS_Unknown, EGL_noChange, maxReadLength);
+  OFCondition loaded;
+  {
+    // A contour over 64 KiB of text cannot be a DS in explicit VR (its length has 16 bits), so
+    // writers store it as UN with a 32-bit length, as the standard allows: read with the
+    // dictionary's VR, it is the decimal string it was.
+    const DcmtkFlag unknownAsDictionaryVR(dcmEnableUnknownVRConversion, OFTrue);
+    loaded = file.loadFile(path.c_str(), EXS_Unknown, EGL_noChange, maxReadLength);
+  }
   if (loaded == EC_StreamNotifyClient)
     throw Error("cannot read '" + path + "' as DICOM: the file ends inside an element (cut short, or a length damaged)");
   if (loaded.bad())
@@ -189,6 +217,8 @@ StructureSet readWithDcmtk(const std::string& path)
       for (int c = 0; c < 3; ++c)
         roi.rgb[c] = static_cast<unsigned char>(std::clamp<Sint32>(rgb[c], 0, 255));
     std::map<std::string, std::size_t> skipped;
+    std::size_t miscounted = 0;
+    std::string firstMiscount;
     DcmSequenceOfItems* contours = nullptr;
     item.findAndGetSequence(DCM_ContourSequence, contours);
     for (unsigned long k = 0; contours && k < contours->card(); ++k)
@@ -206,12 +236,19 @@ StructureSet readWithDcmtk(const std::string& path)
       const std::vector<double> data = decimalStrings(contourItem, DCM_ContourData, where);
       if (data.size() % 3 != 0)
         throw Error(where + ": a contour's data has a number of values that is not a multiple of 3");
+      Sint32 stated = 0;
+      if (contourItem.findAndGetSint32(DCM_NumberOfContourPoints, stated).good() &&
+          static_cast<std::size_t>(std::max<Sint32>(stated, 0)) != data.size() / 3 && miscounted++ == 0)
+        firstMiscount = std::to_string(stated) + " stated, " + std::to_string(data.size() / 3) + " present";
       Polygon3 contour;
       contour.reserve(data.size() / 3);
       for (std::size_t i = 0; i + 2 < data.size(); i += 3)
         contour.push_back({ data[i], data[i + 1], data[i + 2] });
       roi.contours.push_back(std::move(contour));
     }
+    if (miscounted > 0)
+      roi.notes.push_back(std::to_string(miscounted) + " contour(s) whose Number of Contour Points differs from the points in " +
+                          "their Contour Data (first: " + firstMiscount + "): the points present are used");
     for (const auto& [type, count] : skipped)
       roi.notes.push_back(std::to_string(count) + " " + type + " item(s) skipped: only CLOSED_PLANAR contours enclose a volume");
   }

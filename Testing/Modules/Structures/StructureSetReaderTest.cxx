@@ -12,6 +12,8 @@
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
 #include <dcmtk/dcmdata/dcuid.h>
+#include <dcmtk/dcmdata/dcvr.h>
+#include <dcmtk/dcmdata/dcvrobow.h>
 
 #include <vtkCellArray.h>
 #include <vtkIntArray.h>
@@ -128,6 +130,73 @@ TEST(StructureSetReader, ReadsDecimalStringsWithSignsExponentsAndPaddingExactly)
   EXPECT_EQ(contour[2].x, 0.5);
   EXPECT_EQ(contour[2].y, 100.0);
   EXPECT_EQ(contour[2].z, 0.0);
+}
+
+TEST(StructureSetReader, AContourStoredAsUNIsReadAsItsDecimalStringsAndTheFlagPutBack)
+{
+  // 5000 points are over 64 KiB of text, more than an explicit-VR DS length holds: writers store
+  // such a ContourData as UN with a 32-bit length.
+  const fs::path path = folder("contour-as-UN") / "RS.dcm";
+  const Polygon3 big = circle(1.0, -2.0, 2.5, 40.0, 5000);
+  std::string text;
+  for (const Point3& p : big)
+    for (const double value : { p.x, p.y, p.z })
+      text += (text.empty() ? "" : "\\") + std::to_string(value);
+  if (text.size() % 2 != 0)
+    text += ' ';
+  ASSERT_GT(text.size(), 65535u);
+  writeRTStructureSet(path.string(), twoStructures());
+  {
+    DcmFileFormat file;
+    ASSERT_TRUE(file.loadFile(path.c_str()).good());
+    DcmItem* roi = nullptr;
+    DcmItem* contour = nullptr;
+    ASSERT_TRUE(file.getDataset()->findAndGetSequenceItem(DCM_ROIContourSequence, roi, 0).good());
+    ASSERT_TRUE(roi->findAndGetSequenceItem(DCM_ContourSequence, contour, 1).good());
+    auto* unknown = new DcmOtherByteOtherWord(DcmTag(DCM_ContourData, EVR_UN));
+    ASSERT_TRUE(unknown->putUint8Array(reinterpret_cast<const Uint8*>(text.data()), text.size()).good());
+    ASSERT_TRUE(contour->insert(unknown, true).good());
+    ASSERT_TRUE(contour->putAndInsertString(DCM_NumberOfContourPoints, "5000").good());
+    ASSERT_TRUE(file.saveFile(path.c_str(), EXS_LittleEndianExplicit).good());
+  }
+  {
+    // The fixture is what it means to be: read without the conversion, the element is UN.
+    DcmFileFormat file;
+    ASSERT_TRUE(file.loadFile(path.c_str()).good());
+    DcmItem* roi = nullptr;
+    DcmItem* contour = nullptr;
+    DcmElement* data = nullptr;
+    ASSERT_TRUE(file.getDataset()->findAndGetSequenceItem(DCM_ROIContourSequence, roi, 0).good());
+    ASSERT_TRUE(roi->findAndGetSequenceItem(DCM_ContourSequence, contour, 1).good());
+    ASSERT_TRUE(contour->findAndGetElement(DCM_ContourData, data).good());
+    ASSERT_EQ(data->getVR(), EVR_UN);
+  }
+  const StructureSet set = readStructureSet(path.string());
+  EXPECT_FALSE(dcmEnableUnknownVRConversion.get()) << "the reader puts DCMTK's flag back";
+  ASSERT_EQ(set.structures[0].contours.size(), 4u);
+  const Polygon3& read = set.structures[0].contours[1];
+  ASSERT_EQ(read.size(), 5000u);
+  for (std::size_t i = 0; i < read.size(); i += 499)
+  {
+    EXPECT_NEAR(read[i].x, big[i].x, 1e-6);
+    EXPECT_NEAR(read[i].y, big[i].y, 1e-6);
+    EXPECT_EQ(read[i].z, 2.5);
+  }
+  EXPECT_TRUE(set.structures[0].notes.empty()) << set.structures[0].notes.front();
+}
+
+TEST(StructureSetReader, ANumberOfContourPointsThatDisagreesWithTheDataIsSaidAndTheDataUsed)
+{
+  // writeWithFirstContourData states 3 points; four are given.
+  const fs::path path = folder("miscounted") / "RS.dcm";
+  writeWithFirstContourData(path, "0\\0\\0\\10\\0\\0\\10\\10\\0\\0\\10\\0");
+  const StructureSet set = readStructureSet(path.string());
+  const PlanarStructure& gtv = set.structures[0];
+  ASSERT_EQ(gtv.contours[0].size(), 4u);
+  EXPECT_EQ(gtv.contours[0][3].y, 10.0);
+  ASSERT_EQ(gtv.notes.size(), 1u) << "one line for the ROI";
+  EXPECT_NE(gtv.notes[0].find("3 stated, 4 present"), std::string::npos) << gtv.notes[0];
+  EXPECT_TRUE(set.structures[1].notes.empty());
 }
 
 TEST(StructureSetReader, ContoursOfAnUndeclaredROIAreKeptAndSaid)
