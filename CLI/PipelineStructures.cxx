@@ -295,6 +295,8 @@ std::optional<std::string> frameOfReferenceWarning(const StructureSet& set, cons
 std::vector<Structure> roiStructures(const StructureSet& set, const std::optional<VolumeGeometry>& reference,
                                      const PipelineSettings& settings)
 {
+  for (const std::string& note : set.notes)
+    std::cerr << "SliceMesh: warning: " << oneLine(note) << std::endl;
   const std::vector<PlanarStructure> rois =
     guarded(EmptySegmentation, [&] { return chosenStructures(set, settings.contours.rois); });
   std::vector<Structure> structures(rois.size());

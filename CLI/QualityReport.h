@@ -113,6 +113,10 @@ struct LabelReport
 RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshValidation& summed,
                            const TriangleMesh& allTriangles);
 
+/** `text` as a JSON string, quoted and escaped. Always valid UTF-8, as JSON must be: a byte that
+ *  starts no valid UTF-8 sequence (a name in another encoding) becomes U+FFFD. */
+std::string jsonString(const std::string& text);
+
 /** Writes the report as JSON (atomically: a temporary name, renamed when complete); with labels,
  *  a "labels" array follows, one entry per label with its own mesh, quality and Dirichlet blocks.
  *  Each "mesh" block says what its validation covers: "validatedAs": "wholeMesh" (one mesh, or one

@@ -107,8 +107,15 @@ std::array<unsigned char, 4> ColorTable::generatedColor(int label)
 std::string safeFileName(const std::string& name)
 {
   std::string safe;
+  bool inCharacter = false; // within a UTF-8 character of several bytes
   for (unsigned char c : name)
-    safe += (std::isalnum(c) || c == '-' || c == '_' || c == '.') ? static_cast<char>(c) : '_';
+  {
+    // One '_' for each character that is not kept, not for each byte of it.
+    const bool continuation = inCharacter && (c & 0xC0) == 0x80;
+    inCharacter = c >= 0x80;
+    if (!continuation)
+      safe += ((c < 0x80 && std::isalnum(c)) || c == '-' || c == '_' || c == '.') ? static_cast<char>(c) : '_';
+  }
   return safe.empty() ? std::string("unnamed") : safe;
 }
 

@@ -42,7 +42,8 @@ private:
   std::map<int, LabelColor> Entries;
 };
 
-/** A file-name-safe form of a label name: letters, digits, '-', '_' and '.'; others become '_'. */
+/** A file-name-safe form of a label name: ASCII letters, digits, '-', '_' and '.'; each other
+ *  character (of one byte or a UTF-8 sequence) becomes one '_'. */
 std::string safeFileName(const std::string& name);
 
 } // namespace slicemesh

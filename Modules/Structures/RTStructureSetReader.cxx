@@ -103,6 +103,24 @@ std::vector<double> decimalStrings(DcmItem& item, const DcmTagKey& tag, const st
   return values;
 }
 
+/** Converts the dataset's text (the ROI names) to UTF-8 from its Specific Character Set, so that
+ *  names reach the output, the report and file names as one encoding. Without a Specific Character
+ *  Set the text should be ASCII; bytes beyond it are taken as Latin-1 (ISO_IR 100), the character
+ *  set of most such files, and ASCII stays as it is. Returns why the text could not be converted
+ *  (an unknown or unsupported character set, bytes invalid in it), empty when it was. */
+std::string convertTextToUtf8(DcmFileFormat& file)
+{
+  OFString declared;
+  file.getDataset()->findAndGetOFStringArray(DCM_SpecificCharacterSet, declared);
+  const std::string charset = trimmed(declared);
+  const OFCondition converted =
+    charset.empty() ? file.getDataset()->convertCharacterSet("ISO_IR 100", "ISO_IR 192") : file.convertToUTF8();
+  if (converted.good())
+    return {};
+  return "its text could not be converted to UTF-8 from Specific Character Set '" + charset + "' (" + converted.text() +
+         "): the ROI names are kept as stored";
+}
+
 /** Each item of a dcmrt sequence, in order (by index: its cursor steps once past the last item). */
 template <typename Sequence, typename Visit>
 void forEachItem(Sequence& sequence, Visit&& visit)
@@ -146,6 +164,9 @@ StructureSet readWithDcmtk(const std::string& path)
   if (modality != "RTSTRUCT")
     throw Error("'" + path + "' is not a DICOM RT Structure Set (Modality " +
                 (modality.empty() ? std::string("missing") : std::string(modality.c_str())) + ")");
+  StructureSet set;
+  if (const std::string fault = convertTextToUtf8(file); !fault.empty())
+    set.notes.push_back("'" + path + "': " + fault);
   // The ROIs through dcmrt's typed sequence; the contours straight from the dataset. Reading the
   // whole IOD copies every contour's numbers into its own objects first, and dcmrt then parses
   // them one by one: together two thirds of the reading of a 50,000-point structure set.
@@ -154,7 +175,6 @@ StructureSet readWithDcmtk(const std::string& path)
   if (read.bad())
     throw Error("cannot read the RT Structure Set '" + path + "': " + read.text());
 
-  StructureSet set;
   auto addFrameOfReference = [&set](const OFString& uid)
   {
     const std::string frame = trimmed(uid);

@@ -17,7 +17,7 @@ namespace slicemesh
 struct PlanarStructure
 {
   int number = 0;
-  std::string name;
+  std::string name; ///< UTF-8 (an RT Structure Set's converted from its Specific Character Set)
   std::array<unsigned char, 3> rgb{ 128, 128, 128 };
   std::vector<Polygon3> contours;
   /** One line each: items of the file skipped for this ROI (points, open contours). */
@@ -32,6 +32,9 @@ struct StructureSet
   /** The Frames of Reference (UIDs) the file says its contours are in: an RT Structure Set's
    *  referenced frames and its ROIs'; empty when it names none. */
   std::vector<std::string> framesOfReference;
+  /** One line each: faults of the file as a whole, which the reader worked around (e.g. names it
+   *  could not convert to UTF-8). */
+  std::vector<std::string> notes;
 };
 
 /** What a contour file holds, by its content. */

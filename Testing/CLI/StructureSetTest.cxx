@@ -499,6 +499,23 @@ TEST(StructureSet, APointOfInterestIsSkippedUnlessAskedForByName)
   EXPECT_FALSE(fs::exists(alone.folder / "all.vtp"));
 }
 
+TEST(StructureSet, ANameInLatin1IsUtf8InTheOutputAndTheReportAndItsFileNameIsSafe)
+{
+  // No Specific Character Set, as the writer leaves it: the byte 0xFC beyond ASCII is Latin-1's u umlaut.
+  PlanarStructure latin1 = nestedAnnulus();
+  latin1.name = "R\xFC" "ckenmark/C1";
+  const fs::path report = freshFolder("StructureSetLatin1Report") / "report.json";
+  const SetRun run = meshSet("Latin1", { latin1 }, "--report " + quoted(report.string()));
+  ASSERT_EQ(run.result.exitCode, cli::Success) << run.result.err;
+  const std::string utf8 = "R\xC3\xBC" "ckenmark/C1";
+  EXPECT_TRUE(hasLine(run.result.out, "SliceMesh: ROI 1 (" + utf8 + "): volume")) << run.result.out;
+  const std::string json = fileText(report);
+  EXPECT_NE(json.find("\"name\": \"" + utf8 + "\""), std::string::npos) << json;
+  EXPECT_EQ(json.find('\xFC'), std::string::npos) << "no Latin-1 byte left in the report";
+  // One '_' for the character (as for the Latin-1 byte before names were converted) and one for the slash.
+  expectValid(run.folder / "rois" / "001_R_ckenmark_C1.vtp");
+}
+
 TEST(StructureSet, FilesThatAreNoStructureSetOrAreCutShortFailWithOneLineAndWriteNothing)
 {
   const fs::path folder = freshFolder("StructureSetBadFiles");

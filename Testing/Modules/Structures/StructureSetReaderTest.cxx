@@ -199,6 +199,56 @@ TEST(StructureSetReader, ANumberOfContourPointsThatDisagreesWithTheDataIsSaidAnd
   EXPECT_TRUE(set.structures[1].notes.empty());
 }
 
+/** twoStructures() at `path`, the first ROI named by the bytes `name`, the file's Specific
+ *  Character Set `charset` (none when empty). */
+void writeWithFirstName(const fs::path& path, const std::string& name, const std::string& charset)
+{
+  writeRTStructureSet(path.string(), twoStructures());
+  DcmFileFormat file;
+  ASSERT_TRUE(file.loadFile(path.c_str()).good());
+  if (!charset.empty())
+    ASSERT_TRUE(file.getDataset()->putAndInsertString(DCM_SpecificCharacterSet, charset.c_str()).good());
+  DcmItem* roi = nullptr;
+  ASSERT_TRUE(file.getDataset()->findAndGetSequenceItem(DCM_StructureSetROISequence, roi, 0).good());
+  ASSERT_TRUE(roi->putAndInsertString(DCM_ROIName, name.c_str()).good());
+  ASSERT_TRUE(file.saveFile(path.c_str(), EXS_LittleEndianExplicit).good());
+}
+
+TEST(StructureSetReader, NamesAreReadAsUtf8FromTheFilesCharacterSet)
+{
+  const fs::path dir = folder("character-sets");
+  const std::string latin1 = "R\xFC" "ckenmark", utf8 = "R\xC3\xBC" "ckenmark";
+  struct Case
+  {
+    std::string charset, stored, read;
+  };
+  // Latin-1 declared; none declared, whose bytes beyond ASCII are taken as Latin-1; UTF-8 declared
+  // (kept); ASCII with none declared (kept).
+  for (const Case& c : { Case{ "ISO_IR 100", latin1, utf8 }, Case{ "", latin1, utf8 }, Case{ "ISO_IR 192", utf8, utf8 },
+                         Case{ "ISO_IR 100", "Leber \xE4 \xE9", "Leber \xC3\xA4 \xC3\xA9" },
+                         Case{ "", "PTV/CTV 1", "PTV/CTV 1" } })
+  {
+    const fs::path path = dir / "RS.dcm";
+    writeWithFirstName(path, c.stored, c.charset);
+    const StructureSet set = readStructureSet(path.string());
+    EXPECT_EQ(set.structures[0].name, c.read) << "Specific Character Set '" << c.charset << "'";
+    EXPECT_EQ(set.structures[1].name, "Empty ROI");
+    EXPECT_TRUE(set.notes.empty()) << set.notes.front();
+    EXPECT_EQ(set.structures[0].contours.size(), 4u);
+  }
+}
+
+TEST(StructureSetReader, NamesInACharacterSetThatCannotBeConvertedAreKeptAndSaid)
+{
+  const fs::path path = folder("unknown-character-set") / "RS.dcm";
+  writeWithFirstName(path, "R\xFC" "ckenmark", "ISO_IR 999");
+  const StructureSet set = readStructureSet(path.string());
+  EXPECT_EQ(set.structures[0].name, "R\xFC" "ckenmark");
+  ASSERT_EQ(set.notes.size(), 1u);
+  EXPECT_NE(set.notes[0].find("'ISO_IR 999'"), std::string::npos) << set.notes[0];
+  EXPECT_EQ(set.notes[0].find('\n'), std::string::npos) << set.notes[0];
+}
+
 TEST(StructureSetReader, ContoursOfAnUndeclaredROIAreKeptAndSaid)
 {
   // The first ROI's contours refer to ROI 99, which the Structure Set ROI Sequence does not list.
