@@ -329,7 +329,9 @@ std::vector<Structure> roiStructures(const StructureSet& set, const std::optiona
     s.rgba = { rois[n].rgb[0], rois[n].rgb[1], rois[n].rgb[2], 255 };
     for (const std::string& note : rois[n].notes)
       std::cerr << "SliceMesh: warning: " << who(s, "ROI") << oneLine(note) << std::endl;
-    if (rois[n].contours.empty())
+    if (!rois[n].unusableBecause.empty())
+      s.report.error = rois[n].unusableBecause; // a fault of the file: it fails as an ROI that cannot be meshed does
+    else if (rois[n].contours.empty())
     {
       // A point of interest (an isocentre, a marker: POINT items only) or an empty ROI is in nearly
       // every plan's structure set and has no surface: skipped, not failed, unless asked for by name.

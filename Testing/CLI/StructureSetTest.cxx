@@ -516,6 +516,38 @@ TEST(StructureSet, ANameInLatin1IsUtf8InTheOutputAndTheReportAndItsFileNameIsSaf
   expectValid(run.folder / "rois" / "001_R_ckenmark_C1.vtp");
 }
 
+TEST(StructureSet, TwoROIsOfOneNumberFailWithOneWarningAndTheOthersAreWritten)
+{
+  // Which of the two ROIs numbered 1 a contour of ROI 1 belongs to cannot be told: neither may get
+  // the other's contours (both went to the second, unsaid).
+  PlanarStructure a = nestedAnnulus();
+  a.name = "A";
+  PlanarStructure b = keyholeAnnulusRoi();
+  b.number = 1;
+  b.name = "B";
+  PlanarStructure kept = keyholeAnnulusRoi();
+  kept.number = 4;
+  kept.name = "Kept";
+  const fs::path report = freshFolder("StructureSetSharedNumberReport") / "report.json";
+  const SetRun run = meshSet("SharedNumber", { a, b, kept }, "--report " + quoted(report.string()));
+  EXPECT_EQ(run.result.exitCode, cli::MeshingFailed) << run.result.err;
+  std::size_t warnings = 0;
+  for (const std::string& line : linesOf(run.result.err))
+    warnings += line.find("warning") != std::string::npos &&
+                line.find("ROI number 1 is given to 2 ROIs, 'A' and 'B'") != std::string::npos;
+  EXPECT_EQ(warnings, 1u) << run.result.err;
+  EXPECT_TRUE(hasLine(run.result.err, "error: ROI 1 (A): ROI number 1 is also given to 'B'")) << run.result.err;
+  EXPECT_TRUE(hasLine(run.result.err, "error: ROI 1 (B): ROI number 1 is also given to 'A'")) << run.result.err;
+  EXPECT_TRUE(hasLine(run.result.err, "2 of 3 ROIs failed; the others were written")) << run.result.err;
+  EXPECT_FALSE(fs::exists(run.folder / "rois" / "001_A.vtp"));
+  EXPECT_FALSE(fs::exists(run.folder / "rois" / "001_B.vtp"));
+  const MeshValidation v = expectValid(run.folder / "rois" / "004_Kept.vtp");
+  EXPECT_NEAR(v.volume, annulusVolume(), 0.02 * annulusVolume());
+  const std::string json = fileText(report);
+  EXPECT_NE(json.find("ROI number 1 is also given to 'B'"), std::string::npos) << json;
+  EXPECT_NE(json.find("ROI number 1 is also given to 'A'"), std::string::npos) << json;
+}
+
 TEST(StructureSet, FilesThatAreNoStructureSetOrAreCutShortFailWithOneLineAndWriteNothing)
 {
   const fs::path folder = freshFolder("StructureSetBadFiles");

@@ -249,6 +249,37 @@ TEST(StructureSetReader, NamesInACharacterSetThatCannotBeConvertedAreKeptAndSaid
   EXPECT_EQ(set.notes[0].find('\n'), std::string::npos) << set.notes[0];
 }
 
+TEST(StructureSetReader, TwoROIsOfOneNumberGetNoContoursAndAreSaidOnce)
+{
+  // The ROI Contour Sequence names its ROI by number only: contours of number 3 could be either's.
+  const fs::path path = folder("shared-number") / "RS.dcm";
+  std::vector<PlanarStructure> rois = twoStructures();
+  rois[1].number = 3;
+  rois[1].name = "Other";
+  rois[1].contours.push_back(circle(60.0, 0.0, 0.0, 5.0, 16));
+  PlanarStructure third = rois[0];
+  third.number = 5;
+  third.name = "Kept";
+  rois.push_back(third);
+  writeRTStructureSet(path.string(), rois);
+  const StructureSet set = readStructureSet(path.string());
+  ASSERT_EQ(set.structures.size(), 3u);
+  for (std::size_t n = 0; n < 2; ++n)
+  {
+    EXPECT_EQ(set.structures[n].number, 3);
+    EXPECT_TRUE(set.structures[n].contours.empty()) << set.structures[n].name << " gets no contour of the other's";
+    EXPECT_NE(set.structures[n].unusableBecause.find("ROI number 3"), std::string::npos)
+      << set.structures[n].unusableBecause;
+  }
+  EXPECT_NE(set.structures[0].unusableBecause.find("'Other'"), std::string::npos) << set.structures[0].unusableBecause;
+  EXPECT_NE(set.structures[1].unusableBecause.find("'GTV'"), std::string::npos) << set.structures[1].unusableBecause;
+  EXPECT_EQ(set.structures[2].name, "Kept");
+  EXPECT_EQ(set.structures[2].contours.size(), 4u);
+  EXPECT_TRUE(set.structures[2].unusableBecause.empty());
+  ASSERT_EQ(set.notes.size(), 1u) << "one line for the number";
+  EXPECT_NE(set.notes[0].find("ROI number 3 is given to 2 ROIs, 'GTV' and 'Other'"), std::string::npos) << set.notes[0];
+}
+
 TEST(StructureSetReader, ContoursOfAnUndeclaredROIAreKeptAndSaid)
 {
   // The first ROI's contours refer to ROI 99, which the Structure Set ROI Sequence does not list.
