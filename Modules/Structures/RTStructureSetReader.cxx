@@ -104,22 +104,78 @@ std::vector<double> decimalStrings(DcmItem& item, const DcmTagKey& tag, const st
   return values;
 }
 
+/** Whether the text is UTF-8: every byte beyond ASCII part of a well-formed sequence (no overlong
+ *  forms, no surrogates, nothing beyond U+10FFFF). */
+bool isUtf8(const std::string& text)
+{
+  for (std::size_t i = 0; i < text.size();)
+  {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+    const unsigned char lead = byte(i);
+    const std::size_t length = lead < 0x80 ? 1 : (lead >> 5) == 0x6 ? 2 : (lead >> 4) == 0xE ? 3 : (lead >> 3) == 0x1E ? 4 : 0;
+    if (length == 0 || i + length > text.size())
+      return false;
+    std::uint32_t code = length == 1 ? lead : lead & (0x7F >> length);
+    for (std::size_t k = 1; k < length; ++k)
+    {
+      if ((byte(i + k) & 0xC0) != 0x80)
+        return false;
+      code = (code << 6) | (byte(i + k) & 0x3F);
+    }
+    const std::uint32_t smallest[] = { 0, 0, 0x80, 0x800, 0x10000 };
+    if (code < smallest[length] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF))
+      return false;
+    i += length;
+  }
+  return true;
+}
+
+/** Latin-1 bytes as UTF-8 (each byte is the code point of its character). */
+std::string latin1ToUtf8(const std::string& text)
+{
+  std::string utf8;
+  for (const char c : text)
+  {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x80)
+      utf8 += c;
+    else
+    {
+      utf8 += static_cast<char>(0xC0 | (byte >> 6));
+      utf8 += static_cast<char>(0x80 | (byte & 0x3F));
+    }
+  }
+  return utf8;
+}
+
 /** Converts the dataset's text (the ROI names) to UTF-8 from its Specific Character Set, so that
- *  names reach the output, the report and file names as one encoding. Without a Specific Character
- *  Set the text should be ASCII; bytes beyond it are taken as Latin-1 (ISO_IR 100), the character
- *  set of most such files, and ASCII stays as it is. Returns why the text could not be converted
- *  (an unknown or unsupported character set, bytes invalid in it), empty when it was. */
-std::string convertTextToUtf8(DcmFileFormat& file)
+ *  names reach the output, the report and file names as one encoding. Returns why the text could
+ *  not be converted (an unknown or unsupported character set, bytes invalid in it), empty when it
+ *  was. Without a Specific Character Set the text should be ASCII; it is left to undeclaredToUtf8. */
+std::string declaredCharacterSet(DcmFileFormat& file)
 {
   OFString declared;
   file.getDataset()->findAndGetOFStringArray(DCM_SpecificCharacterSet, declared);
-  const std::string charset = trimmed(declared);
-  const OFCondition converted =
-    charset.empty() ? file.getDataset()->convertCharacterSet("ISO_IR 100", "ISO_IR 192") : file.convertToUTF8();
+  return trimmed(declared);
+}
+
+std::string convertTextToUtf8(DcmFileFormat& file)
+{
+  const std::string charset = declaredCharacterSet(file);
+  if (charset.empty())
+    return {};
+  const OFCondition converted = file.convertToUTF8();
   if (converted.good())
     return {};
   return "its text could not be converted to UTF-8 from Specific Character Set '" + charset + "' (" + converted.text() +
          "): the ROI names are kept as stored";
+}
+
+/** A name from a set that declares no Specific Character Set: kept if it is UTF-8 (what many tools
+ *  write without saying so), else taken as Latin-1 (ISO_IR 100, the older systems' habit). */
+std::string undeclaredToUtf8(const std::string& name)
+{
+  return isUtf8(name) ? name : latin1ToUtf8(name);
 }
 
 /** Each item of a dcmrt sequence, in order (by index: its cursor steps once past the last item). */
@@ -166,6 +222,7 @@ StructureSet readWithDcmtk(const std::string& path)
     throw Error("'" + path + "' is not a DICOM RT Structure Set (Modality " +
                 (modality.empty() ? std::string("missing") : std::string(modality.c_str())) + ")");
   StructureSet set;
+  const bool undeclared = declaredCharacterSet(file).empty();
   if (const std::string fault = convertTextToUtf8(file); !fault.empty())
     set.notes.push_back("'" + path + "': " + fault);
   // The ROIs through dcmrt's typed sequence; the contours straight from the dataset. Reading the
@@ -205,7 +262,7 @@ StructureSet readWithDcmtk(const std::string& path)
                 if (item.getReferencedFrameOfReferenceUID(frame).good())
                   addFrameOfReference(frame);
                 roi.number = number;
-                roi.name = trimmed(name);
+                roi.name = undeclared ? undeclaredToUtf8(trimmed(name)) : trimmed(name);
                 if (roi.name.empty())
                   roi.name = "ROI_" + std::to_string(number);
                 byNumber.emplace(number, set.structures.size());
