@@ -2,6 +2,8 @@
 
 #include "Core/PlanarGeometry.h"
 
+#include <CGAL/box_intersection_d.h>
+
 #include <algorithm>
 
 namespace slicemesh
@@ -52,12 +54,43 @@ Polygon2 cleanContour(const Polygon2& contour, double tolerance, bool dropAreale
   return cleaned;
 }
 
+namespace
+{
+
+/** For each box, the others that meet it (touching counts), in index order: from CGAL's box
+ *  intersection (n log n in the boxes), not from every pair. A slice of a thresholded noisy image
+ *  holds a thousand contours and more, and every pair was compared several times per slice. */
+std::vector<std::vector<std::size_t>> meetingBoxes(const std::vector<Box2>& boxes)
+{
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
+  std::vector<Box> tagged;
+  tagged.reserve(boxes.size());
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+  {
+    double low[2] = { boxes[i].xmin, boxes[i].ymin }, high[2] = { boxes[i].xmax, boxes[i].ymax };
+    tagged.emplace_back(low, high, i);
+  }
+  std::vector<std::vector<std::size_t>> meeting(boxes.size());
+  CGAL::box_self_intersection_d(tagged.begin(), tagged.end(),
+                                [&](const Box& a, const Box& b)
+                                {
+                                  meeting[a.info()].push_back(b.info());
+                                  meeting[b.info()].push_back(a.info());
+                                });
+  for (std::vector<std::size_t>& others : meeting)
+    std::sort(others.begin(), others.end());
+  return meeting;
+}
+
+} // namespace
+
 ContourNesting orientAndNest(std::vector<Polygon2>& contours)
 {
   const std::size_t n = contours.size();
   std::vector<Box2> boxes(n);
   for (std::size_t i = 0; i < n; ++i)
     boxes[i] = boundingBox(contours[i]);
+  const std::vector<std::vector<std::size_t>> meeting = meetingBoxes(boxes);
 
   ContourNesting nesting;
   nesting.parent.assign(n, -1);
@@ -66,11 +99,11 @@ ContourNesting orientAndNest(std::vector<Polygon2>& contours)
   {
     // Contours of a slice never cross, so one vertex tells whether contour i lies inside contour j.
     const Point2& probe = contours[i].front();
-    for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t j : meeting[i])
     {
       const bool boxInside = boxes[j].xmin <= boxes[i].xmin && boxes[i].xmax <= boxes[j].xmax &&
                              boxes[j].ymin <= boxes[i].ymin && boxes[i].ymax <= boxes[j].ymax;
-      if (i == j || !boxInside || !isInside(contours[j], probe))
+      if (!boxInside || !isInside(contours[j], probe))
         continue;
       ++nesting.depth[i];
     }
@@ -81,10 +114,9 @@ ContourNesting orientAndNest(std::vector<Polygon2>& contours)
     if (nesting.depth[i] == 0)
       continue;
     const Point2& probe = contours[i].front();
-    for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t j : meeting[i])
     {
-      if (i != j && nesting.depth[j] == nesting.depth[i] - 1 && boxes[j].overlaps(boxes[i]) &&
-          isInside(contours[j], probe))
+      if (nesting.depth[j] == nesting.depth[i] - 1 && isInside(contours[j], probe))
       {
         nesting.parent[i] = static_cast<int>(j);
         break;
