@@ -16,8 +16,9 @@ constexpr std::int64_t cellsPerAxis = std::int64_t(1) << cellBits;
 constexpr int triangleBits = 25;
 constexpr std::uint64_t triangleMask = (std::uint64_t(1) << triangleBits) - 1;
 
-/** More cells than this around a query and it goes to the tree: its hint was far away. */
-constexpr std::int64_t mostCellsSearched = 64;
+/** More shells of cells than this around a query that has found nothing near and it looks at every
+ *  triangle: it lies far from the surface. */
+constexpr std::int64_t mostShells = 24;
 
 float below(double v)
 {
@@ -44,12 +45,16 @@ ClosestPointGrid::ClosestPointGrid(const TriangleMesh& mesh)
 {
   const std::size_t n = mesh.triangles.size();
   if (n == 0 || n > triangleMask)
-    return; // every query goes to the tree
+    return; // every query goes to the tree (built on first use)
   m_Boxes.resize(n);
   std::array<double, 3> low{ std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
                              std::numeric_limits<double>::infinity() };
   std::array<double, 3> high{ -low[0], -low[1], -low[2] };
-  std::vector<float> extents(n);
+  // The median triangle's box from a sample (an allocation the size of the mesh, freed here, would
+  // move glibc's threshold for mapping large blocks and leave the remesh's own blocks on the heap).
+  const std::size_t stride = std::max<std::size_t>(1, n / 4096);
+  std::vector<float> extents;
+  extents.reserve(n / stride + 1);
   for (std::size_t t = 0; t < n; ++t)
   {
     Box& box = m_Boxes[t];
@@ -70,7 +75,8 @@ ClosestPointGrid::ClosestPointGrid(const TriangleMesh& mesh)
       high[axis] = std::max(high[axis], static_cast<double>(box.high[axis]));
       largest = std::max(largest, box.high[axis] - box.low[axis]);
     }
-    extents[t] = largest;
+    if (t % stride == 0)
+      extents.push_back(largest);
   }
   if (!(std::isfinite(low[0]) && std::isfinite(low[1]) && std::isfinite(low[2]) && std::isfinite(high[0]) &&
         std::isfinite(high[1]) && std::isfinite(high[2])))
@@ -82,12 +88,14 @@ ClosestPointGrid::ClosestPointGrid(const TriangleMesh& mesh)
   // Cells twice the median triangle's box: a triangle covers a few cells, a cell holds a few dozen
   // triangles. Larger while the boxes would cover more than eight cells each on average, or the
   // extent more cells than a key names.
-  std::nth_element(extents.begin(), extents.begin() + static_cast<std::ptrdiff_t>(n / 2), extents.end());
+  const std::size_t middle = extents.size() / 2;
+  std::nth_element(extents.begin(), extents.begin() + static_cast<std::ptrdiff_t>(middle), extents.end());
   const double extent = std::max({ high[0] - low[0], high[1] - low[1], high[2] - low[2] });
-  m_CellSize = std::max({ 2.0 * static_cast<double>(extents[n / 2]), extent / double(cellsPerAxis - 2), 1e-300 });
+  m_CellSize = std::max({ 2.0 * static_cast<double>(extents[middle]), extent / double(cellsPerAxis - 2), 1e-300 });
+  std::uint64_t covered = 0;
   for (;; m_CellSize *= 2.0)
   {
-    std::uint64_t covered = 0;
+    covered = 0;
     for (const Box& box : m_Boxes)
     {
       const auto lo = cellOf({ box.low[0], box.low[1], box.low[2] });
@@ -97,7 +105,8 @@ ClosestPointGrid::ClosestPointGrid(const TriangleMesh& mesh)
     if (covered <= 8 * n || m_CellSize >= extent)
       break;
   }
-  std::vector<std::uint64_t> entries;
+  // Every allocation below is made once at its final size, for the same reason.
+  m_Entries.reserve(covered);
   for (std::size_t t = 0; t < n; ++t)
   {
     const Box& box = m_Boxes[t];
@@ -106,21 +115,24 @@ ClosestPointGrid::ClosestPointGrid(const TriangleMesh& mesh)
     for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
       for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
         for (std::int64_t z = lo[2]; z <= hi[2]; ++z)
-          entries.push_back(keyOf({ x, y, z }) << triangleBits | t);
+          m_Entries.push_back(keyOf({ x, y, z }) << triangleBits | t);
   }
-  std::sort(entries.begin(), entries.end());
-  m_Triangles.resize(entries.size());
-  for (std::size_t e = 0; e < entries.size(); ++e)
+  std::sort(m_Entries.begin(), m_Entries.end());
+  std::size_t cells = 0;
+  for (std::size_t e = 0; e < m_Entries.size(); ++e)
+    cells += e == 0 || (m_Entries[e] >> triangleBits) != (m_Entries[e - 1] >> triangleBits);
+  m_CellKeys.reserve(cells);
+  m_CellStart.reserve(cells + 1);
+  for (std::size_t e = 0; e < m_Entries.size(); ++e)
   {
-    const std::uint64_t key = entries[e] >> triangleBits;
+    const std::uint64_t key = m_Entries[e] >> triangleBits;
     if (m_CellKeys.empty() || m_CellKeys.back() != key)
     {
       m_CellKeys.push_back(key);
       m_CellStart.push_back(static_cast<std::uint32_t>(e));
     }
-    m_Triangles[e] = static_cast<std::uint32_t>(entries[e] & triangleMask);
   }
-  m_CellStart.push_back(static_cast<std::uint32_t>(entries.size()));
+  m_CellStart.push_back(static_cast<std::uint32_t>(m_Entries.size()));
   std::size_t slots = 16;
   while (slots < 2 * m_CellKeys.size())
     slots *= 2;
@@ -180,76 +192,94 @@ const TriangleMeshTree& ClosestPointGrid::tree() const
 
 ClosestPointGrid::Point ClosestPointGrid::closestPoint(const Point& query) const
 {
-  return tree().closest_point(query);
+  return search(query, std::nullopt);
 }
 
 ClosestPointGrid::Point ClosestPointGrid::closestPoint(const Point& query, const Point& hint) const
 {
-  if (m_Slots.empty())
-    return slicemesh::closestPoint(tree(), query, hint);
+  return search(query, hint);
+}
+
+ClosestPointGrid::Point ClosestPointGrid::search(const Point& query, const std::optional<Point>& hint) const
+{
   // As ClosestPointSearch: a triangle whose box lies beyond the closest point so far (with a margin
   // far above rounding) cannot give a closer one.
   const double margin = 1e-9 * (1.0 + std::max({ std::abs(query.x()), std::abs(query.y()), std::abs(query.z()) }));
-  double reach = std::sqrt(CGAL::squared_distance(query, hint)) + margin;
+  std::optional<Point> closest = hint;
+  double reach = hint ? std::sqrt(CGAL::squared_distance(query, *hint)) + margin : std::numeric_limits<double>::infinity();
+  double reachSquared = reach * reach;
   const std::array<double, 3> q{ query.x(), query.y(), query.z() };
-  const auto lo = cellOf({ q[0] - reach, q[1] - reach, q[2] - reach });
-  const auto hi = cellOf({ q[0] + reach, q[1] + reach, q[2] + reach });
-  if ((hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > mostCellsSearched)
-    return slicemesh::closestPoint(tree(), query, hint);
   const CgalKernel kernel;
   const auto project = kernel.construct_projected_point_3_object();
   const auto compare = kernel.compare_distance_3_object();
-  Point closest = hint;
-  double reachSquared = reach * reach;
-  auto searchCell = [&](const std::array<std::int64_t, 3>& cell)
+  auto consider = [&](std::uint32_t t)
   {
-    const auto [first, last] = cellEntries(keyOf(cell));
-    for (std::uint32_t e = first; e < last; ++e)
+    const Box& box = m_Boxes[t];
+    double boxDistance = 0.0;
+    for (int axis = 0; axis < 3; ++axis)
     {
-      const std::uint32_t t = m_Triangles[e];
-      const Box& box = m_Boxes[t];
-      double boxDistance = 0.0;
-      for (int axis = 0; axis < 3; ++axis)
-      {
-        const double outside = std::max({ static_cast<double>(box.low[axis]) - q[axis],
-                                          q[axis] - static_cast<double>(box.high[axis]), 0.0 });
-        boxDistance += outside * outside;
-      }
-      if (boxDistance > reachSquared)
-        continue;
-      const Point candidate = project(get(TriangleOfMesh{ &m_Mesh }, t), query);
-      // CGAL's rule (AABB_traits::Closest_point): the candidate unless it is farther.
-      if (compare(query, candidate, closest) != CGAL::LARGER && candidate != closest)
-      {
-        closest = candidate;
-        reach = std::sqrt(CGAL::squared_distance(query, closest)) + margin;
-        reachSquared = reach * reach;
-      }
+      const double outside = std::max({ static_cast<double>(box.low[axis]) - q[axis],
+                                        q[axis] - static_cast<double>(box.high[axis]), 0.0 });
+      boxDistance += outside * outside;
+    }
+    if (boxDistance > reachSquared)
+      return;
+    const Point candidate = project(get(TriangleOfMesh{ &m_Mesh }, t), query);
+    // CGAL's rule (AABB_traits::Closest_point): the candidate unless it is farther.
+    if (!closest || (compare(query, candidate, *closest) != CGAL::LARGER && candidate != *closest))
+    {
+      closest = candidate;
+      reach = std::sqrt(CGAL::squared_distance(query, *closest)) + margin;
+      reachSquared = reach * reach;
     }
   };
-  // The query's own cell first: the closest point is most often there, and once it is found the
-  // other cells' triangles, and most of the cells, lie beyond it.
+  if (m_Slots.empty()) // more triangles than an entry can name (or none): the tree
+  {
+    if (m_Mesh.triangles.empty())
+      return query;
+    return hint ? slicemesh::closestPoint(tree(), query, *hint) : tree().closest_point(query);
+  }
+  // Shells of cells around the query's own, nearest first, until the closest point found lies
+  // nearer than any cell not searched yet: after shell r, everything outside lies at least r cell
+  // sides away. A query far from the surface (no hint, or a hint many cells away) that still has found
+  // nothing after a few dozen shells looks at every triangle instead.
   const auto own = cellOf(q);
-  searchCell(own);
-  for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
-    for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
-      for (std::int64_t z = lo[2]; z <= hi[2]; ++z)
-      {
-        const std::array<std::int64_t, 3> cell{ x, y, z };
-        if (cell == own)
-          continue;
-        double cellDistance = 0.0;
-        for (int axis = 0; axis < 3; ++axis)
+  const std::int64_t last = cellsPerAxis - 1;
+  for (std::int64_t r = 0;; ++r)
+  {
+    if (r > 0 && reach <= static_cast<double>(r - 1) * m_CellSize)
+      break;
+    if (own[0] - r < 0 && own[1] - r < 0 && own[2] - r < 0 && own[0] + r > last && own[1] + r > last && own[2] + r > last)
+      break; // the whole grid searched
+    if (r > mostShells)
+    {
+      for (std::uint32_t t = 0; t < m_Boxes.size(); ++t)
+        consider(t);
+      break;
+    }
+    for (std::int64_t x = own[0] - r; x <= own[0] + r; ++x)
+      for (std::int64_t y = own[1] - r; y <= own[1] + r; ++y)
+        for (std::int64_t z = own[2] - r; z <= own[2] + r; ++z)
         {
-          const double low = m_Origin[axis] + static_cast<double>(cell[axis]) * m_CellSize;
-          const double outside = std::max({ low - q[axis], q[axis] - (low + m_CellSize), 0.0 });
-          cellDistance += outside * outside;
+          const bool onShell = std::max({ std::abs(x - own[0]), std::abs(y - own[1]), std::abs(z - own[2]) }) == r;
+          if (!onShell || x < 0 || y < 0 || z < 0 || x > last || y > last || z > last)
+            continue;
+          const std::array<std::int64_t, 3> cell{ x, y, z };
+          double cellDistance = 0.0;
+          for (int axis = 0; axis < 3; ++axis)
+          {
+            const double low = m_Origin[axis] + static_cast<double>(cell[axis]) * m_CellSize;
+            const double outside = std::max({ low - q[axis], q[axis] - (low + m_CellSize), 0.0 });
+            cellDistance += outside * outside;
+          }
+          if (cellDistance > reachSquared) // a closer point of a triangle lies in a cell as close
+            continue;
+          const auto [first, end] = cellEntries(keyOf(cell));
+          for (std::uint32_t e = first; e < end; ++e)
+            consider(static_cast<std::uint32_t>(m_Entries[e] & triangleMask));
         }
-        if (cellDistance > reachSquared) // a closer point of a triangle lies in a cell as close
-          continue;
-        searchCell(cell);
-      }
-  return closest;
+  }
+  return closest ? *closest : query;
 }
 
 } // namespace slicemesh
