@@ -1,8 +1,7 @@
 #include "Contours/ContourNesting.h"
 
+#include "Core/MeetingBoxes.h"
 #include "Core/PlanarGeometry.h"
-
-#include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
 
@@ -57,26 +56,17 @@ Polygon2 cleanContour(const Polygon2& contour, double tolerance, bool dropAreale
 namespace
 {
 
-/** For each box, the others that meet it (touching counts), in index order: from CGAL's box
- *  intersection (n log n in the boxes), not from every pair. A slice of a thresholded noisy image
- *  holds a thousand contours and more, and every pair was compared several times per slice. */
-std::vector<std::vector<std::size_t>> meetingBoxes(const std::vector<Box2>& boxes)
+/** For each box, the others that meet it (touching counts), in index order (meetingBoxes): a slice
+ *  of a thresholded noisy image holds a thousand contours and more, and every pair was compared
+ *  several times per slice. */
+std::vector<std::vector<std::size_t>> meetingBoxesOf(const std::vector<Box2>& boxes)
 {
-  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
-  std::vector<Box> tagged;
-  tagged.reserve(boxes.size());
-  for (std::size_t i = 0; i < boxes.size(); ++i)
-  {
-    double low[2] = { boxes[i].xmin, boxes[i].ymin }, high[2] = { boxes[i].xmax, boxes[i].ymax };
-    tagged.emplace_back(low, high, i);
-  }
   std::vector<std::vector<std::size_t>> meeting(boxes.size());
-  CGAL::box_self_intersection_d(tagged.begin(), tagged.end(),
-                                [&](const Box& a, const Box& b)
-                                {
-                                  meeting[a.info()].push_back(b.info());
-                                  meeting[b.info()].push_back(a.info());
-                                });
+  for (const auto& [i, j] : meetingBoxes(boxes))
+  {
+    meeting[i].push_back(j);
+    meeting[j].push_back(i);
+  }
   for (std::vector<std::size_t>& others : meeting)
     std::sort(others.begin(), others.end());
   return meeting;
@@ -90,7 +80,7 @@ ContourNesting orientAndNest(std::vector<Polygon2>& contours)
   std::vector<Box2> boxes(n);
   for (std::size_t i = 0; i < n; ++i)
     boxes[i] = boundingBox(contours[i]);
-  const std::vector<std::vector<std::size_t>> meeting = meetingBoxes(boxes);
+  const std::vector<std::vector<std::size_t>> meeting = meetingBoxesOf(boxes);
 
   ContourNesting nesting;
   nesting.parent.assign(n, -1);

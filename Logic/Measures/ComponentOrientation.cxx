@@ -1,13 +1,13 @@
 #include "Measures/ComponentOrientation.h"
 
 #include "Core/BoundingBox.h"
+#include "Core/MeetingBoxes.h"
 #include "Core/ParallelFor.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/MeshValidation.h"
 #include "Measures/TriangleMeshTree.h"
 
 #include <CGAL/Polygon_mesh_processing/internal/Side_of_triangle_mesh/Point_inside_vertical_ray_cast.h>
-#include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
 #include <memory>
@@ -57,29 +57,17 @@ std::size_t misorientedComponents(const std::vector<const TriangleMesh*>& compon
   for (const TriangleMesh* c : components)
     boxes.push_back(boxOfTriangles(*c));
   // Surfaces that do not cross nest only if their boxes do: most components nest in none, and only
-  // a component whose box holds another's needs a tree. The pairs of boxes that meet come from
-  // CGAL's box intersection (n log n), not from every pair: a thresholded noisy MRI has a hundred
-  // thousand specks.
-  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
-  std::vector<Box> meeting;
-  for (std::size_t c = 0; c < n; ++c)
-    if (!components[c]->triangles.empty())
-    {
-      BoundingBox box = boxes[c]; // CGAL takes non-const arrays
-      meeting.emplace_back(box.low.data(), box.high.data(), c);
-    }
+  // a component whose box holds another's needs a tree. (A component without triangles has an
+  // empty box, which meets none.)
   std::vector<std::vector<std::size_t>> enclosing(n); // per component, those whose box holds its own
   std::vector<char> needed(n, 0);
-  CGAL::box_self_intersection_d(meeting.begin(), meeting.end(),
-                                [&](const Box& x, const Box& y)
-                                {
-                                  for (const auto& [b, a] : { std::pair(x.info(), y.info()), std::pair(y.info(), x.info()) })
-                                    if (boxes[b].contains(boxes[a]))
-                                    {
-                                      enclosing[a].push_back(b);
-                                      needed[b] = 1;
-                                    }
-                                });
+  for (const auto& [i, j] : meetingBoxes(boxes))
+    for (const auto& [b, a] : { std::pair(i, j), std::pair(j, i) })
+      if (boxes[b].contains(boxes[a]))
+      {
+        enclosing[a].push_back(b);
+        needed[b] = 1;
+      }
   std::vector<std::unique_ptr<Enclosure>> enclosures(n);
   parallelFor(n, threads,
               [&](std::size_t b)

@@ -1,6 +1,7 @@
 #include "Measures/MeshCrossings.h"
 
 #include "Core/BoundingBox.h"
+#include "Core/MeetingBoxes.h"
 #include "Core/ParallelFor.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -40,24 +41,11 @@ std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh
 {
   // Pairs of meshes whose bounding boxes overlap: only their triangles can meet, and only within
   // the overlap of the two boxes.
+  // (A mesh without triangles has an empty box, which meets none.)
   std::vector<BoundingBox> boxOfMesh(meshes.size());
-  std::vector<Box> meshBoxes;
   for (std::size_t m = 0; m < meshes.size(); ++m)
-  {
-    if (meshes[m]->triangles.empty())
-      continue;
     boxOfMesh[m] = boxOfTriangles(*meshes[m]);
-    meshBoxes.push_back(tagged(boxOfMesh[m], m, 0));
-  }
-  std::vector<std::pair<std::size_t, std::size_t>> meshPairs;
-  CGAL::box_self_intersection_d(meshBoxes.begin(), meshBoxes.end(),
-                                [&](const Box& a, const Box& b)
-                                {
-                                  const std::size_t first = a.info().first, second = b.info().first;
-                                  meshPairs.emplace_back(std::min(first, second), std::max(first, second));
-                                });
-  std::sort(meshPairs.begin(), meshPairs.end());
-  meshPairs.erase(std::unique(meshPairs.begin(), meshPairs.end()), meshPairs.end());
+  const std::vector<std::pair<std::size_t, std::size_t>> meshPairs = meetingBoxes(boxOfMesh);
   // For each mesh, its triangles within each partner's box, from one box intersection of its
   // triangles' boxes with its partners' boxes: a mesh whose box holds a thousand others (a brain's
   // outer surface around the specks of a thresholded MRI) was scanned whole once per partner.
