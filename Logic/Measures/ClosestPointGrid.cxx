@@ -1,5 +1,7 @@
 #include "Measures/ClosestPointGrid.h"
 
+#include "Core/BoundingBox.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -47,9 +49,7 @@ ClosestPointGrid::ClosestPointGrid(const TriangleMesh& mesh)
   if (n == 0 || n > triangleMask)
     return; // every query goes to the tree (built on first use)
   m_Boxes.resize(n);
-  std::array<double, 3> low{ std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-                             std::numeric_limits<double>::infinity() };
-  std::array<double, 3> high{ -low[0], -low[1], -low[2] };
+  BoundingBox all;
   // The median triangle's box from a sample (an allocation the size of the mesh, freed here, would
   // move glibc's threshold for mapping large blocks and leave the remesh's own blocks on the heap).
   const std::size_t stride = std::max<std::size_t>(1, n / 4096);
@@ -57,29 +57,24 @@ ClosestPointGrid::ClosestPointGrid(const TriangleMesh& mesh)
   extents.reserve(n / stride + 1);
   for (std::size_t t = 0; t < n; ++t)
   {
+    const BoundingBox exact = boxOfTriangle(mesh, t);
     Box& box = m_Boxes[t];
     float largest = 0.0f;
     for (int axis = 0; axis < 3; ++axis)
     {
-      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-      for (std::int32_t v : mesh.triangles[t])
-      {
-        const Point3& p = mesh.points[static_cast<std::size_t>(v)];
-        const double c = axis == 0 ? p.x : axis == 1 ? p.y : p.z;
-        lo = std::min(lo, c);
-        hi = std::max(hi, c);
-      }
-      box.low[axis] = below(lo);
-      box.high[axis] = above(hi);
-      low[axis] = std::min(low[axis], static_cast<double>(box.low[axis]));
-      high[axis] = std::max(high[axis], static_cast<double>(box.high[axis]));
+      box.low[axis] = below(exact.low[axis]);
+      box.high[axis] = above(exact.high[axis]);
       largest = std::max(largest, box.high[axis] - box.low[axis]);
     }
+    all.add(Point3{ box.low[0], box.low[1], box.low[2] }); // the grid covers the rounded boxes
+    all.add(Point3{ box.high[0], box.high[1], box.high[2] });
     if (t % stride == 0)
       extents.push_back(largest);
   }
-  if (!(std::isfinite(low[0]) && std::isfinite(low[1]) && std::isfinite(low[2]) && std::isfinite(high[0]) &&
-        std::isfinite(high[1]) && std::isfinite(high[2])))
+  const std::array<double, 3>& low = all.low;
+  const std::array<double, 3>& high = all.high;
+  if (!std::all_of(low.begin(), low.end(), [](double v) { return std::isfinite(v); }) ||
+      !std::all_of(high.begin(), high.end(), [](double v) { return std::isfinite(v); }))
   {
     m_Boxes.clear();
     return;
