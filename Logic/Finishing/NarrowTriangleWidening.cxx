@@ -2,6 +2,7 @@
 
 #include "Finishing/CrossingRepair.h"
 #include "Finishing/PieceRejection.h"
+#include "Measures/MeshComponents.h"
 #include "Measures/TriangleAngles.h"
 
 #include <cmath>
@@ -23,7 +24,7 @@ constexpr double narrowAngle = 30.0;
 std::vector<char> widenableVertices(const TriangleMesh& mesh, const std::vector<char>& fixed)
 {
   const SmallestAngleBound wide(narrowAngle * M_PI / 180.0);
-  std::vector<char> narrowCorner(mesh.points.size(), 0);
+  std::vector<char> widenable(mesh.points.size(), 0); // the narrow triangles' corners, then a ring more
   bool any = false;
   for (const Triangle& t : mesh.triangles)
   {
@@ -31,18 +32,13 @@ std::vector<char> widenableVertices(const TriangleMesh& mesh, const std::vector<
     if (!wide.metBy(corner(0), corner(1), corner(2)))
     {
       for (std::int32_t v : t)
-        narrowCorner[static_cast<std::size_t>(v)] = 1;
+        widenable[static_cast<std::size_t>(v)] = 1;
       any = true;
     }
   }
   if (!any)
     return {};
-  std::vector<char> widenable = narrowCorner;
-  for (const Triangle& t : mesh.triangles)
-    if (narrowCorner[static_cast<std::size_t>(t[0])] || narrowCorner[static_cast<std::size_t>(t[1])] ||
-        narrowCorner[static_cast<std::size_t>(t[2])])
-      for (std::int32_t v : t)
-        widenable[static_cast<std::size_t>(v)] = 1;
+  growByRings(mesh, widenable, 1);
   if (!fixed.empty() && fixed.size() != mesh.points.size())
     throw Error("narrow triangle widening: the fixed vertices' flags do not match the mesh");
   for (std::size_t v = 0; v < fixed.size(); ++v)
