@@ -1,5 +1,6 @@
 #include "QualityReport.h"
 
+#include "Core/Utf8.h"
 #include "FileReplacement.h"
 
 #include <algorithm>
@@ -11,37 +12,6 @@
 
 namespace slicemesh::cli
 {
-namespace
-{
-
-/** The length of the valid UTF-8 sequence at `at` (1 to 4 bytes), 0 when it is not one: a stray
- *  continuation byte, a sequence cut short, an overlong form, a surrogate or beyond U+10FFFF. */
-std::size_t utf8SequenceLength(const unsigned char* at, const unsigned char* end)
-{
-  const unsigned char lead = at[0];
-  if (lead < 0x80)
-    return 1;
-  std::size_t length = 0; // 0xC0, 0xC1 and 0xF5 on lead only overlong forms or beyond U+10FFFF
-  if (lead >= 0xC2 && lead <= 0xDF)
-    length = 2;
-  else if (lead >= 0xE0 && lead <= 0xEF)
-    length = 3;
-  else if (lead >= 0xF0 && lead <= 0xF4)
-    length = 4;
-  if (length == 0 || static_cast<std::size_t>(end - at) < length)
-    return 0;
-  for (std::size_t k = 1; k < length; ++k)
-    if ((at[k] & 0xC0) != 0x80)
-      return 0;
-  // The second byte's range that excludes overlong forms, surrogates and code points over U+10FFFF.
-  const unsigned char second = at[1];
-  if ((lead == 0xE0 && second < 0xA0) || (lead == 0xED && second > 0x9F) || (lead == 0xF0 && second < 0x90) ||
-      (lead == 0xF4 && second > 0x8F))
-    return 0;
-  return length;
-}
-
-} // namespace
 
 std::string jsonString(const std::string& text)
 {

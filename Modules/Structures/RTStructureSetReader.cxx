@@ -1,6 +1,8 @@
 // DICOM RT Structure Sets through DCMTK (its ROIs by dcmrt's typed sequence, contours from the dataset): the plugin SliceMeshStructuresDicom.
 #include "RTStructureSetPlugin.h"
 
+#include "Core/Utf8.h"
+
 #include <dcmtk/dcmdata/dcfilefo.h>
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcitem.h>
@@ -102,32 +104,6 @@ std::vector<double> decimalStrings(DcmItem& item, const DcmTagKey& tag, const st
     values.push_back(value);
   }
   return values;
-}
-
-/** Whether the text is UTF-8: every byte beyond ASCII part of a well-formed sequence (no overlong
- *  forms, no surrogates, nothing beyond U+10FFFF). */
-bool isUtf8(const std::string& text)
-{
-  for (std::size_t i = 0; i < text.size();)
-  {
-    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
-    const unsigned char lead = byte(i);
-    const std::size_t length = lead < 0x80 ? 1 : (lead >> 5) == 0x6 ? 2 : (lead >> 4) == 0xE ? 3 : (lead >> 3) == 0x1E ? 4 : 0;
-    if (length == 0 || i + length > text.size())
-      return false;
-    std::uint32_t code = length == 1 ? lead : lead & (0x7F >> length);
-    for (std::size_t k = 1; k < length; ++k)
-    {
-      if ((byte(i + k) & 0xC0) != 0x80)
-        return false;
-      code = (code << 6) | (byte(i + k) & 0x3F);
-    }
-    const std::uint32_t smallest[] = { 0, 0, 0x80, 0x800, 0x10000 };
-    if (code < smallest[length] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF))
-      return false;
-    i += length;
-  }
-  return true;
 }
 
 /** Latin-1 bytes as UTF-8 (each byte is the code point of its character). */
