@@ -4,7 +4,6 @@
 #include "PipelineStep.h"
 #include "PipelineStructures.h"
 
-#include "Core/AreaNormal.h"
 #include "Core/ParallelFor.h"
 #include "FileReplacement.h"
 #include "Finishing/SurfaceSmoothing.h"
@@ -134,14 +133,11 @@ bool shears(const SliceFrame& frame)
  *  space where its frame shears: the report says what the file holds. */
 void measuredInPhysicalSpace(const TriangleMesh& physical, MeshValidation& validation, RunQuality& quality)
 {
-  double area = 0.0;
-  for (const Triangle& t : physical.triangles)
-  {
-    const Point3 n = areaNormal(physical, t);
-    area += 0.5 * std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-  }
-  validation.area = area;
-  validation.volume = signedVolume(physical);
+  const MeshValidation measured = validateMeshTopology(physical);
+  validation.area = measured.area;
+  validation.volume = measured.volume;
+  validation.minAngleDegrees = measured.minAngleDegrees;
+  validation.fractionAnglesBelow30 = measured.fractionAnglesBelow30;
   quality.shape = measureMeshQuality(physical);
 }
 
