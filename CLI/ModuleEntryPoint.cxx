@@ -19,6 +19,7 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -195,13 +196,25 @@ PipelineSettings settingsFrom(const ParsedArguments& arguments)
   return settings;
 }
 
+/** "123.4 mm^3 (0.12 mL)": a tenth of a mm^3 as most volumes are read, but significant digits where
+ *  that would print a small structure on a fine grid (a micro-CT's) as 0.0. */
+std::string volumeText(double mm3)
+{
+  std::ostringstream text;
+  if (std::abs(mm3) >= 10.0 || mm3 == 0.0)
+    text << std::fixed << std::setprecision(1) << mm3 << " mm^3 (" << std::setprecision(2) << mm3 / 1000.0 << " mL)";
+  else
+    text << std::setprecision(3) << mm3 << " mm^3 (" << mm3 / 1000.0 << " mL)";
+  return text.str();
+}
+
 std::string summaryLine(const PipelineResult& result, const std::string& outputModel, bool eachStructure)
 {
   const MeshValidation& v = result.validation;
   std::ostringstream line;
   line << "SliceMesh: " << v.triangles << " triangles, " << (v.closed() ? "closed" : "NOT closed") << ", volume "
-       << std::fixed << std::setprecision(1) << v.volume << " mm^3 (" << std::setprecision(2) << v.volume / 1000.0
-       << " mL), " << result.seconds << " s -> " << outputModel << "; "
+       << volumeText(v.volume) << ", " << std::fixed << std::setprecision(2) << result.seconds << " s -> "
+       << outputModel << "; "
        << qualitySummary(v, result.quality, eachStructure);
   return line.str();
 }
@@ -219,8 +232,7 @@ std::string roiLine(const LabelReport& roi)
   else
   {
     const MeshValidation& v = roi.validation;
-    line << "volume " << std::fixed << std::setprecision(1) << v.volume << " mm^3 (" << std::setprecision(2)
-         << v.volume / 1000.0 << " mL), " << v.triangles << " triangles, " << (v.valid() ? "valid" : "NOT valid")
+    line << "volume " << volumeText(v.volume) << ", " << v.triangles << " triangles, " << (v.valid() ? "valid" : "NOT valid")
          << ", genus " << roi.quality.genus;
     if (!roi.path.empty())
       line << " -> " << roi.path;

@@ -78,7 +78,12 @@ void readArguments(const ParsedArguments& arguments, PipelineSettings& settings)
     char* end = nullptr;
     const long value = std::strtol(label.c_str(), &end, 10);
     if (end != label.c_str() && *end == '\0')
+    {
+      // Voxels of value 0 are the background the labels are cut from, never a structure.
+      if (value == 0)
+        throw ArgumentError("--labels: 0 is the background, not a label (give the labels to mesh, e.g. --labels 1,3)");
       multi.labels.push_back(static_cast<int>(value));
+    }
     else
       multi.labelNames.push_back(label);
   }

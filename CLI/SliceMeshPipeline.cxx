@@ -1,6 +1,7 @@
 #include "SliceMeshPipeline.h"
 
 #include "LengthLimits.h"
+#include "MadeFolders.h"
 #include "PipelineStep.h"
 #include "PipelineStructures.h"
 
@@ -53,14 +54,14 @@ enum Stage : std::size_t
   Writing
 };
 
-/** Throws WriteFailed unless `folder` exists (or, with `create`, can be made) and a file can be
+/** Throws WriteFailed unless `folder` exists (or, given `made`, can be made) and a file can be
  *  made in it: probed with a file of our own, since access() says yes to root on any folder. */
-void requireWritableFolder(const fs::path& folder, bool create, const std::string& what)
+void requireWritableFolder(const fs::path& folder, MadeFolders* made, const std::string& what)
 {
-  if (create && !fs::is_directory(folder))
+  if (made && !fs::is_directory(folder))
   {
     std::error_code error;
-    fs::create_directories(folder, error);
+    made->make(folder, error);
     if (error)
       throw PipelineFailure(WriteFailed, "cannot create the output folder '" + folder.string() + "': " + error.message());
   }
@@ -80,7 +81,7 @@ void requireWritableFolder(const fs::path& folder, bool create, const std::strin
 
 /** Everything that can fail without reading the input, checked before any work so that such a
  *  run writes nothing. */
-ColorTable checkBeforeWork(const PipelineSettings& settings)
+ColorTable checkBeforeWork(const PipelineSettings& settings, MadeFolders& made)
 {
   // The folder of the file each output replaces: a symbolic link's file's (writablePlace).
   auto folderOf = [](const std::string& file, const std::string& what)
@@ -88,19 +89,19 @@ ColorTable checkBeforeWork(const PipelineSettings& settings)
     const fs::path place = guarded(WriteFailed, [&] { return writablePlace(file, what); });
     return place.has_parent_path() ? place.parent_path() : fs::path(".");
   };
-  requireWritableFolder(folderOf(settings.outputModel, "mesh"), false, "cannot write mesh '" + settings.outputModel + "'");
+  requireWritableFolder(folderOf(settings.outputModel, "mesh"), nullptr, "cannot write mesh '" + settings.outputModel + "'");
   // The files written after the mesh: a missing folder must not cost the whole run.
   if (!settings.reportFile.empty())
-    requireWritableFolder(folderOf(settings.reportFile, "report"), false,
+    requireWritableFolder(folderOf(settings.reportFile, "report"), nullptr,
                           "cannot write report '" + settings.reportFile + "'");
   if (!settings.returnParameterFile.empty())
-    requireWritableFolder(folderOf(settings.returnParameterFile, "the return-parameter file"), false,
+    requireWritableFolder(folderOf(settings.returnParameterFile, "the return-parameter file"), nullptr,
                           "cannot write the return-parameter file '" + settings.returnParameterFile + "'");
   if (!settings.snapshotFile.empty())
-    requireWritableFolder(folderOf(settings.snapshotFile, "snapshot"), false,
+    requireWritableFolder(folderOf(settings.snapshotFile, "snapshot"), nullptr,
                           "cannot write snapshot '" + settings.snapshotFile + "'");
   if ((settings.multiLabel.enabled || settings.contours.enabled()) && !settings.multiLabel.outputDirectory.empty())
-    requireWritableFolder(settings.multiLabel.outputDirectory, true,
+    requireWritableFolder(settings.multiLabel.outputDirectory, &made,
                           std::string("cannot write the ") + (settings.contours.enabled() ? "ROI" : "label") +
                             " meshes into '" + settings.multiLabel.outputDirectory + "'");
   std::string reason;
@@ -225,7 +226,8 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   const bool perLabel = settings.multiLabel.enabled || fromContours || segmentationInput; // one mesh per structure
   const std::string noun = fromContours ? "ROI" : perLabel ? "label" : "";
   const std::string input = fromContours ? settings.contours.path : settings.inputVolume;
-  const ColorTable colors = checkBeforeWork(settings);
+  MadeFolders madeFolders;
+  const ColorTable colors = checkBeforeWork(settings, madeFolders);
   StageTimes times;
   auto startStage = [&](Stage stage)
   {
@@ -578,6 +580,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
             << failures.front();
     throw PipelineFailure(MeshingFailed, message.str());
   }
+  madeFolders.keep();
   return result;
 }
 

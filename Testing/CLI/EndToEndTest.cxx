@@ -338,7 +338,37 @@ TEST(EndToEnd, MultiLabelDropsComponentsUnderTheMinimumVolume)
                                       quoted(output.string()));
   EXPECT_EQ(none.exitCode, cli::EmptySegmentation) << none.err;
   EXPECT_FALSE(fs::exists(output));
-  EXPECT_TRUE(fs::is_empty(folder / "none"));
+  EXPECT_FALSE(fs::exists(folder / "none")) << "the folder the failed run made is removed again";
+  // A folder the user had stays, empty as it was.
+  fs::create_directory(folder / "theirs");
+  EXPECT_EQ(runSliceMesh("--minimumComponentVolume 1000 --outputDirectory " + quoted((folder / "theirs").string()) +
+                         " " + quoted(input.string()) + " " + quoted(output.string()))
+              .exitCode,
+            cli::EmptySegmentation);
+  EXPECT_TRUE(fs::is_directory(folder / "theirs"));
+  // Of nested folders the run made, each is removed; the one it found is kept.
+  EXPECT_EQ(runSliceMesh("--outputDirectory " + quoted((folder / "theirs" / "a" / "b").string()) + " " +
+                         quoted((folder / "missing.nrrd").string()) + " " + quoted(output.string()))
+              .exitCode,
+            cli::UnreadableInput);
+  EXPECT_FALSE(fs::exists(folder / "theirs" / "a"));
+  EXPECT_TRUE(fs::is_directory(folder / "theirs"));
+}
+
+TEST(EndToEnd, SummaryVolumeOfATinyStructureIsNotRoundedToZero)
+{
+  // A 4 x 4 x 4 voxel cube at 10 micrometres (a micro-CT's grid): 6.4e-5 mm^3.
+  const fs::path folder = freshFolder("e2e-tiny-volume");
+  const fs::path input = folder / "cube.mha";
+  writeMetaImage(input, { 8, 8, 8 }, { 0.01, 0.01, 0.01 },
+                 [](int i, int j, int k) { return i >= 2 && i < 6 && j >= 2 && j < 6 && k >= 2 && k < 6 ? 1 : 0; });
+  const RunResult r = runSliceMesh(quoted(input.string()) + " " + quoted((folder / "cube.vtp").string()));
+  ASSERT_EQ(r.exitCode, cli::Success) << r.err;
+  const std::string summary = linesOf(r.out).back();
+  const std::size_t at = summary.find(", volume ");
+  ASSERT_NE(at, std::string::npos) << summary;
+  const double volume = std::stod(summary.substr(at + 9));
+  EXPECT_NEAR(volume, 6.4e-5, 0.2 * 6.4e-5) << summary;
 }
 
 /** A number that follows `"key": ` in a JSON text (the first occurrence after `from`); NaN if none. */

@@ -180,6 +180,17 @@ TEST(Executable, ExistingOutputIsUntouchedOnFailure)
   EXPECT_EQ(fileText(output), "precious");
 }
 
+TEST(Executable, LabelsZeroIsAUsageError)
+{
+  // 0 is the background: "no voxel has label 0" after reading the whole volume said the wrong thing.
+  const fs::path folder = freshFolder("labels-zero");
+  const RunResult r = runSliceMesh("--labels 1,0 " + quoted((folder / "missing.nrrd").string()) + " " +
+                                   quoted((folder / "out.vtp").string()));
+  EXPECT_EQ(r.exitCode, cli::BadArguments);
+  EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("background"), std::string::npos) << r.err;
+}
+
 TEST(Executable, LabelAndLabelsTogetherAreAUsageError)
 {
   // One would be ignored without a word (the run meshed --labels and dropped --label).
