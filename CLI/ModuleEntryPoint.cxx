@@ -19,7 +19,6 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -196,16 +195,10 @@ PipelineSettings settingsFrom(const ParsedArguments& arguments)
   return settings;
 }
 
-/** "123.4 mm^3 (0.12 mL)": a tenth of a mm^3 as most volumes are read, but significant digits where
- *  that would print a small structure on a fine grid (a micro-CT's) as 0.0. */
+/** "123.4 mm^3 (0.12 mL)". */
 std::string volumeText(double mm3)
 {
-  std::ostringstream text;
-  if (std::abs(mm3) >= 10.0 || mm3 == 0.0)
-    text << std::fixed << std::setprecision(1) << mm3 << " mm^3 (" << std::setprecision(2) << mm3 / 1000.0 << " mL)";
-  else
-    text << std::setprecision(3) << mm3 << " mm^3 (" << mm3 / 1000.0 << " mL)";
-  return text.str();
+  return measureText(mm3, 1) + " mm^3 (" + measureText(mm3 / 1000.0, 2) + " mL)";
 }
 
 std::string summaryLine(const PipelineResult& result, const std::string& outputModel, bool eachStructure)

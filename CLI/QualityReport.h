@@ -72,6 +72,10 @@ struct RunQuality
   std::vector<std::pair<std::string, double>> stageSeconds;
 };
 
+/** `value` with `decimals` decimals, as the summary prints a measure; in three significant digits
+ *  where that would round a non-zero value to 0 (a structure on a micrometre grid). */
+std::string measureText(double value, int decimals);
+
 /** The finishing part of the summary: "finish Remeshed (target edge 1.14 mm)"; when some pieces got
  *  less than asked, "finish Remeshed (target edge 1.14 mm; 3 of 2149 pieces 2 smoothed only, 1 left
  *  as tiled, see the warning; 40 specks kept as tiled)"; when none got what was asked, "finish
