@@ -1,5 +1,7 @@
 #include "Measures/ClosestPointGrid.h"
 
+#include "Core/GridCellSize.h"
+
 #include "Core/BoundingBox.h"
 
 #include <algorithm>
@@ -50,9 +52,7 @@ ClosestPointGrid::ClosestPointGrid(const TriangleMesh& mesh)
     return; // every query goes to the tree (built on first use)
   m_Boxes.resize(n);
   BoundingBox all;
-  // The median triangle's box from a sample (an allocation the size of the mesh, freed here, would
-  // move glibc's threshold for mapping large blocks and leave the remesh's own blocks on the heap).
-  const std::size_t stride = std::max<std::size_t>(1, n / 4096);
+  const std::size_t stride = cellSizeSampleStride(n);
   std::vector<float> extents;
   extents.reserve(n / stride + 1);
   for (std::size_t t = 0; t < n; ++t)
@@ -80,26 +80,25 @@ ClosestPointGrid::ClosestPointGrid(const TriangleMesh& mesh)
     return;
   }
   m_Origin = low;
-  // Cells twice the median triangle's box: a triangle covers a few cells, a cell holds a few dozen
-  // triangles. Larger while the boxes would cover more than eight cells each on average, or the
-  // extent more cells than a key names.
-  const std::size_t middle = extents.size() / 2;
-  std::nth_element(extents.begin(), extents.begin() + static_cast<std::ptrdiff_t>(middle), extents.end());
+  // Cells twice the median triangle's box (chooseCellSize), and never more along the extent than a
+  // key names.
   const double extent = std::max({ high[0] - low[0], high[1] - low[1], high[2] - low[2] });
-  m_CellSize = std::max({ 2.0 * static_cast<double>(extents[middle]), extent / double(cellsPerAxis - 2), 1e-300 });
-  std::uint64_t covered = 0;
-  for (;; m_CellSize *= 2.0)
-  {
-    covered = 0;
-    for (const Box& box : m_Boxes)
-    {
-      const auto lo = cellOf({ box.low[0], box.low[1], box.low[2] });
-      const auto hi = cellOf({ box.high[0], box.high[1], box.high[2] });
-      covered += static_cast<std::uint64_t>((hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1));
-    }
-    if (covered <= 8 * n || m_CellSize >= extent)
-      break;
-  }
+  const CellSizeChoice choice =
+    chooseCellSize(std::move(extents), n, extent, extent / double(cellsPerAxis - 2),
+                   [&](double size)
+                   {
+                     m_CellSize = size; // cellOf's
+                     std::uint64_t covered = 0;
+                     for (const Box& box : m_Boxes)
+                     {
+                       const auto lo = cellOf({ box.low[0], box.low[1], box.low[2] });
+                       const auto hi = cellOf({ box.high[0], box.high[1], box.high[2] });
+                       covered += static_cast<std::uint64_t>((hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1));
+                     }
+                     return covered;
+                   });
+  m_CellSize = choice.size;
+  const std::uint64_t covered = choice.covered;
   // Every allocation below is made once at its final size, for the same reason.
   m_Entries.reserve(covered);
   for (std::size_t t = 0; t < n; ++t)

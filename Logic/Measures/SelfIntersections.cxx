@@ -1,6 +1,7 @@
 #include "Measures/SelfIntersections.h"
 
 #include "Core/BoundingBox.h"
+#include "Core/GridCellSize.h"
 #include "Core/ParallelFor.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -69,27 +70,24 @@ private:
   double m_Size;
 };
 
-/** The grid's cell size: twice the median triangle's box, so that most boxes cover one to eight
- *  cells and a cell holds a few dozen triangles; doubled while the boxes would cover more than
- *  eight cells each on average (a mesh of a few long triangles). At most 2^21 cells along an axis. */
+/** The grid over the boxes (chooseCellSize), at most 2^21 cells along an axis as a key names. */
 CellGrid gridFor(const std::vector<BoundingBox>& boxes, const BoundingBox& all)
 {
   const double extent = std::max({ all.high[0] - all.low[0], all.high[1] - all.low[1], all.high[2] - all.low[2] });
-  std::vector<double> sizes(boxes.size());
-  for (std::size_t b = 0; b < boxes.size(); ++b)
-    sizes[b] = std::max({ boxes[b].high[0] - boxes[b].low[0], boxes[b].high[1] - boxes[b].low[1],
-                          boxes[b].high[2] - boxes[b].low[2] });
-  std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2), sizes.end());
-  double size = std::max({ 2.0 * sizes[sizes.size() / 2], extent / double(1 << 20), 1e-300 });
-  for (;; size *= 2.0)
-  {
-    const CellGrid grid(all.low, size);
-    std::uint64_t covered = 0;
-    for (const BoundingBox& box : boxes)
-      covered += grid.cellsOf(box);
-    if (covered <= 8 * boxes.size() || size >= extent)
-      return grid;
-  }
+  std::vector<double> sides;
+  for (std::size_t b = 0; b < boxes.size(); b += cellSizeSampleStride(boxes.size()))
+    sides.push_back(std::max(
+      { boxes[b].high[0] - boxes[b].low[0], boxes[b].high[1] - boxes[b].low[1], boxes[b].high[2] - boxes[b].low[2] }));
+  const CellSizeChoice choice = chooseCellSize(std::move(sides), boxes.size(), extent, extent / double(1 << 20),
+                                               [&](double size)
+                                               {
+                                                 const CellGrid grid(all.low, size);
+                                                 std::uint64_t covered = 0;
+                                                 for (const BoundingBox& box : boxes)
+                                                   covered += grid.cellsOf(box);
+                                                 return covered;
+                                               });
+  return CellGrid(all.low, choice.size);
 }
 
 /** A triangle as the pair test reads it: its corners' vertex numbers and points. */
