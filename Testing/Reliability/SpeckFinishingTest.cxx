@@ -95,6 +95,9 @@ TEST(SpeckFinishing, ASpeckIsRemeshedAtItsOwnScaleValidWellShapedAndWithItsVolum
     EXPECT_GT(result.validation.volume, 0.0) << name;
     // Where the voxels are: within the reliability tests' tolerance of the voxels' volume.
     EXPECT_TRUE(result.volumeWithinTolerance()) << name << ": " << result.problem();
+    // Given its volume back as far as half again its tiled volume (a voxel is tiled at a sixth of
+    // its own), within 3%: the offset's steps, and a speck's target is its contours' share.
+    EXPECT_GE(result.validation.volume, 0.97 * std::min(result.voxelVolume, 1.5 * tiled.volume)) << name;
     // Well shaped, with about as many triangles as tiled. A voxel four times as long as it is wide
     // leaves a few triangles of its ends under 30 degrees (2 of 24; as tiled, 4 of 28).
     EXPECT_LE(quality.fractionBelow30, 0.1) << name;
