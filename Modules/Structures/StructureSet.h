@@ -22,8 +22,9 @@ struct PlanarStructure
   std::vector<Polygon3> contours;
   /** One line each: items of the file skipped for this ROI (points, open contours). */
   std::vector<std::string> notes;
-  /** Why the ROI cannot be meshed though the file lists it (an RT Structure Set's ROI number shared
-   *  by another ROI: neither's contours are known); empty when it can. */
+  /** Why the ROI cannot be meshed though the file lists it, one line (an RT Structure Set's ROI
+   *  number shared by another ROI: neither's contours are known; a contour value that is no number:
+   *  then it keeps no contours); empty when it can. */
   std::string unusableBecause;
 };
 

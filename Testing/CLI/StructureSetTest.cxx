@@ -548,6 +548,23 @@ TEST(StructureSet, TwoROIsOfOneNumberFailWithOneWarningAndTheOthersAreWritten)
   EXPECT_NE(json.find("ROI number 1 is also given to 'A'"), std::string::npos) << json;
 }
 
+TEST(StructureSet, AContourValueThatIsNoNumberFailsItsROIAloneAndTheOthersAreWritten)
+{
+  // A decimal comma in one contour of ROI 2 (a system set to a European locale writes one): ROI 2
+  // fails with one line naming it and the value, ROI 1 is written, the run ends as when any ROI fails.
+  ContourItem comma{ 2, "CLOSED_PLANAR", {} };
+  comma.contourData = "40\\30\\0\\59,5\\30\\0\\40\\50\\0";
+  const SetRun run = meshSet("DecimalComma", { nestedAnnulus(), keyholeAnnulusRoi() }, "", { comma });
+  EXPECT_EQ(run.result.exitCode, cli::MeshingFailed) << run.result.err;
+  std::size_t lines = 0;
+  for (const std::string& line : linesOf(run.result.err))
+    lines += line.rfind("SliceMesh: error: ROI 2 (Annulus keyhole): ", 0) == 0 && line.find("'59,5'") != std::string::npos;
+  EXPECT_EQ(lines, 1u) << run.result.err;
+  const MeshValidation v = expectValid(run.folder / "rois" / "001_Annulus_nested.vtp");
+  EXPECT_NEAR(v.volume, annulusVolume(), 0.02 * annulusVolume());
+  EXPECT_FALSE(fs::exists(run.folder / "rois" / "002_Annulus_keyhole.vtp"));
+}
+
 TEST(StructureSet, FilesThatAreNoStructureSetOrAreCutShortFailWithOneLineAndWriteNothing)
 {
   const fs::path folder = freshFolder("StructureSetBadFiles");

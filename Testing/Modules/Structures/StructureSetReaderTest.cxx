@@ -302,28 +302,31 @@ TEST(StructureSetReader, ContoursOfAnUndeclaredROIAreKeptAndSaid)
   EXPECT_NE(undeclared->notes[0].find("not declared"), std::string::npos) << undeclared->notes[0];
 }
 
-TEST(StructureSetReader, AContourValueThatIsNoNumberIsAOneLineError)
+TEST(StructureSetReader, AContourValueThatIsNoNumberMakesItsROIAloneUnusable)
 {
+  // One bad value is a fault of one ROI, as a point a kilometre away is: that ROI cannot be meshed,
+  // says what was wrong in one line and keeps no contour (nothing not finite reaches the geometry);
+  // the file and its other ROIs still read. NaN and infinity too: the parser reads them as numbers,
+  // but a decimal string cannot hold them.
   const fs::path dir = folder("not-a-number");
-  // NaN and infinity too: the parser reads them as numbers, but a decimal string cannot hold them.
-  for (const std::string data : { "1.0\\abc\\2.0", "1.0\\\\2.0\\3.0", "1.0\\2.0x\\3.0", "1.0\\nan\\2.0", "inf\\1.0\\2.0",
-                                  "1.0\\2.0\\-INF" })
+  for (const auto& [data, said] :
+       { std::pair{ "1.0\\abc\\2.0", "'abc'" }, std::pair{ "1,5\\2.0\\3.0", "'1,5'" },
+         std::pair{ "1.0\\\\2.0\\3.0", "an empty value" }, std::pair{ "1.0\\2.0x\\3.0", "'2.0x'" },
+         std::pair{ "1.0\\nan\\2.0", "'nan'" }, std::pair{ "inf\\1.0\\2.0", "'inf'" },
+         std::pair{ "1.0\\2.0\\-INF", "'-INF'" }, std::pair{ "1.0\\2.0\\3.0\\4.0", "4 values" } })
   {
     const fs::path path = dir / "RS.dcm";
     writeWithFirstContourData(path, data);
-    try
-    {
-      readStructureSet(path.string());
-      ADD_FAILURE() << "contour data '" << data << "' must not read";
-    }
-    catch (const Error& e)
-    {
-      const std::string message = e.what();
-      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-      EXPECT_NE(message.find("RS.dcm"), std::string::npos) << message;
-      EXPECT_NE(message.find("ROI 3"), std::string::npos) << message;
-      EXPECT_NE(message.find("not a number"), std::string::npos) << message;
-    }
+    const StructureSet set = readStructureSet(path.string());
+    ASSERT_EQ(set.structures.size(), 2u) << data;
+    const PlanarStructure& gtv = set.structures[0];
+    EXPECT_EQ(gtv.number, 3);
+    EXPECT_NE(gtv.unusableBecause.find(said), std::string::npos) << data << ": " << gtv.unusableBecause;
+    EXPECT_NE(gtv.unusableBecause.find("contour 1"), std::string::npos) << gtv.unusableBecause;
+    EXPECT_EQ(gtv.unusableBecause.find('\n'), std::string::npos) << gtv.unusableBecause;
+    EXPECT_TRUE(gtv.contours.empty()) << data;
+    EXPECT_EQ(set.structures[1].name, "Empty ROI");
+    EXPECT_TRUE(set.structures[1].unusableBecause.empty());
   }
 }
 
