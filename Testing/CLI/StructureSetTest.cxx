@@ -15,6 +15,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 #include <fstream>
 
@@ -563,6 +565,28 @@ TEST(StructureSet, AContourValueThatIsNoNumberFailsItsROIAloneAndTheOthersAreWri
   const MeshValidation v = expectValid(run.folder / "rois" / "001_Annulus_nested.vtp");
   EXPECT_NEAR(v.volume, annulusVolume(), 0.02 * annulusVolume());
   EXPECT_FALSE(fs::exists(run.folder / "rois" / "002_Annulus_keyhole.vtp"));
+}
+
+TEST(StructureSet, AStructureSetWithoutPreambleIsRecognisedGivenOrAsInputContours)
+{
+  // The dataset alone, as older systems write it: no 128-byte preamble, no "DICM", no meta header
+  // (whose length its first element, (0002,0000) UL at byte 132, gives).
+  const fs::path folder = freshFolder("StructureSetNoPreamble");
+  writeRTStructureSet((folder / "part10.dcm").string(), { nestedAnnulus() });
+  const std::string part10 = fileText(folder / "part10.dcm");
+  ASSERT_EQ(part10.compare(128, 4, "DICM"), 0);
+  std::uint32_t metaLength = 0;
+  std::memcpy(&metaLength, part10.data() + 140, 4);
+  std::ofstream(folder / "RS.dcm", std::ios::binary) << part10.substr(144 + metaLength);
+  for (const std::string& input : { quoted((folder / "RS.dcm").string()), "--inputContours " + quoted((folder / "RS.dcm").string()) })
+  {
+    fs::remove_all(folder / "rois");
+    const RunResult run = runSliceMesh(input + " --outputDirectory " + quoted((folder / "rois").string()) + " " +
+                                       quoted((folder / "all.vtp").string()));
+    ASSERT_EQ(run.exitCode, cli::Success) << input << ": " << run.err;
+    const MeshValidation v = expectValid(folder / "rois" / "001_Annulus_nested.vtp");
+    EXPECT_NEAR(v.volume, annulusVolume(), 0.02 * annulusVolume()) << input;
+  }
 }
 
 TEST(StructureSet, FilesThatAreNoStructureSetOrAreCutShortFailWithOneLineAndWriteNothing)

@@ -428,6 +428,56 @@ TEST(StructureSetReader, ATruncatedStructureSetFailsWithOneLine)
   }
 }
 
+TEST(StructureSetReader, AStructureSetWithoutPreambleIsDetectedAndRead)
+{
+  // Older systems write the dataset alone, in implicit or explicit little endian, without the
+  // 128-byte preamble and "DICM", most without the meta header too; DCMTK reads each.
+  const fs::path dir = folder("no-preamble");
+  const fs::path part10 = dir / "part10.dcm";
+  writeRTStructureSet(part10.string(), twoStructures());
+  DcmFileFormat file;
+  ASSERT_TRUE(file.loadFile(part10.c_str()).good());
+  ASSERT_TRUE(file.getDataset()->saveFile((dir / "implicit.dcm").c_str(), EXS_LittleEndianImplicit).good());
+  ASSERT_TRUE(file.getDataset()->saveFile((dir / "explicit.dcm").c_str(), EXS_LittleEndianExplicit).good());
+  {
+    std::ifstream in(part10, std::ios::binary);
+    in.seekg(132); // the meta header kept, the preamble and "DICM" gone
+    std::ofstream(dir / "meta.dcm", std::ios::binary) << in.rdbuf();
+  }
+  for (const std::string name : { "implicit.dcm", "explicit.dcm", "meta.dcm" })
+  {
+    const std::string path = (dir / name).string();
+    EXPECT_EQ(detectContourFileKind(path), ContourFileKind::RTStruct) << name;
+    const StructureSet set = readStructureSet(path);
+    ASSERT_EQ(set.structures.size(), 2u) << name;
+    EXPECT_EQ(set.structures[0].name, "GTV");
+    EXPECT_EQ(set.structures[0].contours.size(), 4u) << name;
+  }
+}
+
+TEST(StructureSetReader, ImagesAndOtherDicomDatasetsAreNoStructureSetWithoutAPreambleEither)
+{
+  // Each names RTSTRUCT and the RT Structure Set's SOP class in its first bytes, which is not enough.
+  const fs::path dir = folder("no-preamble-others");
+  const std::string words = std::string("RTSTRUCT ") + UID_RTStructureSetStorage;
+  std::string nifti(352, '\0'); // NIfTI-1: sizeof_hdr 348 (little endian), its description at byte 148
+  nifti[0] = '\x5c', nifti[1] = '\x01';
+  nifti.replace(148, words.size(), words);
+  nifti.replace(344, 4, "n+1");
+  writeText(dir / "image.nii", nifti);
+  writeText(dir / "image.nrrd", "NRRD0004\n# " + words + "\ntype: unsigned char\ndimension: 3\nsizes: 2 2 2\n"
+                                "encoding: raw\n\n" + std::string(8, '\0'));
+  writeText(dir / "image.vtk", "# vtk DataFile Version 3.0\n" + words + "\nASCII\nDATASET STRUCTURED_POINTS\n");
+  DcmFileFormat ct;
+  char uid[100];
+  ct.getDataset()->putAndInsertString(DCM_SOPClassUID, UID_CTImageStorage);
+  ct.getDataset()->putAndInsertString(DCM_SOPInstanceUID, dcmGenerateUniqueIdentifier(uid));
+  ct.getDataset()->putAndInsertString(DCM_Modality, "CT");
+  ASSERT_TRUE(ct.getDataset()->saveFile((dir / "ct.dcm").c_str(), EXS_LittleEndianImplicit).good());
+  for (const std::string name : { "image.nii", "image.nrrd", "image.vtk", "ct.dcm" })
+    EXPECT_FALSE(detectContourFileKind((dir / name).string()).has_value()) << name;
+}
+
 /** The file's bytes with the first run of `find` replaced by `replace`. */
 std::string withBytesReplaced(const fs::path& path, const std::string& find, const std::string& replace)
 {
