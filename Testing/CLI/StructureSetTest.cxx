@@ -587,6 +587,15 @@ TEST(StructureSet, AStructureSetWithoutPreambleIsRecognisedGivenOrAsInputContour
     const MeshValidation v = expectValid(folder / "rois" / "001_Annulus_nested.vtp");
     EXPECT_NEAR(v.volume, annulusVolume(), 0.02 * annulusVolume()) << input;
   }
+  // In a folder given as the input, as a planning system exports a plan: the folder's structure set.
+  fs::create_directories(folder / "export");
+  fs::copy_file(folder / "RS.dcm", folder / "export" / "RS.dcm");
+  fs::remove_all(folder / "rois");
+  const RunResult run = runSliceMesh(quoted((folder / "export").string()) + " --outputDirectory " +
+                                     quoted((folder / "rois").string()) + " " + quoted((folder / "all.vtp").string()));
+  ASSERT_EQ(run.exitCode, cli::Success) << run.err;
+  EXPECT_TRUE(hasLine(run.err, "holds a structure set, RS.dcm: its ROIs are meshed")) << run.err;
+  expectValid(folder / "rois" / "001_Annulus_nested.vtp");
 }
 
 TEST(StructureSet, FilesThatAreNoStructureSetOrAreCutShortFailWithOneLineAndWriteNothing)
