@@ -54,7 +54,9 @@ std::optional<ContourFileKind> detectContourFileKind(const std::string& path)
   const std::string head = lowercase(start.substr(0, 1024));
   if ((head.rfind("<?xml", 0) == 0 || head.rfind("<vtkfile", 0) == 0) && head.find("type=\"polydata\"") != std::string::npos)
     return ContourFileKind::PolyData;
-  const auto first = std::find_if(start.begin(), start.end(), [](unsigned char c) { return !std::isspace(c); });
+  // Windows editors start a UTF-8 text with a byte order mark, which the JSON parser skips.
+  const std::size_t text = start.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
+  const auto first = std::find_if(start.begin() + text, start.end(), [](unsigned char c) { return !std::isspace(c); });
   if (first != start.end() && *first == '{')
     return ContourFileKind::Json;
   return std::nullopt;

@@ -560,6 +560,19 @@ TEST(StructureSetReader, ReadsTheJsonFormatWithItsSlicesAndCoordinateSystem)
   EXPECT_TRUE(set.structures[1].contours.empty());
 }
 
+TEST(StructureSetReader, AJsonFileWithAByteOrderMarkIsDetectedAndRead)
+{
+  // Windows editors start a UTF-8 file with the byte order mark EF BB BF.
+  const fs::path path = folder("json-bom") / "contours.json";
+  writeText(path, "\xEF\xBB\xBF" R"({ "rois": [ { "name": "Mark", "slices": [ { "z": 2, "polygons": [ [[0, 0], [4, 0], [0, 4]] ] } ] } ] })");
+  EXPECT_EQ(detectContourFileKind(path.string()), ContourFileKind::Json);
+  const StructureSet set = readStructureSet(path.string());
+  ASSERT_EQ(set.structures.size(), 1u);
+  EXPECT_EQ(set.structures[0].name, "Mark");
+  ASSERT_EQ(set.structures[0].contours.size(), 1u);
+  EXPECT_EQ(set.structures[0].contours[0][1].x, 4.0);
+}
+
 TEST(StructureSetReader, AMalformedJsonFileSaysWhere)
 {
   const fs::path dir = folder("badjson");
