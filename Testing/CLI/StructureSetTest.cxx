@@ -329,6 +329,24 @@ TEST(StructureSet, EmptyAndSingleSliceROIsAreReportedAndTheOthersWritten)
   expectValid(run.folder / "all.vtp");
 }
 
+TEST(StructureSet, AnROIThatFailsIsSaidOnce)
+{
+  // The only ROI, in one slice, with no other ROI to give it a thickness: its error is one line
+  // (it was also repeated in the list of ROIs on stdout and in the run's last line); the last line
+  // says how many ROIs failed.
+  PlanarStructure single = roi(1, "Single", { 1, 2, 3 });
+  single.contours.push_back(circle(3.0, 4.0, -7.5, 12.0));
+  const SetRun run = meshSet("FailedOnce", { single });
+  EXPECT_EQ(run.result.exitCode, cli::MeshingFailed) << run.result.err;
+  std::size_t said = 0;
+  for (const std::string& line : linesOf(run.result.out + run.result.err))
+    said += line.find("the slice spacing is unknown") != std::string::npos;
+  EXPECT_EQ(said, 1u) << run.result.out << run.result.err;
+  EXPECT_TRUE(hasLine(run.result.err, "SliceMesh: error: ROI 1 (Single): all 1 contour(s) lie in one slice")) << run.result.err;
+  EXPECT_TRUE(hasLine(run.result.out, "SliceMesh: ROI 1 (Single): failed")) << run.result.out;
+  EXPECT_EQ(linesOf(run.result.err).back(), "SliceMesh: error: 1 of 1 ROIs failed; nothing was written") << run.result.err;
+}
+
 TEST(StructureSet, SlicesSeveralOfTheSetsApartAreSlabsOfTheSetsSpacing)
 {
   // Two ROIs on every slice, one every other slice, one in two slices 50 mm apart and one in a
