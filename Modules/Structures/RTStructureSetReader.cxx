@@ -201,8 +201,13 @@ StructureSet readWithDcmtk(const std::string& path)
     const DcmtkFlag unknownAsDictionaryVR(dcmEnableUnknownVRConversion, OFTrue);
     loaded = file.loadFile(path.c_str(), EXS_Unknown, EGL_noChange, maxReadLength);
   }
-  if (loaded == EC_StreamNotifyClient)
-    throw Error("cannot read '" + path + "' as DICOM: the file ends inside an element (cut short, or a length damaged)");
+  // A file cut short (a copy or a download that stopped) ends inside an element or a sequence, for
+  // which DCMTK's words are "Invalid stream" and the like; a damaged length, or bytes that are no
+  // DICOM, end one so too.
+  if (loaded == EC_StreamNotifyClient || loaded == EC_InvalidStream || loaded == EC_SequDelimitationItemMissing ||
+      loaded == EC_ItemDelimitationItemMissing)
+    throw Error("cannot read '" + path +
+                "' as DICOM: the file ends inside an element (cut short, a length damaged, or not DICOM)");
   if (loaded.bad())
     throw Error("cannot read '" + path + "' as DICOM: " + loaded.text());
   DcmDataset& dataset = *file.getDataset();

@@ -478,6 +478,32 @@ TEST(StructureSetReader, ImagesAndOtherDicomDatasetsAreNoStructureSetWithoutAPre
     EXPECT_FALSE(detectContourFileKind((dir / name).string()).has_value()) << name;
 }
 
+TEST(StructureSetReader, AStructureSetCutShortAnywhereSaysSoNamingTheFile)
+{
+  // Wherever a copy or a download stopped, the one line says that the file is cut short and which
+  // file it is (DCMTK's own words for most cuts were a bare "Invalid stream").
+  const fs::path dir = folder("cut-anywhere");
+  const fs::path whole = dir / "RS.dcm", cut = dir / "RS-cut.dcm";
+  writeRTStructureSet(whole.string(), twoStructures());
+  const auto size = fs::file_size(whole);
+  for (const auto length : { size / 20, size / 10, size / 4, size / 2, size * 3 / 4, size * 9 / 10, size - 10, size - 1 })
+  {
+    fs::copy_file(whole, cut, fs::copy_options::overwrite_existing);
+    fs::resize_file(cut, length);
+    try
+    {
+      readStructureSet(cut.string());
+      ADD_FAILURE() << "cut to " << length << " of " << size << " bytes, it must not read";
+    }
+    catch (const Error& e)
+    {
+      const std::string message = e.what();
+      EXPECT_NE(message.find("'" + cut.string() + "'"), std::string::npos) << message;
+      EXPECT_NE(message.find("cut short"), std::string::npos) << length << " of " << size << ": " << message;
+    }
+  }
+}
+
 /** The file's bytes with the first run of `find` replaced by `replace`. */
 std::string withBytesReplaced(const fs::path& path, const std::string& find, const std::string& replace)
 {
