@@ -50,8 +50,9 @@ enum class ContourFileKind
   Json       ///< SliceMesh's JSON contour format (Documentation/ContourFiles.md)
 };
 
-/** The kind of a file from its first bytes: DICM with Modality RTSTRUCT, a VTK legacy or XML
- *  polydata file, a JSON object; empty when it is none of them (e.g. an image volume). Reads only
+/** The kind of a file from its first bytes: DICOM (DICM after the preamble, or a dataset stored
+ *  without it) with Modality RTSTRUCT, a VTK legacy or XML polydata file, a JSON object (after a
+ *  byte order mark, if any); empty when it is none of them (e.g. an image volume). Reads only
  *  the start of the file and never throws on content; a DICOM file of another modality is not a
  *  structure set. */
 std::optional<ContourFileKind> detectContourFileKind(const std::string& path);
