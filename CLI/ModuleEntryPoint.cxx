@@ -213,7 +213,7 @@ std::string summaryLine(const PipelineResult& result, const std::string& outputM
 }
 
 /** "SliceMesh: ROI 2 (PTV): volume 123.4 mm^3 (0.12 mL), 2048 triangles, closed, genus 0 -> 002_PTV.vtp",
- *  or the ROI's error. */
+ *  or that it failed (its error line on stderr says why: the reason once). */
 std::string roiLine(const LabelReport& roi)
 {
   std::ostringstream line;
@@ -221,7 +221,7 @@ std::string roiLine(const LabelReport& roi)
   if (roi.dropped)
     line << "not meshed: " << roi.droppedBecause;
   else if (!roi.meshed())
-    line << "failed: " << oneLine(roi.error);
+    line << "failed (see its error line)";
   else
   {
     const MeshValidation& v = roi.validation;

@@ -574,10 +574,10 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
     labels->insert(labels->end(), reports.begin(), reports.end());
   if (!failures.empty())
   {
+    // Each failure has had its error line: the count, not the first one's reason again.
     std::ostringstream message;
     message << failures.size() << " of " << structures.size() << " " << noun << "s failed; "
-            << (merged.triangles.empty() ? "nothing was written" : "the others were written") << ". First: "
-            << failures.front();
+            << (merged.triangles.empty() ? "nothing was written" : "the others were written");
     throw PipelineFailure(MeshingFailed, message.str());
   }
   madeFolders.keep();

@@ -34,11 +34,11 @@ DicomFolderContents dicomFolderContents(const std::string& folder)
   DicomFolderContents contents;
   for (const fs::path& file : files)
   {
-    if (!isDicomFile(file))
-      continue;
+    // A structure set by its content, as when given itself: older systems write it without the
+    // preamble and "DICM".
     if (detectContourFileKind(file.string()) == ContourFileKind::RTStruct)
       contents.structureSets.push_back(file.string());
-    else
+    else if (isDicomFile(file))
       ++contents.otherDicomFiles;
   }
   return contents;

@@ -17,7 +17,8 @@ struct DicomFolderContents
 };
 
 /** The DICOM files directly in `folder` (not in its subfolders, as the series reader sees it), by
- *  their first bytes: a file that is not DICOM is not counted. Never throws on a file's content; an
+ *  their first bytes (a structure set as detectContourFileKind finds it, with or without the
+ *  preamble): a file that is not DICOM is not counted. Never throws on a file's content; an
  *  unreadable folder holds nothing. */
 DicomFolderContents dicomFolderContents(const std::string& folder);
 

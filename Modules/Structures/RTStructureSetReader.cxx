@@ -11,6 +11,7 @@
 #include <dcmtk/oflog/oflog.h>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -19,6 +20,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
@@ -71,10 +73,22 @@ private:
   const OFBool m_Before;
 };
 
+/** A value of a file quoted for a one-line message: at most 16 characters (a decimal string's
+ *  most), anything unprintable as '?'. */
+std::string quotedValue(std::string_view value)
+{
+  if (value.empty())
+    return "an empty value";
+  std::string quoted = "'";
+  for (const char c : value.substr(0, 16))
+    quoted += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+  return quoted + (value.size() > 16 ? "...'" : "'");
+}
+
 /** The numbers of a decimal string (DS) element, backslash-separated, each read as the nearest
- *  double (std::from_chars); none when the element is absent. `where` names the ROI in the error a
- *  value that is no number raises. */
-std::vector<double> decimalStrings(DcmItem& item, const DcmTagKey& tag, const std::string& where)
+ *  double (std::from_chars); none when the element is absent. A value that is no finite number
+ *  stops the reading: it is returned, quoted, in `bad` (empty when every value was read). */
+std::vector<double> decimalStrings(DcmItem& item, const DcmTagKey& tag, std::string& bad)
 {
   std::vector<double> values;
   DcmElement* element = nullptr;
@@ -87,21 +101,21 @@ std::vector<double> decimalStrings(DcmItem& item, const DcmTagKey& tag, const st
   values.reserve(static_cast<std::size_t>(std::count(at, end, '\\')) + 1);
   while (at < end)
   {
-    while (at < end && *at == ' ')
-      ++at;
-    if (at < end && *at == '+') // a sign DS allows and from_chars does not
-      ++at;
-    double value = 0.0;
-    const std::from_chars_result parsed = std::from_chars(at, end, value);
+    const char* const next = std::find(at, end, '\\');
+    std::string_view value(at, static_cast<std::size_t>(next - at)); // padding aside
+    value.remove_prefix(std::min(value.size(), value.find_first_not_of(' ')));
+    value = value.substr(0, value.find_last_not_of(std::string_view(" \0", 2)) + 1);
+    const std::size_t sign = value.size() > 0 && value[0] == '+' ? 1 : 0; // DS allows it, from_chars does not
+    double number = 0.0;
+    const std::from_chars_result parsed = std::from_chars(value.data() + sign, value.data() + value.size(), number);
     // from_chars reads "nan" and "inf", which a decimal string cannot hold.
-    if (parsed.ec != std::errc() || !std::isfinite(value))
-      throw Error(where + ": a contour's data holds a value that is not a number");
-    at = parsed.ptr;
-    while (at < end && (*at == ' ' || *at == '\0'))
-      ++at;
-    if (at < end && *at++ != '\\')
-      throw Error(where + ": a contour's data holds a value that is not a number");
-    values.push_back(value);
+    if (parsed.ec != std::errc() || parsed.ptr != value.data() + value.size() || !std::isfinite(number))
+    {
+      bad = quotedValue(value);
+      return values;
+    }
+    values.push_back(number);
+    at = next == end ? end : next + 1;
   }
   return values;
 }
@@ -187,8 +201,13 @@ StructureSet readWithDcmtk(const std::string& path)
     const DcmtkFlag unknownAsDictionaryVR(dcmEnableUnknownVRConversion, OFTrue);
     loaded = file.loadFile(path.c_str(), EXS_Unknown, EGL_noChange, maxReadLength);
   }
-  if (loaded == EC_StreamNotifyClient)
-    throw Error("cannot read '" + path + "' as DICOM: the file ends inside an element (cut short, or a length damaged)");
+  // A file cut short (a copy or a download that stopped) ends inside an element or a sequence, for
+  // which DCMTK's words are "Invalid stream" and the like; a damaged length, or bytes that are no
+  // DICOM, end one so too.
+  if (loaded == EC_StreamNotifyClient || loaded == EC_InvalidStream || loaded == EC_SequDelimitationItemMissing ||
+      loaded == EC_ItemDelimitationItemMissing)
+    throw Error("cannot read '" + path +
+                "' as DICOM: the file ends inside an element (cut short, a length damaged, or not DICOM)");
   if (loaded.bad())
     throw Error("cannot read '" + path + "' as DICOM: " + loaded.text());
   DcmDataset& dataset = *file.getDataset();
@@ -304,7 +323,9 @@ StructureSet readWithDcmtk(const std::string& path)
     std::string firstMiscount;
     DcmSequenceOfItems* contours = nullptr;
     item.findAndGetSequence(DCM_ContourSequence, contours);
-    for (unsigned long k = 0; contours && k < contours->card(); ++k)
+    // A value that is no number fails its ROI alone, as a point beyond any anatomy does: the file's
+    // other ROIs are still meshed. Its contours are dropped, none of its values reaching the geometry.
+    for (unsigned long k = 0; contours && k < contours->card() && roi.unusableBecause.empty(); ++k)
     {
       DcmItem& contourItem = *contours->getItem(k);
       OFString type;
@@ -315,10 +336,18 @@ StructureSet readWithDcmtk(const std::string& path)
         ++skipped[geometricType.empty() ? "untyped" : geometricType];
         continue;
       }
-      const std::string where = "'" + path + "': ROI " + std::to_string(roi.number);
-      const std::vector<double> data = decimalStrings(contourItem, DCM_ContourData, where);
-      if (data.size() % 3 != 0)
-        throw Error(where + ": a contour's data has a number of values that is not a multiple of 3");
+      const std::string which = "the Contour Data of its contour " + std::to_string(k + 1) + " (of " +
+                                  std::to_string(contours->card()) + ")";
+      std::string bad;
+      const std::vector<double> data = decimalStrings(contourItem, DCM_ContourData, bad);
+      if (!bad.empty())
+        roi.unusableBecause = which + " holds " + bad + ", which is not a number" +
+                              (bad.find(',') != std::string::npos ? " (a decimal string has a point, not a comma)" : "");
+      else if (data.size() % 3 != 0)
+        roi.unusableBecause = which + " holds " + std::to_string(data.size()) +
+                              " values, which is not x, y and z for each point (not a multiple of 3)";
+      if (!roi.unusableBecause.empty())
+        break;
       Sint32 stated = 0;
       if (contourItem.findAndGetSint32(DCM_NumberOfContourPoints, stated).good() &&
           static_cast<std::size_t>(std::max<Sint32>(stated, 0)) != data.size() / 3 && miscounted++ == 0)
@@ -329,6 +358,8 @@ StructureSet readWithDcmtk(const std::string& path)
         contour.push_back({ data[i], data[i + 1], data[i + 2] });
       roi.contours.push_back(std::move(contour));
     }
+    if (!roi.unusableBecause.empty())
+      roi.contours.clear();
     if (miscounted > 0)
       roi.notes.push_back(std::to_string(miscounted) + " contour(s) whose Number of Contour Points differs from the points in " +
                           "their Contour Data (first: " + firstMiscount + "): the points present are used");

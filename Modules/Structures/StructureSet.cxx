@@ -23,6 +23,19 @@ std::string fileStart(const std::string& path, std::size_t bytes)
   return start;
 }
 
+/** Whether the bytes start as a DICOM dataset stored without the 128-byte preamble and "DICM", as
+ *  older systems write one (and DCMTK reads it): its first element, little endian, is of group 0002
+ *  (the meta header) or 0008 (the identifying attributes every dataset starts with), in explicit VR
+ *  (two capital letters) or implicit (a 32-bit length; under 64 KiB for a first element). No volume
+ *  or contour format read here starts so: NIfTI with 348 or 540, the others with text. */
+bool startsAsDicomDataset(const std::string& start)
+{
+  if (start.size() < 8 || start[1] != '\0' || (start[0] != '\x02' && start[0] != '\x08'))
+    return false;
+  const auto capital = [](char c) { return c >= 'A' && c <= 'Z'; };
+  return (capital(start[4]) && capital(start[5])) || (start[6] == '\0' && start[7] == '\0');
+}
+
 } // namespace
 
 std::optional<ContourFileKind> detectContourFileKind(const std::string& path)
@@ -30,7 +43,7 @@ std::optional<ContourFileKind> detectContourFileKind(const std::string& path)
   // A DICOM file's Modality and SOP Class come long before its contours; searching the raw start
   // also recognises a structure set cut short, whose reader then says what is wrong.
   const std::string start = fileStart(path, 65536);
-  if (start.size() >= 132 && start.compare(128, 4, "DICM") == 0)
+  if ((start.size() >= 132 && start.compare(128, 4, "DICM") == 0) || startsAsDicomDataset(start))
   {
     const bool rtStruct = start.find("RTSTRUCT") != std::string::npos ||
                           start.find("1.2.840.10008.5.1.4.1.1.481.3") != std::string::npos;
@@ -41,7 +54,9 @@ std::optional<ContourFileKind> detectContourFileKind(const std::string& path)
   const std::string head = lowercase(start.substr(0, 1024));
   if ((head.rfind("<?xml", 0) == 0 || head.rfind("<vtkfile", 0) == 0) && head.find("type=\"polydata\"") != std::string::npos)
     return ContourFileKind::PolyData;
-  const auto first = std::find_if(start.begin(), start.end(), [](unsigned char c) { return !std::isspace(c); });
+  // Windows editors start a UTF-8 text with a byte order mark, which the JSON parser skips.
+  const std::size_t text = start.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
+  const auto first = std::find_if(start.begin() + text, start.end(), [](unsigned char c) { return !std::isspace(c); });
   if (first != start.end() && *first == '{')
     return ContourFileKind::Json;
   return std::nullopt;

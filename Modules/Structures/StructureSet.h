@@ -22,8 +22,9 @@ struct PlanarStructure
   std::vector<Polygon3> contours;
   /** One line each: items of the file skipped for this ROI (points, open contours). */
   std::vector<std::string> notes;
-  /** Why the ROI cannot be meshed though the file lists it (an RT Structure Set's ROI number shared
-   *  by another ROI: neither's contours are known); empty when it can. */
+  /** Why the ROI cannot be meshed though the file lists it, one line (an RT Structure Set's ROI
+   *  number shared by another ROI: neither's contours are known; a contour value that is no number:
+   *  then it keeps no contours); empty when it can. */
   std::string unusableBecause;
 };
 
@@ -49,8 +50,9 @@ enum class ContourFileKind
   Json       ///< SliceMesh's JSON contour format (Documentation/ContourFiles.md)
 };
 
-/** The kind of a file from its first bytes: DICM with Modality RTSTRUCT, a VTK legacy or XML
- *  polydata file, a JSON object; empty when it is none of them (e.g. an image volume). Reads only
+/** The kind of a file from its first bytes: DICOM (DICM after the preamble, or a dataset stored
+ *  without it) with Modality RTSTRUCT, a VTK legacy or XML polydata file, a JSON object (after a
+ *  byte order mark, if any); empty when it is none of them (e.g. an image volume). Reads only
  *  the start of the file and never throws on content; a DICOM file of another modality is not a
  *  structure set. */
 std::optional<ContourFileKind> detectContourFileKind(const std::string& path);

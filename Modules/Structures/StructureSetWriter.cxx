@@ -5,6 +5,7 @@
 #include <dcmtk/dcmdata/dcsequen.h>
 #include <dcmtk/dcmdata/dcuid.h>
 
+#include <algorithm>
 #include <map>
 #include <sstream>
 
@@ -49,8 +50,18 @@ void addContour(DcmItem& roiContour, const ContourItem& contour, int contourNumb
   DcmItem& item = appendItem(roiContour, DCM_ContourSequence);
   put(item, DCM_ContourNumber, std::to_string(contourNumber));
   put(item, DCM_ContourGeometricType, contour.geometricType);
-  put(item, DCM_NumberOfContourPoints, std::to_string(contour.points.size()));
-  put(item, DCM_ContourData, decimals(contour.points));
+  if (contour.contourData.empty())
+  {
+    put(item, DCM_NumberOfContourPoints, std::to_string(contour.points.size()));
+    put(item, DCM_ContourData, decimals(contour.points));
+  }
+  else
+  {
+    // As many points as the values make (a reader compares the two).
+    const auto values = std::count(contour.contourData.begin(), contour.contourData.end(), '\\') + 1;
+    put(item, DCM_NumberOfContourPoints, std::to_string(values / 3));
+    put(item, DCM_ContourData, contour.contourData);
+  }
 }
 
 } // namespace

@@ -14,6 +14,9 @@ struct ContourItem
   int roiNumber = 0;
   std::string geometricType = "CLOSED_PLANAR"; ///< CLOSED_PLANAR, OPEN_PLANAR, OPEN_NONPLANAR, POINT
   Polygon3 points;
+  /** Written as the Contour Data in place of `points` when not empty, as it stands: a malformed
+   *  value (a decimal comma, "nan") for the tests of reading one. */
+  std::string contourData;
 };
 
 /** Writes the structures (each ROI's number, name, colour, contours as CLOSED_PLANAR items), then

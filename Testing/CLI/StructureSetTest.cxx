@@ -15,6 +15,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 #include <fstream>
 
@@ -327,6 +329,24 @@ TEST(StructureSet, EmptyAndSingleSliceROIsAreReportedAndTheOthersWritten)
   expectValid(run.folder / "all.vtp");
 }
 
+TEST(StructureSet, AnROIThatFailsIsSaidOnce)
+{
+  // The only ROI, in one slice, with no other ROI to give it a thickness: its error is one line
+  // (it was also repeated in the list of ROIs on stdout and in the run's last line); the last line
+  // says how many ROIs failed.
+  PlanarStructure single = roi(1, "Single", { 1, 2, 3 });
+  single.contours.push_back(circle(3.0, 4.0, -7.5, 12.0));
+  const SetRun run = meshSet("FailedOnce", { single });
+  EXPECT_EQ(run.result.exitCode, cli::MeshingFailed) << run.result.err;
+  std::size_t said = 0;
+  for (const std::string& line : linesOf(run.result.out + run.result.err))
+    said += line.find("the slice spacing is unknown") != std::string::npos;
+  EXPECT_EQ(said, 1u) << run.result.out << run.result.err;
+  EXPECT_TRUE(hasLine(run.result.err, "SliceMesh: error: ROI 1 (Single): all 1 contour(s) lie in one slice")) << run.result.err;
+  EXPECT_TRUE(hasLine(run.result.out, "SliceMesh: ROI 1 (Single): failed")) << run.result.out;
+  EXPECT_EQ(linesOf(run.result.err).back(), "SliceMesh: error: 1 of 1 ROIs failed; nothing was written") << run.result.err;
+}
+
 TEST(StructureSet, SlicesSeveralOfTheSetsApartAreSlabsOfTheSetsSpacing)
 {
   // Two ROIs on every slice, one every other slice, one in two slices 50 mm apart and one in a
@@ -546,6 +566,54 @@ TEST(StructureSet, TwoROIsOfOneNumberFailWithOneWarningAndTheOthersAreWritten)
   const std::string json = fileText(report);
   EXPECT_NE(json.find("ROI number 1 is also given to 'B'"), std::string::npos) << json;
   EXPECT_NE(json.find("ROI number 1 is also given to 'A'"), std::string::npos) << json;
+}
+
+TEST(StructureSet, AContourValueThatIsNoNumberFailsItsROIAloneAndTheOthersAreWritten)
+{
+  // A decimal comma in one contour of ROI 2 (a system set to a European locale writes one): ROI 2
+  // fails with one line naming it and the value, ROI 1 is written, the run ends as when any ROI fails.
+  ContourItem comma{ 2, "CLOSED_PLANAR", {} };
+  comma.contourData = "40\\30\\0\\59,5\\30\\0\\40\\50\\0";
+  const SetRun run = meshSet("DecimalComma", { nestedAnnulus(), keyholeAnnulusRoi() }, "", { comma });
+  EXPECT_EQ(run.result.exitCode, cli::MeshingFailed) << run.result.err;
+  std::size_t lines = 0;
+  for (const std::string& line : linesOf(run.result.err))
+    lines += line.rfind("SliceMesh: error: ROI 2 (Annulus keyhole): ", 0) == 0 && line.find("'59,5'") != std::string::npos;
+  EXPECT_EQ(lines, 1u) << run.result.err;
+  const MeshValidation v = expectValid(run.folder / "rois" / "001_Annulus_nested.vtp");
+  EXPECT_NEAR(v.volume, annulusVolume(), 0.02 * annulusVolume());
+  EXPECT_FALSE(fs::exists(run.folder / "rois" / "002_Annulus_keyhole.vtp"));
+}
+
+TEST(StructureSet, AStructureSetWithoutPreambleIsRecognisedGivenOrAsInputContours)
+{
+  // The dataset alone, as older systems write it: no 128-byte preamble, no "DICM", no meta header
+  // (whose length its first element, (0002,0000) UL at byte 132, gives).
+  const fs::path folder = freshFolder("StructureSetNoPreamble");
+  writeRTStructureSet((folder / "part10.dcm").string(), { nestedAnnulus() });
+  const std::string part10 = fileText(folder / "part10.dcm");
+  ASSERT_EQ(part10.compare(128, 4, "DICM"), 0);
+  std::uint32_t metaLength = 0;
+  std::memcpy(&metaLength, part10.data() + 140, 4);
+  std::ofstream(folder / "RS.dcm", std::ios::binary) << part10.substr(144 + metaLength);
+  for (const std::string& input : { quoted((folder / "RS.dcm").string()), "--inputContours " + quoted((folder / "RS.dcm").string()) })
+  {
+    fs::remove_all(folder / "rois");
+    const RunResult run = runSliceMesh(input + " --outputDirectory " + quoted((folder / "rois").string()) + " " +
+                                       quoted((folder / "all.vtp").string()));
+    ASSERT_EQ(run.exitCode, cli::Success) << input << ": " << run.err;
+    const MeshValidation v = expectValid(folder / "rois" / "001_Annulus_nested.vtp");
+    EXPECT_NEAR(v.volume, annulusVolume(), 0.02 * annulusVolume()) << input;
+  }
+  // In a folder given as the input, as a planning system exports a plan: the folder's structure set.
+  fs::create_directories(folder / "export");
+  fs::copy_file(folder / "RS.dcm", folder / "export" / "RS.dcm");
+  fs::remove_all(folder / "rois");
+  const RunResult run = runSliceMesh(quoted((folder / "export").string()) + " --outputDirectory " +
+                                     quoted((folder / "rois").string()) + " " + quoted((folder / "all.vtp").string()));
+  ASSERT_EQ(run.exitCode, cli::Success) << run.err;
+  EXPECT_TRUE(hasLine(run.err, "holds a structure set, RS.dcm: its ROIs are meshed")) << run.err;
+  expectValid(folder / "rois" / "001_Annulus_nested.vtp");
 }
 
 TEST(StructureSet, FilesThatAreNoStructureSetOrAreCutShortFailWithOneLineAndWriteNothing)

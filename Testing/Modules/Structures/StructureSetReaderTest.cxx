@@ -302,28 +302,31 @@ TEST(StructureSetReader, ContoursOfAnUndeclaredROIAreKeptAndSaid)
   EXPECT_NE(undeclared->notes[0].find("not declared"), std::string::npos) << undeclared->notes[0];
 }
 
-TEST(StructureSetReader, AContourValueThatIsNoNumberIsAOneLineError)
+TEST(StructureSetReader, AContourValueThatIsNoNumberMakesItsROIAloneUnusable)
 {
+  // One bad value is a fault of one ROI, as a point a kilometre away is: that ROI cannot be meshed,
+  // says what was wrong in one line and keeps no contour (nothing not finite reaches the geometry);
+  // the file and its other ROIs still read. NaN and infinity too: the parser reads them as numbers,
+  // but a decimal string cannot hold them.
   const fs::path dir = folder("not-a-number");
-  // NaN and infinity too: the parser reads them as numbers, but a decimal string cannot hold them.
-  for (const std::string data : { "1.0\\abc\\2.0", "1.0\\\\2.0\\3.0", "1.0\\2.0x\\3.0", "1.0\\nan\\2.0", "inf\\1.0\\2.0",
-                                  "1.0\\2.0\\-INF" })
+  for (const auto& [data, said] :
+       { std::pair{ "1.0\\abc\\2.0", "'abc'" }, std::pair{ "1,5\\2.0\\3.0", "'1,5'" },
+         std::pair{ "1.0\\\\2.0\\3.0", "an empty value" }, std::pair{ "1.0\\2.0x\\3.0", "'2.0x'" },
+         std::pair{ "1.0\\nan\\2.0", "'nan'" }, std::pair{ "inf\\1.0\\2.0", "'inf'" },
+         std::pair{ "1.0\\2.0\\-INF", "'-INF'" }, std::pair{ "1.0\\2.0\\3.0\\4.0", "4 values" } })
   {
     const fs::path path = dir / "RS.dcm";
     writeWithFirstContourData(path, data);
-    try
-    {
-      readStructureSet(path.string());
-      ADD_FAILURE() << "contour data '" << data << "' must not read";
-    }
-    catch (const Error& e)
-    {
-      const std::string message = e.what();
-      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-      EXPECT_NE(message.find("RS.dcm"), std::string::npos) << message;
-      EXPECT_NE(message.find("ROI 3"), std::string::npos) << message;
-      EXPECT_NE(message.find("not a number"), std::string::npos) << message;
-    }
+    const StructureSet set = readStructureSet(path.string());
+    ASSERT_EQ(set.structures.size(), 2u) << data;
+    const PlanarStructure& gtv = set.structures[0];
+    EXPECT_EQ(gtv.number, 3);
+    EXPECT_NE(gtv.unusableBecause.find(said), std::string::npos) << data << ": " << gtv.unusableBecause;
+    EXPECT_NE(gtv.unusableBecause.find("contour 1"), std::string::npos) << gtv.unusableBecause;
+    EXPECT_EQ(gtv.unusableBecause.find('\n'), std::string::npos) << gtv.unusableBecause;
+    EXPECT_TRUE(gtv.contours.empty()) << data;
+    EXPECT_EQ(set.structures[1].name, "Empty ROI");
+    EXPECT_TRUE(set.structures[1].unusableBecause.empty());
   }
 }
 
@@ -425,6 +428,82 @@ TEST(StructureSetReader, ATruncatedStructureSetFailsWithOneLine)
   }
 }
 
+TEST(StructureSetReader, AStructureSetWithoutPreambleIsDetectedAndRead)
+{
+  // Older systems write the dataset alone, in implicit or explicit little endian, without the
+  // 128-byte preamble and "DICM", most without the meta header too; DCMTK reads each.
+  const fs::path dir = folder("no-preamble");
+  const fs::path part10 = dir / "part10.dcm";
+  writeRTStructureSet(part10.string(), twoStructures());
+  DcmFileFormat file;
+  ASSERT_TRUE(file.loadFile(part10.c_str()).good());
+  ASSERT_TRUE(file.getDataset()->saveFile((dir / "implicit.dcm").c_str(), EXS_LittleEndianImplicit).good());
+  ASSERT_TRUE(file.getDataset()->saveFile((dir / "explicit.dcm").c_str(), EXS_LittleEndianExplicit).good());
+  {
+    std::ifstream in(part10, std::ios::binary);
+    in.seekg(132); // the meta header kept, the preamble and "DICM" gone
+    std::ofstream(dir / "meta.dcm", std::ios::binary) << in.rdbuf();
+  }
+  for (const std::string name : { "implicit.dcm", "explicit.dcm", "meta.dcm" })
+  {
+    const std::string path = (dir / name).string();
+    EXPECT_EQ(detectContourFileKind(path), ContourFileKind::RTStruct) << name;
+    const StructureSet set = readStructureSet(path);
+    ASSERT_EQ(set.structures.size(), 2u) << name;
+    EXPECT_EQ(set.structures[0].name, "GTV");
+    EXPECT_EQ(set.structures[0].contours.size(), 4u) << name;
+  }
+}
+
+TEST(StructureSetReader, ImagesAndOtherDicomDatasetsAreNoStructureSetWithoutAPreambleEither)
+{
+  // Each names RTSTRUCT and the RT Structure Set's SOP class in its first bytes, which is not enough.
+  const fs::path dir = folder("no-preamble-others");
+  const std::string words = std::string("RTSTRUCT ") + UID_RTStructureSetStorage;
+  std::string nifti(352, '\0'); // NIfTI-1: sizeof_hdr 348 (little endian), its description at byte 148
+  nifti[0] = '\x5c', nifti[1] = '\x01';
+  nifti.replace(148, words.size(), words);
+  nifti.replace(344, 4, "n+1");
+  writeText(dir / "image.nii", nifti);
+  writeText(dir / "image.nrrd", "NRRD0004\n# " + words + "\ntype: unsigned char\ndimension: 3\nsizes: 2 2 2\n"
+                                "encoding: raw\n\n" + std::string(8, '\0'));
+  writeText(dir / "image.vtk", "# vtk DataFile Version 3.0\n" + words + "\nASCII\nDATASET STRUCTURED_POINTS\n");
+  DcmFileFormat ct;
+  char uid[100];
+  ct.getDataset()->putAndInsertString(DCM_SOPClassUID, UID_CTImageStorage);
+  ct.getDataset()->putAndInsertString(DCM_SOPInstanceUID, dcmGenerateUniqueIdentifier(uid));
+  ct.getDataset()->putAndInsertString(DCM_Modality, "CT");
+  ASSERT_TRUE(ct.getDataset()->saveFile((dir / "ct.dcm").c_str(), EXS_LittleEndianImplicit).good());
+  for (const std::string name : { "image.nii", "image.nrrd", "image.vtk", "ct.dcm" })
+    EXPECT_FALSE(detectContourFileKind((dir / name).string()).has_value()) << name;
+}
+
+TEST(StructureSetReader, AStructureSetCutShortAnywhereSaysSoNamingTheFile)
+{
+  // Wherever a copy or a download stopped, the one line says that the file is cut short and which
+  // file it is (DCMTK's own words for most cuts were a bare "Invalid stream").
+  const fs::path dir = folder("cut-anywhere");
+  const fs::path whole = dir / "RS.dcm", cut = dir / "RS-cut.dcm";
+  writeRTStructureSet(whole.string(), twoStructures());
+  const auto size = fs::file_size(whole);
+  for (const auto length : { size / 20, size / 10, size / 4, size / 2, size * 3 / 4, size * 9 / 10, size - 10, size - 1 })
+  {
+    fs::copy_file(whole, cut, fs::copy_options::overwrite_existing);
+    fs::resize_file(cut, length);
+    try
+    {
+      readStructureSet(cut.string());
+      ADD_FAILURE() << "cut to " << length << " of " << size << " bytes, it must not read";
+    }
+    catch (const Error& e)
+    {
+      const std::string message = e.what();
+      EXPECT_NE(message.find("'" + cut.string() + "'"), std::string::npos) << message;
+      EXPECT_NE(message.find("cut short"), std::string::npos) << length << " of " << size << ": " << message;
+    }
+  }
+}
+
 /** The file's bytes with the first run of `find` replaced by `replace`. */
 std::string withBytesReplaced(const fs::path& path, const std::string& find, const std::string& replace)
 {
@@ -505,6 +584,19 @@ TEST(StructureSetReader, ReadsTheJsonFormatWithItsSlicesAndCoordinateSystem)
   EXPECT_EQ(bladder.contours[1][0].z, 7.5);
   EXPECT_EQ(set.structures[1].number, 2) << "an ROI without a number gets its place";
   EXPECT_TRUE(set.structures[1].contours.empty());
+}
+
+TEST(StructureSetReader, AJsonFileWithAByteOrderMarkIsDetectedAndRead)
+{
+  // Windows editors start a UTF-8 file with the byte order mark EF BB BF.
+  const fs::path path = folder("json-bom") / "contours.json";
+  writeText(path, "\xEF\xBB\xBF" R"({ "rois": [ { "name": "Mark", "slices": [ { "z": 2, "polygons": [ [[0, 0], [4, 0], [0, 4]] ] } ] } ] })");
+  EXPECT_EQ(detectContourFileKind(path.string()), ContourFileKind::Json);
+  const StructureSet set = readStructureSet(path.string());
+  ASSERT_EQ(set.structures.size(), 1u);
+  EXPECT_EQ(set.structures[0].name, "Mark");
+  ASSERT_EQ(set.structures[0].contours.size(), 1u);
+  EXPECT_EQ(set.structures[0].contours[0][1].x, 4.0);
 }
 
 TEST(StructureSetReader, AMalformedJsonFileSaysWhere)
