@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 
 namespace slicemesh
@@ -109,6 +110,9 @@ StructureSet readContourPolyData(const std::string& path)
           throw Error("'" + path + "': a cell refers to point " + std::to_string(id) + " of " +
                       std::to_string(geometry.points.size()));
         const std::array<double, 3>& p = geometry.points[static_cast<std::size_t>(id)];
+        // strtod and VTK both read "nan" and "inf", which no contour can be drawn through.
+        if (!std::all_of(p.begin(), p.end(), [](double c) { return std::isfinite(c); }))
+          throw Error("'" + path + "': point " + std::to_string(id) + " of a contour has a coordinate that is not a finite number");
         contour.push_back({ sign * p[0], sign * p[1], p[2] });
       }
       const bool closed = polygons || (ids.size() > 3 && (ids.front() == ids.back() || (contour.front().x == contour.back().x &&

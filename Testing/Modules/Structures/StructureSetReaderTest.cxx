@@ -763,6 +763,8 @@ TEST(StructureSetReader, MalformedLegacyPolyDataIsAOneLineError)
     { "fewPoints", header + "POINTS 4 double\n0 0 0 4 0 0 4\n" },
     { "pointType", header + "POINTS 4 bit\n0 0 0 4 0 0 4 4 0 0 4 0\n" },
     { "notANumber", header + "POINTS 1 double\n0 zero 0\n" },
+    { "nanPoint", header + "POINTS 4 double\n0 0 0 4 0 0 nan 4 0 0 4 0\nLINES 1 6\n5 0 1 2 3 0\n" },
+    { "infinitePoint", header + "POINTS 4 double\n0 0 0 4 0 0 4 4 0 0 4 -inf\nLINES 1 6\n5 0 1 2 3 0\n" },
     { "grid", "# vtk DataFile Version 4.2\nRing\nASCII\nDATASET STRUCTURED_POINTS\n" },
     { "encoding", "# vtk DataFile Version 4.2\nRing\nEBCDIC\nDATASET POLYDATA\n" },
     { "noHeader", "vtk DataFile Version 4.2\nRing\nASCII\nDATASET POLYDATA\n" },
