@@ -31,6 +31,7 @@
 #include <limits>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <unistd.h>
 
@@ -189,6 +190,26 @@ std::string labelFileName(const Structure& s, int width, const std::string& exte
   char value[32];
   std::snprintf(value, sizeof(value), "%0*d", width, s.report.label);
   return std::string(value) + "_" + safeFileName(s.report.name) + extension;
+}
+
+/** The files in `folder` named as a structure's mesh is ("037_Name.vtp": a label number, an
+ *  underscore, the run's extension) that this run did not write: an earlier run's, with other labels. */
+std::vector<fs::path> otherStructureFiles(const fs::path& folder, const std::set<std::string>& written,
+                                          const std::string& extension)
+{
+  std::vector<fs::path> others;
+  std::error_code error;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder, error))
+  {
+    const std::string name = entry.path().filename().string();
+    const std::size_t digits = name.find_first_not_of("0123456789", name[0] == '-' ? 1 : 0);
+    const bool named = digits != std::string::npos && digits > (name[0] == '-' ? 1u : 0u) && name[digits] == '_' &&
+                       entry.path().extension() == extension;
+    if (named && entry.is_regular_file(error) && !written.count(name))
+      others.push_back(entry.path());
+  }
+  std::sort(others.begin(), others.end());
+  return others;
 }
 
 } // namespace
@@ -545,6 +566,20 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   for (const std::exception_ptr& failure : writeFailures)
     if (failure)
       std::rethrow_exception(failure);
+  // Said, not removed: the files are the user's, and may be wanted.
+  if (structureFiles)
+  {
+    std::set<std::string> written; // file names
+    for (const Structure& s : structures)
+      if (s.live())
+        written.insert(fs::path(s.report.path).filename().string());
+    const std::vector<fs::path> others =
+      otherStructureFiles(settings.multiLabel.outputDirectory, written, output.extension().string());
+    if (!others.empty())
+      std::cerr << "SliceMesh: warning: '" << settings.multiLabel.outputDirectory << "' also holds " << others.size()
+                << " mesh file(s) this run did not write (first: " << others.front().filename().string()
+                << "): an earlier run's, of other " << noun << "s" << std::endl;
+  }
   if (!perLabel)
   {
     result.quality = structures.front().report.quality;

@@ -355,6 +355,29 @@ TEST(EndToEnd, MultiLabelDropsComponentsUnderTheMinimumVolume)
   EXPECT_TRUE(fs::is_directory(folder / "theirs"));
 }
 
+TEST(EndToEnd, MeshFilesOfAnEarlierRunInTheFolderAreSaidAndKept)
+{
+  const fs::path folder = freshFolder("e2e-earlier-files");
+  const fs::path input = boxesWithSpecksLabelMap(folder);
+  const std::string meshes = quoted((folder / "meshes").string());
+  ASSERT_EQ(runSliceMesh("--outputDirectory " + meshes + " " + quoted(input.string()) + " " +
+                         quoted((folder / "all.vtp").string()))
+              .exitCode,
+            cli::Success);
+  std::ofstream(folder / "meshes" / "notes.txt") << "the user's"; // not named as a mesh: not counted
+  const RunResult one = runSliceMesh("--labels 1 --outputDirectory " + meshes + " " + quoted(input.string()) + " " +
+                                     quoted((folder / "one.vtp").string()));
+  ASSERT_EQ(one.exitCode, cli::Success) << one.err;
+  EXPECT_NE(one.err.find("also holds 2 mesh file(s) this run did not write (first: 002_Label_2.vtp)"), std::string::npos)
+    << one.err;
+  EXPECT_TRUE(fs::exists(folder / "meshes" / "003_Label_3.vtp"));
+  // Into a folder of its own files only, nothing is said.
+  const RunResult again = runSliceMesh("--outputDirectory " + meshes + " " + quoted(input.string()) + " " +
+                                       quoted((folder / "all.vtp").string()));
+  ASSERT_EQ(again.exitCode, cli::Success) << again.err;
+  EXPECT_EQ(again.err.find("did not write"), std::string::npos) << again.err;
+}
+
 TEST(EndToEnd, SummaryVolumeOfATinyStructureIsNotRoundedToZero)
 {
   // A 4 x 4 x 4 voxel cube at 10 micrometres (a micro-CT's grid): 6.4e-5 mm^3.
