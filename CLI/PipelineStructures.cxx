@@ -280,6 +280,31 @@ std::vector<Structure> labelStructures(std::vector<LabelSource> sources, const s
   return structures;
 }
 
+namespace
+{
+
+/** How far the stacked contours' slices lie from the image's nearest slice (mm), for a stack on the
+ *  image's slice direction. */
+double distanceOffSlices(const StackedContours& contours, const VolumeGeometry& image)
+{
+  const std::array<double, 3> normal = image.sliceDirection();
+  const auto& frame = contours.frame;
+  double farthest = 0.0;
+  for (const Slice& slice : contours.stack.slices)
+  {
+    if (slice.contours.empty())
+      continue;
+    double along = 0.0; // the slice's position along the image's slice direction, from its first slice
+    for (int k = 0; k < 3; ++k)
+      along += (frame.origin[k] + frame.direction[k][2] * slice.z - image.origin[k]) * normal[k];
+    const double slices = along / image.spacing[2];
+    farthest = std::max(farthest, std::abs(slices - std::round(slices)) * image.spacing[2]);
+  }
+  return farthest;
+}
+
+} // namespace
+
 std::optional<std::string> frameOfReferenceWarning(const StructureSet& set, const VolumeGeometry& reference,
                                                    const ContourInputSettings& contours)
 {
@@ -386,6 +411,33 @@ std::vector<Structure> roiStructures(const StructureSet& set, const std::optiona
             << largestDeviation << " degrees from its slice direction (" << stacking.maxNormalDeviationDegrees
             << " allowed); each is stacked along its contours' own normal";
     std::cerr << "SliceMesh: warning: " << oneLine(warning.str()) << std::endl;
+  }
+  // Contours drawn on the image lie on its slices, to the rounding of their coordinates; between
+  // them, they were drawn on another image of the same frame (another phase of a 4D CT, a rescan).
+  if (reference)
+  {
+    std::string between;
+    double farthest = 0.0;
+    for (const Structure& s : structures)
+      if (s.report.error.empty() && s.contours.givenNormalUsed)
+      {
+        const double off = distanceOffSlices(s.contours, *reference);
+        if (off > 0.1 * reference->spacing[2])
+        {
+          between += (between.empty() ? "" : ", ") + std::to_string(s.report.label) + " (" + s.report.name + ")";
+          farthest = std::max(farthest, off);
+        }
+      }
+    if (!between.empty())
+    {
+      std::ostringstream warning;
+      warning.precision(3);
+      warning << "the contours of ROI " << between << " lie between the slices of '" << settings.contours.referenceImage
+              << "': up to " << farthest << " mm from the nearest (its slices are " << reference->spacing[2]
+              << " mm apart); they may have been drawn on another image of this Frame of Reference, and are meshed "
+                 "where the structure set puts them";
+      std::cerr << "SliceMesh: warning: " << oneLine(warning.str()) << std::endl;
+    }
   }
   for (Structure& s : structures)
   {

@@ -95,6 +95,7 @@ VolumeGeometry checkHeaderGeometry(const std::string& path, const itk::ImageIOBa
   for (unsigned int axis = 0; axis < 3; ++axis)
   {
     spacing[axis] = geometry.spacing[axis] = io->GetSpacing(axis);
+    geometry.origin[axis] = io->GetOrigin(axis);
     const std::vector<double> column = io->GetDirection(axis);
     for (unsigned int row = 0; row < 3; ++row)
       direction[row][axis] = geometry.direction[row][axis] = row < column.size() ? column[row] : 0.0;
@@ -485,6 +486,7 @@ VolumeGeometry readVolumeGeometry(const std::string& path)
   for (int i = 0; i < 3; ++i)
   {
     geometry.spacing[i] = volume->GetSpacing()[i];
+    geometry.origin[i] = volume->GetOrigin()[i];
     for (int j = 0; j < 3; ++j)
       geometry.direction[i][j] = volume->GetDirection()[i][j];
   }

@@ -35,6 +35,8 @@ StoredVolume readStoredVolume(const std::string& path);
 struct VolumeGeometry
 {
   std::array<double, 3> spacing{ 1.0, 1.0, 1.0 };
+  /** The first voxel's centre (LPS mm). */
+  std::array<double, 3> origin{ 0.0, 0.0, 0.0 };
   /** Columns: the directions of the voxel axes in LPS; the third is the slice direction. */
   std::array<std::array<double, 3>, 3> direction{ { { 1.0, 0.0, 0.0 }, { 0.0, 1.0, 0.0 }, { 0.0, 0.0, 1.0 } } };
   std::array<double, 3> sliceDirection() const { return { direction[0][2], direction[1][2], direction[2][2] }; }

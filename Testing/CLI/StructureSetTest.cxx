@@ -797,6 +797,23 @@ TEST(StructureSet, ADicomFolderOfACTSeriesAndItsStructureSetMeshesTheROIsOnTheSe
                                        (folder / "CT").string() + "' is in " + frame))
     << elsewhere.err;
   EXPECT_NEAR(expectValid(other / "mesh.vtp").volume, v.volume, 1e-6 * v.volume);
+  EXPECT_FALSE(hasLine(elsewhere.err, "lie between the slices")) << elsewhere.err;
+
+  // Of the series' frame but drawn between its slices (on another phase or a rescan): said, with how
+  // far (half a slice), and meshed where the structure set puts them.
+  const fs::path between = freshFolder("StructureSetBetweenSlices");
+  Vector3 shifted = centre;
+  for (int k = 0; k < 3; ++k)
+    shifted[k] += 0.5 * Spacing * f.normal[k];
+  writeRTStructureSet((between / "RS.dcm").string(), { obliqueCylinder(1, "Oblique", shifted, r, { 0, 1, 3, 5, 7, 9 }) },
+                      {}, frame);
+  const RunResult off = runSliceMesh("--inputContours " + quoted((between / "RS.dcm").string()) + " " +
+                                     quoted((folder / "CT").string()) + " " + quoted((between / "mesh.vtp").string()));
+  ASSERT_EQ(off.exitCode, cli::Success) << off.err;
+  EXPECT_TRUE(hasLine(off.err, "the contours of ROI 1 (Oblique) lie between the slices of '" + (folder / "CT").string() +
+                                 "': up to " + std::to_string(0.5 * Spacing).substr(0, 3) + " mm from the nearest"))
+    << off.err;
+  EXPECT_NEAR(expectValid(between / "mesh.vtp").volume, v.volume, 0.01 * v.volume);
 
   // Two structure sets in the folder: which one is for the user to say. One line, nothing written.
   writeRTStructureSet((folder / "CT" / "RS2.dcm").string(), { obliqueCylinder(2, "Other", centre, r) });
