@@ -3,6 +3,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 
 namespace slicemesh
@@ -77,6 +79,7 @@ StructureSet readDocument(const std::string& path)
         structure.rgb[c] = static_cast<unsigned char>(color[c].get<double>() + 0.5);
       }
     }
+    std::string zDisagrees; // the first slice whose points' z is not its own "z"
     const Json slices = roi.value("slices", Json::array());
     if (!slices.is_array())
       malformed(path, at + ".slices", "not an array");
@@ -101,10 +104,15 @@ StructureSet readDocument(const std::string& path)
             malformed(path, polygonAt, hasZ ? "a point needs [x, y] or [x, y, z]" : "a point needs [x, y, z] (or the slice a \"z\")");
           const double x = coordinate(point[0], path, polygonAt), y = coordinate(point[1], path, polygonAt);
           contour.push_back({ sign * x, sign * y, point.size() == 3 ? coordinate(point[2], path, polygonAt) : z });
+          if (hasZ && point.size() == 3 && zDisagrees.empty() &&
+              std::abs(contour.back().z - z) > 1e-6 * std::max(1.0, std::abs(z)))
+            zDisagrees = sliceAt;
         }
         structure.contours.push_back(std::move(contour));
       }
     }
+    if (!zDisagrees.empty())
+      structure.notes.push_back(zDisagrees + " has points whose z is not its \"z\": the points' own are used");
     set.structures.push_back(std::move(structure));
   }
   if (set.structures.empty())

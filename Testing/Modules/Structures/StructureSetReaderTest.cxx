@@ -586,6 +586,25 @@ TEST(StructureSetReader, ReadsTheJsonFormatWithItsSlicesAndCoordinateSystem)
   EXPECT_TRUE(set.structures[1].contours.empty());
 }
 
+TEST(StructureSetReader, AJsonSliceWhosePointsSayAnotherZIsSaid)
+{
+  // The points' own z are used (they may be a tilted plane's), but a slice "z" they contradict is a
+  // mistake of the writer to say.
+  const fs::path path = folder("jsonZ") / "contours.json";
+  writeText(path, R"({ "rois": [
+      { "name": "Agrees", "slices": [ { "z": 4.5, "polygons": [ [[0, 0, 4.5], [10, 0, 4.5], [10, 10, 4.5]] ] } ] },
+      { "name": "Contradicts", "slices": [ { "z": 4.5, "polygons": [ [[0, 0], [10, 0], [10, 10]] ] },
+                                           { "z": 7.5, "polygons": [ [[0, 0, 9], [10, 0, 9], [10, 10, 9]] ] } ] }
+    ] })");
+  const StructureSet set = readStructureSet(path.string());
+  ASSERT_EQ(set.structures.size(), 2u);
+  EXPECT_TRUE(set.structures[0].notes.empty());
+  ASSERT_EQ(set.structures[1].notes.size(), 1u);
+  EXPECT_NE(set.structures[1].notes[0].find("rois[1].slices[1] has points whose z is not its \"z\""), std::string::npos)
+    << set.structures[1].notes[0];
+  EXPECT_EQ(set.structures[1].contours[1][0].z, 9.0);
+}
+
 TEST(StructureSetReader, AJsonFileWithAByteOrderMarkIsDetectedAndRead)
 {
   // Windows editors start a UTF-8 file with the byte order mark EF BB BF.
