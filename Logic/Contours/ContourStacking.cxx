@@ -104,6 +104,10 @@ std::string millimetres(double value)
   return text.str();
 }
 
+/** A drawn contour's points lie in its plane to the rounding of their coordinates (a hundredth of a
+ *  millimetre in a planning system's files): farther off, it is not the planar contour it claims. */
+constexpr double maxOffPlane = 0.1;
+
 /** The mean of the contour's points: the products of the normals are taken about it, since far
  *  from the origin they would lose the digits that matter. */
 Vector3 centreOf(const Polygon3& contour)
@@ -303,7 +307,8 @@ StackedContours stackContours(const std::vector<Polygon3>& contours, const Conto
     Polygon2 contour;
   };
   std::vector<Placed> placed;
-  std::size_t tilted = 0, arealess = 0;
+  std::size_t tilted = 0, arealess = 0, uneven = 0;
+  double farthestOffPlane = 0.0;
   const double maxTiltCosine = std::cos(options.maxTiltDegrees * Pi / 180.0);
   for (const Polygon3& raw : contours)
   {
@@ -321,11 +326,19 @@ StackedContours stackContours(const std::vector<Polygon3>& contours, const Conto
       continue;
     }
     Placed p;
+    const Vector3 centre = centreOf(contour);
+    double offPlane = 0.0; // the farthest point from the contour's own plane
     for (const Point3& point : contour)
     {
       const Vector3 x = asVector(point);
       p.position += dot(x, normal);
       p.contour.push_back({ dot(x, u), dot(x, v) });
+      offPlane = std::max(offPlane, std::abs(dot({ x[0] - centre[0], x[1] - centre[1], x[2] - centre[2] }, n)) / length);
+    }
+    if (offPlane > maxOffPlane)
+    {
+      ++uneven;
+      farthestOffPlane = std::max(farthestOffPlane, offPlane);
     }
     p.position /= static_cast<double>(contour.size());
     placed.push_back(std::move(p));
@@ -337,6 +350,14 @@ StackedContours stackContours(const std::vector<Polygon3>& contours, const Conto
     std::ostringstream note;
     note << tilted << " contour(s) tilted by more than " << options.maxTiltDegrees
          << " degrees from the slice plane skipped";
+    result.notes.push_back(note.str());
+  }
+  if (uneven > 0)
+  {
+    std::ostringstream note;
+    note.precision(3);
+    note << uneven << " contour(s) not flat: points up to " << farthestOffPlane
+         << " mm off their own plane (each is taken in the slice plane, at its points' mean position)";
     result.notes.push_back(note.str());
   }
   if (placed.empty())

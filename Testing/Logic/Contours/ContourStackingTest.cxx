@@ -136,6 +136,34 @@ TEST(ContourStacking, ATiltedContourAmongAxialOnesIsSkippedAndTheNormalStaysAxia
   EXPECT_TRUE(mentions(stacked.notes, "tilted")) << "the skipped contour must be reported";
 }
 
+TEST(ContourStacking, AContourNotFlatIsSaidAndOneTiltedButFlatIsNot)
+{
+  // Circles of 32 points every 3 mm: one whose points go up and down by 0.5 mm, one tilted by 3
+  // degrees (within the tilt allowed), flat.
+  auto circle = [](double z, double wobble, double tilt)
+  {
+    Polygon3 points;
+    for (int i = 0; i < 32; ++i)
+    {
+      const double a = 2.0 * Pi * i / 32.0, x = 20.0 * std::cos(a), y = 20.0 * std::sin(a);
+      points.push_back({ x, y, z + (i % 2 ? wobble : -wobble) + x * std::tan(tilt * Pi / 180.0) });
+    }
+    return points;
+  };
+  std::vector<Polygon3> flat;
+  for (int k = 0; k < 6; ++k)
+    flat.push_back(circle(3.0 * k, 0.0, k == 3 ? 3.0 : 0.0));
+  const StackedContours tilted = stackContours(flat);
+  EXPECT_EQ(tilted.contoursUsed, 6u);
+  EXPECT_FALSE(mentions(tilted.notes, "not flat"));
+  std::vector<Polygon3> wobbling = flat;
+  wobbling[2] = circle(6.0, 0.5, 0.0);
+  const StackedContours stacked = stackContours(wobbling);
+  EXPECT_EQ(stacked.contoursUsed, 6u);
+  EXPECT_TRUE(mentions(stacked.notes, "1 contour(s) not flat: points up to 0.5 mm off their own plane"))
+    << (stacked.notes.empty() ? "" : stacked.notes.front());
+}
+
 TEST(ContourStacking, ContoursOfOneSliceGroupDespiteSmallOffsetsAndDuplicatesAreDropped)
 {
   std::vector<Polygon3> contours;
