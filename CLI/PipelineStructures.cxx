@@ -329,8 +329,9 @@ std::vector<Structure> roiStructures(const StructureSet& set, const std::optiona
   stacking.sliceNormal = set.sliceNormal;
   if (reference)
   {
-    stacking.sliceNormal = reference->sliceDirection();
-    stacking.expectedSliceSpacing = reference->spacing[2];
+    // The planes' normal and distance: a tilted CT's slices step sideways along its third axis.
+    stacking.sliceNormal = reference->sliceNormal();
+    stacking.expectedSliceSpacing = reference->sliceDistance();
   }
   auto stack = [&](std::size_t n)
   {

@@ -116,6 +116,10 @@ std::string safeFileName(const std::string& name)
     if (!continuation)
       safe += ((c < 0x80 && std::isalnum(c)) || c == '-' || c == '_' || c == '.') ? static_cast<char>(c) : '_';
   }
+  // A file name holds at most 255 bytes: a longer segment or label name (a sentence pasted into
+  // Slicer's name field) made the whole run fail to write its file, after the others were written.
+  if (safe.size() > maxSafeFileNameLength)
+    safe.resize(maxSafeFileNameLength);
   return safe.empty() ? std::string("unnamed") : safe;
 }
 

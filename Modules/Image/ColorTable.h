@@ -4,6 +4,7 @@
 #define ColorTable_h
 
 #include <array>
+#include <cstddef>
 #include <map>
 #include <string>
 
@@ -42,8 +43,11 @@ private:
   std::map<int, LabelColor> Entries;
 };
 
+/** The longest safeFileName: room for the number before it and the extension after it. */
+constexpr std::size_t maxSafeFileNameLength = 200;
+
 /** A file-name-safe form of a label name: ASCII letters, digits, '-', '_' and '.'; each other
- *  character (of one byte or a UTF-8 sequence) becomes one '_'. */
+ *  character (of one byte or a UTF-8 sequence) becomes one '_'; cut at maxSafeFileNameLength. */
 std::string safeFileName(const std::string& name);
 
 } // namespace slicemesh

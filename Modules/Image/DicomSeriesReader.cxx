@@ -15,6 +15,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <sstream>
@@ -24,6 +25,16 @@ namespace slicemesh
 
 namespace
 {
+
+/** A DICOM file's Number of Frames (0028,0008); 1 when it does not say. */
+long frameCount(const std::string& file)
+{
+  const gdcm::Tag framesTag(0x0028, 0x0008);
+  gdcm::Scanner scanner;
+  scanner.AddTag(framesTag);
+  const char* text = scanner.Scan({ file }) ? scanner.GetValue(file.c_str(), framesTag) : nullptr;
+  return text ? std::max(1L, std::strtol(text, nullptr, 10)) : 1L;
+}
 
 /** The files of the largest DICOM image series in the folder, in slice order. */
 std::vector<std::string> dicomSeriesFiles(const std::string& folder)
@@ -50,7 +61,8 @@ std::vector<std::string> dicomSeriesFiles(const std::string& folder)
   {
     throw Error(folder + ": cannot list the DICOM series: " + itkErrorText(error));
   }
-  if (fileNames.size() < 2)
+  // One file of several frames (an enhanced, multi-frame CT or MR) is a whole volume by itself.
+  if (fileNames.size() < 2 && frameCount(fileNames.front()) < 2)
     throw Error(folder + ": the DICOM series has a single slice (a 2-D image); SliceMesh needs a 3-D volume");
   return fileNames;
 }
@@ -76,41 +88,72 @@ std::string fileName(const std::string& path)
   return std::filesystem::path(path).filename().string();
 }
 
-/** The series reader places the slices evenly between the first and the last: a slice missing from
- *  the export, or slices of two spacings, would shift every slice after it and stretch the mesh
- *  without a word. Each file's Image Position along the normal of the first file's Image
- *  Orientation is checked against its even place; a slice farther than a twentieth of the spacing
- *  from it (a missing slice is half a spacing or more) is refused. Files without these attributes
- *  are left to the reader. */
-void requireEvenlySpacedSlices(const std::string& folder, const std::vector<std::string>& files)
+double angleDegrees(const std::array<double, 3>& a, const std::array<double, 3>& b)
+{
+  const double dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  const double norms = std::sqrt((a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) * (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]));
+  return std::acos(std::clamp(dot / norms, -1.0, 1.0)) * 180.0 / 3.14159265358979323846;
+}
+
+/** The step from one slice's Image Position to the next's, checked. The series reader places every
+ *  slice in the first one's orientation, evenly between the first and the last: slices of another
+ *  orientation (a three-plane localizer shares one series) would be put where they are not, and a
+ *  slice missing from the export, or slices of two spacings, would shift every slice after it and
+ *  stretch the mesh without a word. So every file's Image Orientation must be the first's, and its
+ *  Image Position along the normal within a twentieth of the spacing of its even place (a missing
+ *  slice is half a spacing or more). Empty when the files lack these attributes (left to the
+ *  reader). */
+std::optional<std::array<double, 3>> checkedSliceStep(const std::string& folder, const std::vector<std::string>& files)
 {
   const gdcm::Tag positionTag(0x0020, 0x0032), orientationTag(0x0020, 0x0037);
   gdcm::Scanner scanner;
   scanner.AddTag(positionTag);
   scanner.AddTag(orientationTag);
   if (!scanner.Scan(files))
-    return;
+    return std::nullopt;
   const auto orientation = decimals<6>(scanner.GetValue(files.front().c_str(), orientationTag));
   if (!orientation)
-    return;
+    return std::nullopt;
   const std::array<double, 6>& o = *orientation;
+  for (const std::string& file : files)
+  {
+    const auto other = decimals<6>(scanner.GetValue(file.c_str(), orientationTag));
+    if (!other)
+      continue;
+    const double turn = std::max(angleDegrees({ o[0], o[1], o[2] }, { (*other)[0], (*other)[1], (*other)[2] }),
+                                 angleDegrees({ o[3], o[4], o[5] }, { (*other)[3], (*other)[4], (*other)[5] }));
+    if (turn > 0.01)
+    {
+      char text[320];
+      std::snprintf(text, sizeof text,
+                    ": the slices are not all of one orientation: %s is turned %.3g degrees from %s; SliceMesh needs "
+                    "one series of parallel slices",
+                    fileName(file).c_str(), turn, fileName(files.front()).c_str());
+      throw Error(folder + text);
+    }
+  }
   const std::array<double, 3> normal{ o[1] * o[5] - o[2] * o[4], o[2] * o[3] - o[0] * o[5], o[0] * o[4] - o[1] * o[3] };
+  std::vector<std::array<double, 3>> positions;
   std::vector<double> heights;
   for (const std::string& file : files)
   {
     const auto position = decimals<3>(scanner.GetValue(file.c_str(), positionTag));
     if (!position)
-      return;
+      return std::nullopt;
     const std::array<double, 3>& p = *position;
+    positions.push_back(p);
     heights.push_back(p[0] * normal[0] + p[1] * normal[1] + p[2] * normal[2]);
   }
   const std::size_t n = heights.size();
-  const double step = (heights.back() - heights.front()) / static_cast<double>(n - 1);
+  std::array<double, 3> step{};
+  for (int a = 0; a < 3; ++a)
+    step[a] = (positions.back()[a] - positions.front()[a]) / static_cast<double>(n - 1);
+  const double spacing = (heights.back() - heights.front()) / static_cast<double>(n - 1);
   double worstDeviation = 0.0;
   for (std::size_t k = 1; k < n; ++k)
-    worstDeviation = std::max(worstDeviation, std::abs(heights[k] - (heights.front() + static_cast<double>(k) * step)));
-  if (!(worstDeviation > 0.05 * std::abs(step)))
-    return;
+    worstDeviation = std::max(worstDeviation, std::abs(heights[k] - (heights.front() + static_cast<double>(k) * spacing)));
+  if (!(worstDeviation > 0.05 * std::abs(spacing)))
+    return step;
   // Named by the gap between neighbours that differs most from the usual one (the median gap).
   std::vector<double> gaps(n - 1);
   for (std::size_t k = 0; k + 1 < n; ++k)
@@ -130,6 +173,32 @@ void requireEvenlySpacedSlices(const std::string& folder, const std::vector<std:
   throw Error(folder + text);
 }
 
+/** A gantry-tilted series: each slice is shifted in its plane from the one before, so the voxel
+ *  grid is sheared. The series reader stacks the slices along their normal, the distance between
+ *  positions apart (too far, and without the shift: the mesh would be stretched and out of place
+ *  by up to the tilt's whole shift); the third axis is made the step between positions instead,
+ *  which puts every voxel where it was scanned. A shift under a thousandth of the step (rounded
+ *  positions) is left alone. */
+void followTiltedSlices(ScalarVolume* volume, const std::array<double, 3>& step)
+{
+  const double length = std::sqrt(step[0] * step[0] + step[1] * step[1] + step[2] * step[2]);
+  if (!(length > 0.0))
+    return;
+  ScalarVolume::DirectionType direction = volume->GetDirection();
+  double along = 0.0;
+  for (unsigned int row = 0; row < 3; ++row)
+    along += step[row] * direction[row][2];
+  const double across = std::sqrt(std::max(0.0, length * length - along * along));
+  if (!(across > 1e-3 * length))
+    return;
+  for (unsigned int row = 0; row < 3; ++row)
+    direction[row][2] = step[row] / length;
+  ScalarVolume::SpacingType spacing = volume->GetSpacing();
+  spacing[2] = length;
+  volume->SetDirection(direction);
+  volume->SetSpacing(spacing);
+}
+
 } // namespace
 
 ScalarVolume::Pointer readDicomSeriesIn(const std::string& folder, bool voxels)
@@ -138,7 +207,8 @@ ScalarVolume::Pointer readDicomSeriesIn(const std::string& folder, bool voxels)
   auto io = itk::GDCMImageIO::New();
   reader->SetImageIO(io);
   const std::vector<std::string> files = dicomSeriesFiles(folder);
-  requireEvenlySpacedSlices(folder, files);
+  const std::optional<std::array<double, 3>> step =
+    files.size() > 1 ? checkedSliceStep(folder, files) : std::nullopt;
   reader->SetFileNames(files);
   // The series reader orders the slices and takes the spacing between them from their positions.
   if (voxels)
@@ -147,6 +217,8 @@ ScalarVolume::Pointer readDicomSeriesIn(const std::string& folder, bool voxels)
     reader->UpdateOutputInformation();
   ScalarVolume::Pointer volume = reader->GetOutput();
   volume->DisconnectPipeline();
+  if (step)
+    followTiltedSlices(volume, *step);
   // The series' header as one of its files states it: what a slice does not vary (the Frame of
   // Reference) is then known without opening a file again.
   volume->SetMetaDataDictionary(io->GetMetaDataDictionary());

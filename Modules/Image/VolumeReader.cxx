@@ -364,6 +364,10 @@ itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
   {
     throw Error(path + ": cannot read the image header: " + itkErrorText(error));
   }
+  // GDCM gives a DICOM file of one frame as a volume of one slice 1 mm thick, a thickness it makes
+  // up: a slice of a series given instead of its folder would be meshed as a 1 mm slab.
+  if (std::string(io->GetNameOfClass()) == "GDCMImageIO" && io->GetNumberOfDimensions() == 3 && io->GetDimensions(2) == 1)
+    throw Error(path + ": a single DICOM slice (a 2-D image); SliceMesh needs a 3-D volume: give the folder of its series");
   return io;
 }
 
@@ -468,6 +472,25 @@ bool isSeriesFolder(const std::string& path)
 }
 
 } // namespace
+
+std::array<double, 3> VolumeGeometry::sliceNormal() const
+{
+  const std::array<double, 3> u{ direction[0][0], direction[1][0], direction[2][0] };
+  const std::array<double, 3> v{ direction[0][1], direction[1][1], direction[2][1] };
+  std::array<double, 3> normal{ u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0] };
+  const std::array<double, 3> slice = sliceDirection();
+  const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+  const double side = normal[0] * slice[0] + normal[1] * slice[1] + normal[2] * slice[2] < 0.0 ? -1.0 : 1.0;
+  for (double& c : normal)
+    c *= side / length;
+  return normal;
+}
+
+double VolumeGeometry::sliceDistance() const
+{
+  const std::array<double, 3> normal = sliceNormal(), slice = sliceDirection();
+  return spacing[2] * std::abs(normal[0] * slice[0] + normal[1] * slice[1] + normal[2] * slice[2]);
+}
 
 VolumeGeometry readVolumeGeometry(const std::string& path)
 {

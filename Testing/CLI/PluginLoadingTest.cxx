@@ -70,10 +70,12 @@ TEST(Plugins, AStructureSetRunLoadsTheStructureSetPluginAndDcmtkOnly)
     EXPECT_FALSE(opened(run, library)) << library;
 }
 
-TEST(Plugins, ASingleDicomImageIsReadThroughTheDicomPlugin)
+TEST(Plugins, ASingleDicomImageIsReadThroughTheDicomPluginAndRefusedAsTwoDimensional)
 {
   // One slice of a CT series, a disc in it: no reader of the executable's own takes the file, so
-  // the DICOM plugin is loaded and its reader (GDCM) reads it, as a volume one slice thick.
+  // the DICOM plugin is loaded and its reader (GDCM) reads it. One frame is a 2-D image (GDCM would
+  // make it a slice 1 mm thick, a thickness it makes up): refused in one line, as a folder of one
+  // slice is.
   const fs::path folder = freshFolder("PluginsSingleDicom");
   auto ct = CTVolume::New();
   ct->SetRegions(CTVolume::SizeType{ { 24, 24, 2 } });
@@ -87,8 +89,9 @@ TEST(Plugins, ASingleDicomImageIsReadThroughTheDicomPlugin)
   const RunResult run = tracedRun(quoted((folder / "CT" / "slice000.dcm").string()) + " " + quoted((folder / "disc.vtp").string()));
   EXPECT_NE(run.err.find(std::string(pluginFolderName) + "/libSliceMeshImageDicom.so"), std::string::npos);
   EXPECT_TRUE(opened(run, "libgdcm"));
-  ASSERT_EQ(run.exitCode, cli::Success) << run.err.substr(run.err.size() > 2000 ? run.err.size() - 2000 : 0);
-  EXPECT_TRUE(fs::exists(folder / "disc.vtp"));
+  ASSERT_EQ(run.exitCode, cli::UnreadableInput) << run.err.substr(run.err.size() > 2000 ? run.err.size() - 2000 : 0);
+  EXPECT_NE(run.err.find("slice000.dcm: a single DICOM slice (a 2-D image)"), std::string::npos);
+  EXPECT_FALSE(fs::exists(folder / "disc.vtp"));
 }
 
 TEST(Plugins, AMissingPluginIsAnErrorThatSaysWhatNeedsIt)

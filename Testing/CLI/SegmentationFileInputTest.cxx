@@ -221,6 +221,27 @@ TEST(SegmentationFileInput, SlicerTwoLayersGiveOneNamedColouredMeshPerSegment)
               roundVolumeTolerance * (ballVolume(ballRadius) + boxVolume() + ballVolume(lesionRadius)));
 }
 
+TEST(SegmentationFileInput, AVeryLongSegmentNameGivesAFileNameThatCanBeWritten)
+{
+  // A file name holds at most 255 bytes: a segment named with 300 characters failed the whole run
+  // (exit 6, the merged model not written) after the other segments' files were.
+  const fs::path folder = freshFolder("segfile-longname");
+  const fs::path input = folder / "long.seg.nrrd";
+  const std::string longName(300, 'A');
+  writeSlicerSegmentation(
+    input, slicerGrid(),
+    { [](const PhysicalPoint& p) -> unsigned char { return distance(p, ballCentre) <= ballRadius ? 1 : inBox(p) ? 2 : 0; } },
+    { { "Segment_1", longName, "0.9 0.2 0.1", "0", "1" }, { "Segment_2", "Box", "0.2 0.4 0.9", "0", "2" } }, {}, false);
+  const fs::path meshes = folder / "meshes";
+  const RunResult r = runSliceMesh("--outputDirectory " + quoted(meshes.string()) + " " + quoted(input.string()) + " " +
+                                   quoted((folder / "all.vtp").string()));
+  ASSERT_EQ(r.exitCode, cli::Success) << r.err;
+  const fs::path cut = meshes / ("001_" + std::string(200, 'A') + ".vtp");
+  expectSegmentMesh(cut, { cut.filename().string(), longName, { 230, 51, 26 }, ballVolume(ballRadius), ballCentre });
+  EXPECT_TRUE(fs::exists(meshes / "002_Box.vtp"));
+  EXPECT_TRUE(fs::exists(folder / "all.vtp"));
+}
+
 TEST(SegmentationFileInput, LabelsPickSegmentsByNumberOrName)
 {
   const fs::path folder = freshFolder("segfile-pick");

@@ -5,6 +5,7 @@
 #include "itkImage.h"
 
 #include <filesystem>
+#include <string>
 
 namespace slicemesh::testing
 {
@@ -13,8 +14,13 @@ using CTVolume = itk::Image<short, 3>;
 
 /** Writes `volume` into `folder` as slice000.dcm, slice001.dcm, ...: CT images of one study and one
  *  series, each slice with its instance number, position, orientation, pixel spacing and slice
- *  thickness, from the volume's origin, direction and spacing. */
-void writeCTSeries(const CTVolume* volume, const std::filesystem::path& folder);
+ *  thickness, from the volume's origin, direction and spacing. Each call makes a series of its own,
+ *  unless `seriesUID` is given: the files of every call given the same one are one series. */
+void writeCTSeries(const CTVolume* volume, const std::filesystem::path& folder, const std::string& seriesUID = {});
+
+/** Writes `volume` as one multi-frame file (Multi-frame Grayscale Word Secondary Capture), a frame
+ *  per slice, as an enhanced CT or MR keeps a whole series in one file. */
+void writeMultiFrameFile(const CTVolume* volume, const std::filesystem::path& file);
 
 } // namespace slicemesh::testing
 

@@ -330,6 +330,97 @@ TEST_F(VolumeReaderTest, DicomSeriesWithAMissingSliceIsAnError)
   }
 }
 
+TEST_F(VolumeReaderTest, GantryTiltedDicomSeriesKeepsEachSliceWhereItWasScanned)
+{
+  // A head CT scanned with the gantry tilted 15 degrees: axial slices, each shifted 0.67 mm
+  // posteriorly from the one before. The series reader stacked them straight along their normal,
+  // 2.59 mm apart instead of 2.5 (the mesh 3.5% too tall and up to the whole shift out of place).
+  using ShortVolume = itk::Image<short, 3>;
+  auto volume = testing::makeImage<ShortVolume>({ 6, 5, 8 });
+  const double tilt = 15.0 * 3.14159265358979323846 / 180.0, spacingBetweenPlanes = 2.5;
+  ShortVolume::SpacingType spacing;
+  spacing[0] = 0.7, spacing[1] = 0.6, spacing[2] = spacingBetweenPlanes / std::cos(tilt);
+  volume->SetSpacing(spacing);
+  ShortVolume::PointType origin;
+  origin[0] = -20.0, origin[1] = 15.5, origin[2] = -300.0;
+  volume->SetOrigin(origin);
+  ShortVolume::DirectionType sheared; // axial rows and columns; the third axis leans towards +y
+  sheared.SetIdentity();
+  sheared[1][2] = std::sin(tilt), sheared[2][2] = std::cos(tilt);
+  volume->SetDirection(sheared);
+  for (long n = 0; n < 240; ++n)
+    volume->GetBufferPointer()[n] = static_cast<short>(n);
+  const fs::path dicom = m_Directory / "tilted";
+  testing::writeCTSeries(volume, dicom);
+
+  const ScalarVolume::Pointer read = readVolume(dicom.string());
+  ASSERT_EQ(read->GetLargestPossibleRegion().GetSize()[2], 8u);
+  for (const ScalarVolume::IndexType index : { ScalarVolume::IndexType{ { 0, 0, 0 } }, ScalarVolume::IndexType{ { 5, 4, 7 } },
+                                               ScalarVolume::IndexType{ { 2, 1, 4 } } })
+  {
+    ScalarVolume::PointType expected, found;
+    volume->TransformIndexToPhysicalPoint(index, expected);
+    read->TransformIndexToPhysicalPoint(index, found);
+    for (unsigned int row = 0; row < 3; ++row)
+      EXPECT_NEAR(found[row], expected[row], 1e-3) << "voxel " << index << ", axis " << row;
+    EXPECT_EQ(read->GetPixel(index), volume->GetPixel(index));
+  }
+  // Contours drawn on it lie in its axial planes, 2.5 mm apart.
+  const VolumeGeometry geometry = readVolumeGeometry(dicom.string());
+  EXPECT_NEAR(geometry.sliceNormal()[0], 0.0, 1e-6);
+  EXPECT_NEAR(geometry.sliceNormal()[1], 0.0, 1e-6);
+  EXPECT_NEAR(geometry.sliceNormal()[2], 1.0, 1e-6);
+  EXPECT_NEAR(geometry.sliceDistance(), spacingBetweenPlanes, 1e-4);
+}
+
+TEST_F(VolumeReaderTest, DicomSeriesOfSlicesInTwoOrientationsIsAnError)
+{
+  // One series whose last three slices are turned 5 degrees about the normal (as the planes of a
+  // three-plane localizer share one series): the reader would place them in the first's orientation.
+  using ShortVolume = itk::Image<short, 3>;
+  auto lower = testing::makeImage<ShortVolume>({ 4, 4, 3 }, { 0.8, 0.8, 2.5 });
+  auto upper = testing::makeImage<ShortVolume>({ 4, 4, 3 }, { 0.8, 0.8, 2.5 });
+  ShortVolume::PointType origin;
+  origin.Fill(0.0);
+  origin[2] = 7.5;
+  upper->SetOrigin(origin);
+  const double turn = 5.0 * 3.14159265358979323846 / 180.0;
+  ShortVolume::DirectionType turned;
+  turned.SetIdentity();
+  turned[0][0] = std::cos(turn), turned[0][1] = -std::sin(turn);
+  turned[1][0] = std::sin(turn), turned[1][1] = std::cos(turn);
+  upper->SetDirection(turned);
+  const fs::path dicom = m_Directory / "series", other = m_Directory / "upper";
+  const std::string series = "1.2.826.0.1.3680043.2.1125.1.7";
+  testing::writeCTSeries(lower, dicom, series);
+  testing::writeCTSeries(upper, other, series); // moved in as slices 3 to 5
+  for (int k = 0; k < 3; ++k)
+    fs::rename(other / ("slice00" + std::to_string(k) + ".dcm"), dicom / ("slice00" + std::to_string(k + 3) + ".dcm"));
+  const std::string message = errorMessageOf([&] { readVolume(dicom.string()); });
+  EXPECT_NE(message.find("not all of one orientation: slice003.dcm is turned 5 degrees from slice000.dcm"), std::string::npos)
+    << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+TEST_F(VolumeReaderTest, OneDicomSliceIsAnErrorButOneMultiFrameFileIsAVolume)
+{
+  // GDCM gives a single-frame file as a slice 1 mm thick, a thickness it makes up: a slice of a
+  // series given instead of its folder was meshed as a 1 mm slab.
+  using ShortVolume = itk::Image<short, 3>;
+  auto volume = testing::makeImage<ShortVolume>({ 4, 4, 5 }, { 0.8, 0.8, 2.5 });
+  const fs::path dicom = m_Directory / "series";
+  testing::writeCTSeries(volume, dicom);
+  const std::string message = errorMessageOf([&] { readVolume((dicom / "slice002.dcm").string()); });
+  EXPECT_NE(message.find("slice002.dcm: a single DICOM slice (a 2-D image)"), std::string::npos) << message;
+  EXPECT_NE(message.find("give the folder of its series"), std::string::npos) << message;
+
+  // A folder holding one file of five frames (an enhanced CT) is that volume, not "a single slice".
+  const fs::path multiFrame = m_Directory / "enhanced";
+  fs::create_directories(multiFrame);
+  testing::writeMultiFrameFile(volume, multiFrame / "volume.dcm");
+  EXPECT_EQ(readVolume(multiFrame.string())->GetLargestPossibleRegion().GetSize()[2], 5u);
+}
+
 TEST_F(VolumeReaderTest, DirectoryWithoutDicomIsAnError)
 {
   writeText("readme.txt", "no images here\n");
