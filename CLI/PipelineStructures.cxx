@@ -287,7 +287,8 @@ namespace
  *  image's slice direction. */
 double distanceOffSlices(const StackedContours& contours, const VolumeGeometry& image)
 {
-  const std::array<double, 3> normal = image.sliceDirection();
+  const std::array<double, 3> normal = image.sliceNormal(); // a tilted CT's slices step sideways too
+  const double distance = image.sliceDistance();
   const auto& frame = contours.frame;
   double farthest = 0.0;
   for (const Slice& slice : contours.stack.slices)
@@ -297,8 +298,8 @@ double distanceOffSlices(const StackedContours& contours, const VolumeGeometry& 
     double along = 0.0; // the slice's position along the image's slice direction, from its first slice
     for (int k = 0; k < 3; ++k)
       along += (frame.origin[k] + frame.direction[k][2] * slice.z - image.origin[k]) * normal[k];
-    const double slices = along / image.spacing[2];
-    farthest = std::max(farthest, std::abs(slices - std::round(slices)) * image.spacing[2]);
+    const double slices = along / distance;
+    farthest = std::max(farthest, std::abs(slices - std::round(slices)) * distance);
   }
   return farthest;
 }
@@ -423,7 +424,7 @@ std::vector<Structure> roiStructures(const StructureSet& set, const std::optiona
       if (s.report.error.empty() && s.contours.givenNormalUsed)
       {
         const double off = distanceOffSlices(s.contours, *reference);
-        if (off > 0.1 * reference->spacing[2])
+        if (off > 0.1 * reference->sliceDistance())
         {
           between += (between.empty() ? "" : ", ") + std::to_string(s.report.label) + " (" + s.report.name + ")";
           farthest = std::max(farthest, off);
@@ -434,7 +435,7 @@ std::vector<Structure> roiStructures(const StructureSet& set, const std::optiona
       std::ostringstream warning;
       warning.precision(3);
       warning << "the contours of ROI " << between << " lie between the slices of '" << settings.contours.referenceImage
-              << "': up to " << farthest << " mm from the nearest (its slices are " << reference->spacing[2]
+              << "': up to " << farthest << " mm from the nearest (its slices are " << reference->sliceDistance()
               << " mm apart); they may have been drawn on another image of this Frame of Reference, and are meshed "
                  "where the structure set puts them";
       std::cerr << "SliceMesh: warning: " << oneLine(warning.str()) << std::endl;
