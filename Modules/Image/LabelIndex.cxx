@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <sstream>
 #include <type_traits>
@@ -23,7 +24,7 @@ bool notALabel(Pixel value)
   else if constexpr (std::is_signed_v<Pixel>)
     return value < 0;
   else
-    return false; // one or two bytes: below 2^31
+    return static_cast<std::uint64_t>(value) >= 2147483648u; // four unsigned bytes may pass a label's int
 }
 
 template <typename TImage>
@@ -47,9 +48,13 @@ std::vector<LabelExtent> indexLabelsOf(const TImage* labelMap)
         if (notALabel(value))
         {
           std::ostringstream message;
+          message.precision(9); // a float's every digit: 1.0000001 is no label, "1" would say it is
           message << "voxel (" << i + start[0] << ", " << j + start[1] << ", " << k + start[2] << ") holds "
                   << +value
-                  << ": not a label map (labels are non-negative integers)";
+                  << (value > Pixel(0) && std::isfinite(static_cast<double>(value)) &&
+                          std::floor(static_cast<double>(value)) == static_cast<double>(value)
+                        ? ": a label above 2147483647, the largest SliceMesh names"
+                        : ": not a label map (labels are non-negative integers)");
           throw Error(message.str());
         }
         const int label = static_cast<int>(value);
@@ -163,6 +168,26 @@ std::vector<LabelExtent> indexLabels(const itk::Image<std::int16_t, 3>* labelMap
 }
 
 MaskVolume::Pointer cropLabelMask(const itk::Image<std::int16_t, 3>* labelMap, const LabelExtent& extent)
+{
+  return cropLabelMaskOf(labelMap, extent);
+}
+
+std::vector<LabelExtent> indexLabels(const itk::Image<std::uint32_t, 3>* labelMap)
+{
+  return indexLabelsOf(labelMap);
+}
+
+MaskVolume::Pointer cropLabelMask(const itk::Image<std::uint32_t, 3>* labelMap, const LabelExtent& extent)
+{
+  return cropLabelMaskOf(labelMap, extent);
+}
+
+std::vector<LabelExtent> indexLabels(const itk::Image<std::int32_t, 3>* labelMap)
+{
+  return indexLabelsOf(labelMap);
+}
+
+MaskVolume::Pointer cropLabelMask(const itk::Image<std::int32_t, 3>* labelMap, const LabelExtent& extent)
 {
   return cropLabelMaskOf(labelMap, extent);
 }

@@ -27,6 +27,8 @@ std::vector<LabelExtent> indexLabels(const itk::Image<std::uint8_t, 3>* labelMap
 std::vector<LabelExtent> indexLabels(const itk::Image<std::int8_t, 3>* labelMap);
 std::vector<LabelExtent> indexLabels(const itk::Image<std::uint16_t, 3>* labelMap);
 std::vector<LabelExtent> indexLabels(const itk::Image<std::int16_t, 3>* labelMap);
+std::vector<LabelExtent> indexLabels(const itk::Image<std::uint32_t, 3>* labelMap);
+std::vector<LabelExtent> indexLabels(const itk::Image<std::int32_t, 3>* labelMap);
 
 /** The mask (1 where the voxel equals extent.label) of the label's box: an image whose region
  *  starts at the box's index, with the label map's spacing, origin and direction, so physical
@@ -37,6 +39,8 @@ MaskVolume::Pointer cropLabelMask(const itk::Image<std::uint8_t, 3>* labelMap, c
 MaskVolume::Pointer cropLabelMask(const itk::Image<std::int8_t, 3>* labelMap, const LabelExtent& extent);
 MaskVolume::Pointer cropLabelMask(const itk::Image<std::uint16_t, 3>* labelMap, const LabelExtent& extent);
 MaskVolume::Pointer cropLabelMask(const itk::Image<std::int16_t, 3>* labelMap, const LabelExtent& extent);
+MaskVolume::Pointer cropLabelMask(const itk::Image<std::uint32_t, 3>* labelMap, const LabelExtent& extent);
+MaskVolume::Pointer cropLabelMask(const itk::Image<std::int32_t, 3>* labelMap, const LabelExtent& extent);
 
 } // namespace slicemesh
 

@@ -104,12 +104,13 @@ VolumeGeometry checkHeaderGeometry(const std::string& path, const itk::ImageIOBa
   return geometry;
 }
 
-/** Whether readStoredVolume keeps a file's voxels as they are stored: integers of one or two bytes
- *  (StoredVolume's alternatives), which float would make larger. */
+/** Whether readStoredVolume keeps a file's voxels as they are stored: integers of one to four bytes
+ *  (StoredVolume's alternatives), which float would make larger or, past 2^24, round. */
 bool keptAsStored(itk::IOComponentEnum component)
 {
   return component == itk::IOComponentEnum::UCHAR || component == itk::IOComponentEnum::CHAR ||
-         component == itk::IOComponentEnum::USHORT || component == itk::IOComponentEnum::SHORT;
+         component == itk::IOComponentEnum::USHORT || component == itk::IOComponentEnum::SHORT ||
+         component == itk::IOComponentEnum::UINT || component == itk::IOComponentEnum::INT;
 }
 
 /** Checks what the file header says before any voxel is read: dimension, components, geometry.
@@ -536,6 +537,8 @@ StoredVolume readStoredVolume(const std::string& path)
     case itk::IOComponentEnum::CHAR: return readImageFileAs<itk::Image<std::int8_t, 3>>(path, io);
     case itk::IOComponentEnum::USHORT: return readImageFileAs<itk::Image<std::uint16_t, 3>>(path, io);
     case itk::IOComponentEnum::SHORT: return readImageFileAs<itk::Image<std::int16_t, 3>>(path, io);
+    case itk::IOComponentEnum::UINT: return readImageFileAs<itk::Image<std::uint32_t, 3>>(path, io);
+    case itk::IOComponentEnum::INT: return readImageFileAs<itk::Image<std::int32_t, 3>>(path, io);
     default: return readImageFileAs<ScalarVolume>(path, io);
   }
 }

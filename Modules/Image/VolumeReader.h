@@ -17,11 +17,13 @@ using MaskVolume = itk::Image<unsigned char, 3>;
 
 /** A volume in the pixel type its file stores, so that a label map of bytes takes one byte a voxel
  *  in memory, not the four of float (on a large label map, the largest share of a run's peak).
- *  Integers of one or two bytes as stored (label maps: NRRD's uchar, NIfTI's uint8 and int16,
- *  Slicer's short); anything else (wider integers, floating point) as float, which is no larger. */
+ *  Integers of one to four bytes as stored (label maps: NRRD's uchar, NIfTI's uint8 and int16,
+ *  Slicer's short; four bytes for atlases whose labels pass float's 2^24, which float would merge);
+ *  anything else (wider integers, floating point) as float. */
 using StoredVolume =
   std::variant<ScalarVolume::Pointer, itk::Image<std::uint8_t, 3>::Pointer, itk::Image<std::int8_t, 3>::Pointer,
-               itk::Image<std::uint16_t, 3>::Pointer, itk::Image<std::int16_t, 3>::Pointer>;
+               itk::Image<std::uint16_t, 3>::Pointer, itk::Image<std::int16_t, 3>::Pointer,
+               itk::Image<std::uint32_t, 3>::Pointer, itk::Image<std::int32_t, 3>::Pointer>;
 
 /** Reads a volume as float voxels. A directory is read as a DICOM series (the first series found).
  *  Throws slicemesh::Error with a one-line message on a missing, unreadable or non-3D input. */

@@ -11,6 +11,7 @@
 #include "itkOtsuThresholdCalculator.h"
 
 #include <cmath>
+#include <cstdint>
 #include <set>
 #include <sstream>
 #include <type_traits>
@@ -161,9 +162,16 @@ MaskVolume::Pointer labelMapMask(const TImage* volume, const SegmentationOptions
   MaskVolume::Pointer mask = allocateMaskLike(volume);
   if (options.label)
   {
-    // Compared as float, as a label map read as float voxels always was.
-    const float wanted = static_cast<float>(*options.label);
-    if (fillMask(volume, mask, [wanted](Pixel v) { return static_cast<float>(v) == wanted; }) == 0)
+    // Integers compared exactly (float would take 16777217 for 16777216); a float map as float.
+    const int wanted = *options.label;
+    const auto isWanted = [wanted](Pixel v)
+    {
+      if constexpr (std::is_integral_v<Pixel>)
+        return static_cast<std::int64_t>(v) == wanted;
+      else
+        return v == static_cast<float>(wanted);
+    };
+    if (fillMask(volume, mask, isWanted) == 0)
     {
       std::ostringstream message;
       message << volumeName(volume) << ": no voxel has label " << *options.label << "; labels present: "

@@ -378,6 +378,53 @@ TEST(EndToEnd, MeshFilesOfAnEarlierRunInTheFolderAreSaidAndKept)
   EXPECT_EQ(again.err.find("did not write"), std::string::npos) << again.err;
 }
 
+TEST(EndToEnd, LabelsPastFloatsPrecisionStayApart)
+{
+  // Atlases such as the Allen mouse brain's number their structures up to hundreds of millions, in
+  // four-byte integers. Read as float, 16777216 and 16777217 were one label and 33554435 was named
+  // 33554436. Four boxes of 4 x 4 x 4 voxels (1 mm), one per label.
+  const fs::path folder = freshFolder("e2e-large-labels");
+  const fs::path input = folder / "labels.mha";
+  const std::array<std::uint32_t, 4> labels{ 16777216u, 16777217u, 33554435u, 614454277u };
+  {
+    std::ofstream out(input, std::ios::binary);
+    out << "ObjectType = Image\nNDims = 3\nBinaryData = True\nBinaryDataByteOrderMSB = False\n"
+        << "ElementSpacing = 1 1 1\nDimSize = 26 8 8\nElementType = MET_UINT\nElementDataFile = LOCAL\n";
+    for (int k = 0; k < 8; ++k)
+      for (int j = 0; j < 8; ++j)
+        for (int i = 0; i < 26; ++i)
+        {
+          const bool inside = (i - 2) % 6 < 4 && i >= 2 && j >= 2 && j < 6 && k >= 2 && k < 6;
+          const std::uint32_t value = inside ? labels[static_cast<std::size_t>((i - 2) / 6)] : 0u;
+          for (int byte = 0; byte < 4; ++byte)
+            out.put(static_cast<char>((value >> (8 * byte)) & 0xffu));
+        }
+  }
+  const fs::path report = folder / "r.json";
+  const RunResult all = runSliceMesh("--report " + quoted(report.string()) + " --outputDirectory " +
+                                     quoted((folder / "meshes").string()) + " " + quoted(input.string()) + " " +
+                                     quoted((folder / "all.vtp").string()));
+  ASSERT_EQ(all.exitCode, cli::Success) << all.err;
+  const std::string json = fileText(report);
+  for (const std::uint32_t label : labels)
+  {
+    const std::string entry = labelEntry(json, static_cast<int>(label));
+    ASSERT_FALSE(entry.empty()) << label << " missing from " << json.substr(0, 2000);
+    EXPECT_NE(entry.find("\"voxels\": 64,"), std::string::npos) << entry.substr(0, 300);
+    char name[64];
+    std::snprintf(name, sizeof name, "%u_Label_%u.vtp", label, label); // not padded past 999
+    EXPECT_TRUE(fs::exists(folder / "meshes" / name)) << name;
+  }
+  // One of two neighbouring labels picked alone: its box, not both.
+  const RunResult one = runSliceMesh("--label 16777217 " + quoted(input.string()) + " " + quoted((folder / "one.vtp").string()));
+  ASSERT_EQ(one.exitCode, cli::Success) << one.err;
+  const std::string summary = linesOf(one.out).back();
+  ASSERT_NE(summary.find(", 1 component,"), std::string::npos) << summary;
+  const std::size_t at = summary.find(", volume ");
+  ASSERT_NE(at, std::string::npos) << summary;
+  EXPECT_NEAR(std::stod(summary.substr(at + 9)), 64.0, 0.02 * 64.0) << summary;
+}
+
 TEST(EndToEnd, SummaryVolumeOfATinyStructureIsNotRoundedToZero)
 {
   // A 4 x 4 x 4 voxel cube at 10 micrometres (a micro-CT's grid): 6.4e-5 mm^3.
