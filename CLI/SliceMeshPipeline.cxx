@@ -10,6 +10,7 @@
 #include "Finishing/SurfaceSmoothing.h"
 #include "MaskMeshing.h"
 #include "MeshSnapshot.h"
+#include "itkMetaDataObject.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/MeshQuality.h"
 #include "Measures/MeshValidation.h"
@@ -283,6 +284,9 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
     volume = guarded(UnreadableInput, [&] { return readStoredVolume(settings.inputVolume); });
     if (const auto warning = niftiOrientationWarning(settings.inputVolume, imageOf(volume)))
       std::cerr << "SliceMesh: warning: " << *warning << std::endl;
+    std::string seriesChoice;
+    if (itk::ExposeMetaData<std::string>(imageOf(volume)->GetMetaDataDictionary(), seriesChoiceKey, seriesChoice))
+      std::cerr << "SliceMesh: warning: " << seriesChoice << std::endl;
   }
 
   startStage(Segmentation);

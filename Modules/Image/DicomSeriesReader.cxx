@@ -8,6 +8,7 @@
 #include "itkGDCMImageIO.h"
 #include "itkGDCMSeriesFileNames.h"
 #include "itkImageSeriesReader.h"
+#include "itkMetaDataObject.h"
 
 #include <gdcmScanner.h>
 
@@ -36,11 +37,19 @@ long frameCount(const std::string& file)
   return text ? std::max(1L, std::strtol(text, nullptr, 10)) : 1L;
 }
 
-/** The files of the largest DICOM image series in the folder, in slice order. */
-std::vector<std::string> dicomSeriesFiles(const std::string& folder)
+std::string fileName(const std::string& path)
+{
+  return std::filesystem::path(path).filename().string();
+}
+
+/** The files of the largest DICOM image series in the folder, in slice order. Where the folder holds
+ *  more than one series of several files (two reconstructions of one scan, a CT and an MR), `choice`
+ *  says which was taken. */
+std::vector<std::string> dicomSeriesFiles(const std::string& folder, std::string& choice)
 {
   auto names = itk::GDCMSeriesFileNames::New();
   std::vector<std::string> fileNames;
+  std::vector<std::pair<std::size_t, std::string>> volumes; // files, first file, of each series of several
   try
   {
     names->SetUseSeriesDetails(true);
@@ -53,6 +62,8 @@ std::vector<std::string> dicomSeriesFiles(const std::string& folder)
     for (const std::string& uid : seriesUIDs)
     {
       std::vector<std::string> files = names->GetFileNames(uid);
+      if (files.size() > 1)
+        volumes.emplace_back(files.size(), fileName(files.front()));
       if (files.size() > fileNames.size())
         fileNames = std::move(files);
     }
@@ -60,6 +71,19 @@ std::vector<std::string> dicomSeriesFiles(const std::string& folder)
   catch (const itk::ExceptionObject& error)
   {
     throw Error(folder + ": cannot list the DICOM series: " + itkErrorText(error));
+  }
+  if (volumes.size() > 1)
+  {
+    std::ostringstream text;
+    text << folder << " holds " << volumes.size() << " image series (";
+    for (std::size_t v = 0; v < volumes.size(); ++v)
+      text << (v ? ", " : "") << volumes[v].first << " files from " << volumes[v].second;
+    text << "): meshing the one of " << fileName(fileNames.front())
+         << (std::count_if(volumes.begin(), volumes.end(), [&](const auto& v) { return v.first == fileNames.size(); }) > 1
+               ? ", the first of the largest"
+               : ", the largest")
+         << "; give a folder of one series to choose another";
+    choice = text.str();
   }
   // One file of several frames (an enhanced, multi-frame CT or MR) is a whole volume by itself.
   if (fileNames.size() < 2 && frameCount(fileNames.front()) < 2)
@@ -83,10 +107,6 @@ std::optional<std::array<double, N>> decimals(const char* text)
   return values;
 }
 
-std::string fileName(const std::string& path)
-{
-  return std::filesystem::path(path).filename().string();
-}
 
 double angleDegrees(const std::array<double, 3>& a, const std::array<double, 3>& b)
 {
@@ -206,7 +226,8 @@ ScalarVolume::Pointer readDicomSeriesIn(const std::string& folder, bool voxels)
   auto reader = itk::ImageSeriesReader<ScalarVolume>::New();
   auto io = itk::GDCMImageIO::New();
   reader->SetImageIO(io);
-  const std::vector<std::string> files = dicomSeriesFiles(folder);
+  std::string choice;
+  const std::vector<std::string> files = dicomSeriesFiles(folder, choice);
   const std::optional<std::array<double, 3>> step =
     files.size() > 1 ? checkedSliceStep(folder, files) : std::nullopt;
   reader->SetFileNames(files);
@@ -222,6 +243,8 @@ ScalarVolume::Pointer readDicomSeriesIn(const std::string& folder, bool voxels)
   // The series' header as one of its files states it: what a slice does not vary (the Frame of
   // Reference) is then known without opening a file again.
   volume->SetMetaDataDictionary(io->GetMetaDataDictionary());
+  if (!choice.empty())
+    itk::EncapsulateMetaData<std::string>(volume->GetMetaDataDictionary(), seriesChoiceKey, choice);
   return volume;
 }
 

@@ -25,6 +25,10 @@ using StoredVolume =
                itk::Image<std::uint16_t, 3>::Pointer, itk::Image<std::int16_t, 3>::Pointer,
                itk::Image<std::uint32_t, 3>::Pointer, itk::Image<std::int32_t, 3>::Pointer>;
 
+/** The key of a DICOM series' metadata under which a folder of several series says which one was
+ *  read (a line for the user); absent when the folder holds one. */
+constexpr const char* seriesChoiceKey = "SliceMesh.SeriesChoice";
+
 /** Reads a volume as float voxels. A directory is read as a DICOM series (the first series found).
  *  Throws slicemesh::Error with a one-line message on a missing, unreadable or non-3D input. */
 ScalarVolume::Pointer readVolume(const std::string& path);

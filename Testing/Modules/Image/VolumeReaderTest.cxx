@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "itkMetaDataObject.h"
+
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -371,6 +373,28 @@ TEST_F(VolumeReaderTest, GantryTiltedDicomSeriesKeepsEachSliceWhereItWasScanned)
   EXPECT_NEAR(geometry.sliceNormal()[1], 0.0, 1e-6);
   EXPECT_NEAR(geometry.sliceNormal()[2], 1.0, 1e-6);
   EXPECT_NEAR(geometry.sliceDistance(), spacingBetweenPlanes, 1e-4);
+}
+
+TEST_F(VolumeReaderTest, AFolderOfTwoSeriesSaysWhichWasRead)
+{
+  // Two reconstructions of one scan exported together, of as many slices: one is read, and the
+  // volume's metadata says which (the command line prints it); one series alone says nothing.
+  using ShortVolume = itk::Image<short, 3>;
+  auto volume = testing::makeImage<ShortVolume>({ 4, 4, 5 }, { 0.8, 0.8, 2.5 });
+  const fs::path dicom = m_Directory / "series", other = m_Directory / "other";
+  testing::writeCTSeries(volume, dicom);
+  std::string choice;
+  EXPECT_FALSE(itk::ExposeMetaData<std::string>(readVolume(dicom.string())->GetMetaDataDictionary(), seriesChoiceKey, choice));
+  testing::writeCTSeries(volume, other);
+  for (int k = 0; k < 5; ++k)
+    fs::rename(other / ("slice00" + std::to_string(k) + ".dcm"), dicom / ("other00" + std::to_string(k) + ".dcm"));
+  const ScalarVolume::Pointer read = readVolume(dicom.string());
+  EXPECT_EQ(read->GetLargestPossibleRegion().GetSize()[2], 5u);
+  ASSERT_TRUE(itk::ExposeMetaData<std::string>(read->GetMetaDataDictionary(), seriesChoiceKey, choice));
+  EXPECT_NE(choice.find("holds 2 image series (5 files from "), std::string::npos) << choice;
+  EXPECT_NE(choice.find(", the first of the largest; give a folder of one series to choose another"), std::string::npos)
+    << choice;
+  EXPECT_EQ(choice.find('\n'), std::string::npos) << choice;
 }
 
 TEST_F(VolumeReaderTest, DicomSeriesOfSlicesInTwoOrientationsIsAnError)
