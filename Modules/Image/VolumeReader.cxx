@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -180,6 +181,42 @@ void checkGzipStream(const std::string& path)
 bool endsWith(const std::string& text, const std::string& suffix)
 {
   return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+/** A detached header's (MetaImage .mhd, NRRD .nhdr) data file, when it names one file, must exist:
+ *  the readers' own message names the header as the file that "cannot be read". Lists, patterns
+ *  and LOCAL data are left to the readers. */
+void checkDetachedDataFile(const std::string& path)
+{
+  std::string lower = path;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  const bool meta = endsWith(lower, ".mhd"), nrrd = endsWith(lower, ".nhdr");
+  if (!meta && !nrrd)
+    return;
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);)
+  {
+    if (!line.empty() && line.back() == '\r')
+      line.pop_back();
+    std::string named;
+    if (meta && line.rfind("ElementDataFile", 0) == 0 && line.find('=') != std::string::npos)
+      named = line.substr(line.find('=') + 1);
+    else if (nrrd && (line.rfind("data file:", 0) == 0 || line.rfind("datafile:", 0) == 0))
+      named = line.substr(line.find(':') + 1);
+    else
+      continue;
+    named.erase(0, named.find_first_not_of(" \t"));
+    named.erase(named.find_last_not_of(" \t") + 1);
+    if (named.empty() || named == "LOCAL" || named.rfind("LIST", 0) == 0 || named.find(' ') != std::string::npos ||
+        named.find('%') != std::string::npos)
+      return;
+    const std::filesystem::path data = std::filesystem::path(named).is_absolute()
+                                         ? std::filesystem::path(named)
+                                         : std::filesystem::path(path).parent_path() / named;
+    if (!std::filesystem::exists(data))
+      throw Error(path + ": its voxels are in '" + named + "', which does not exist (" + data.string() + ")");
+    return;
+  }
 }
 
 /** Catches what a reader writes to std::cerr while it runs: MetaIO reports a short read of the
@@ -378,6 +415,7 @@ itk::ImageIOBase::Pointer checkedImageHeader(const std::string& path, bool asSto
 {
   if (endsWith(path, ".gz") || endsWith(path, ".GZ"))
     checkGzipStream(path);
+  checkDetachedDataFile(path);
   itk::ImageIOBase::Pointer io = readImageHeader(path);
   checkHeader(path, io, asStored);
   // NIfTI-1 (plain or gzip): its header read once, for the two checks.

@@ -149,6 +149,25 @@ TEST_F(VolumeReaderTest, MissingFileIsAnError)
   EXPECT_NE(message.find("no such file"), std::string::npos) << message;
 }
 
+TEST_F(VolumeReaderTest, ADetachedHeaderWhoseDataFileIsMissingNamesThatFile)
+{
+  // The readers said the header itself "cannot be read".
+  const std::string meta = path("detached.mhd"), nrrd = path("detached.nhdr");
+  std::ofstream(meta) << "ObjectType = Image\nNDims = 3\nBinaryData = True\nElementSpacing = 1 1 1\nDimSize = 4 4 4\n"
+                         "ElementType = MET_UCHAR\nElementDataFile = nothere.raw\n";
+  std::ofstream(nrrd) << "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 4 4 4\nspacings: 1 1 1\nencoding: raw\n"
+                         "data file: elsewhere.raw\n";
+  for (const auto& [file, data] : { std::pair{ meta, std::string("nothere.raw") }, std::pair{ nrrd, std::string("elsewhere.raw") } })
+  {
+    const std::string message = errorMessageOf([&] { readStoredVolume(file); });
+    EXPECT_NE(message.find(file + ": its voxels are in '" + data + "', which does not exist"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+  // Present, it is read.
+  std::ofstream(path("nothere.raw"), std::ios::binary) << std::string(64, '\1');
+  EXPECT_EQ(readVolume(meta)->GetLargestPossibleRegion().GetNumberOfPixels(), 64u);
+}
+
 TEST_F(VolumeReaderTest, TextFileNamedNiftiIsAnError)
 {
   const std::string file = writeText("notes.nii", "this is not an image\njust some text\n");
