@@ -203,8 +203,9 @@ std::vector<fs::path> otherStructureFiles(const fs::path& folder, const std::set
   for (const fs::directory_entry& entry : fs::directory_iterator(folder, error))
   {
     const std::string name = entry.path().filename().string();
-    const std::size_t digits = name.find_first_not_of("0123456789", name[0] == '-' ? 1 : 0);
-    const bool named = digits != std::string::npos && digits > (name[0] == '-' ? 1u : 0u) && name[digits] == '_' &&
+    const std::size_t sign = name[0] == '-' ? 1 : 0; // a negative label's
+    const std::size_t digits = name.find_first_not_of("0123456789", sign);
+    const bool named = digits != std::string::npos && digits > sign && name[digits] == '_' &&
                        entry.path().extension() == extension;
     if (named && entry.is_regular_file(error) && !written.count(name))
       others.push_back(entry.path());

@@ -42,6 +42,18 @@ std::uint64_t mix(std::uint64_t key)
   return key ^ (key >> 31);
 }
 
+/** The cell of p in a grid of cells of `size` from `origin`, clamped to the cells a key names. */
+std::array<std::int64_t, 3> cellAt(const std::array<double, 3>& p, const std::array<double, 3>& origin, double size)
+{
+  std::array<std::int64_t, 3> cell{};
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const double c = std::floor((p[axis] - origin[axis]) / size);
+    cell[axis] = static_cast<std::int64_t>(std::clamp(c, 0.0, double(cellsPerAxis - 1)));
+  }
+  return cell;
+}
+
 } // namespace
 
 ClosestPointGrid::ClosestPointGrid(const TriangleMesh& mesh)
@@ -87,12 +99,11 @@ ClosestPointGrid::ClosestPointGrid(const TriangleMesh& mesh)
     chooseCellSize(std::move(extents), n, extent, extent / double(cellsPerAxis - 2),
                    [&](double size)
                    {
-                     m_CellSize = size; // cellOf's
                      std::uint64_t covered = 0;
                      for (const Box& box : m_Boxes)
                      {
-                       const auto lo = cellOf({ box.low[0], box.low[1], box.low[2] });
-                       const auto hi = cellOf({ box.high[0], box.high[1], box.high[2] });
+                       const auto lo = cellAt({ box.low[0], box.low[1], box.low[2] }, low, size);
+                       const auto hi = cellAt({ box.high[0], box.high[1], box.high[2] }, low, size);
                        covered += static_cast<std::uint64_t>((hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1));
                      }
                      return covered;
@@ -144,13 +155,7 @@ ClosestPointGrid::~ClosestPointGrid() = default;
 
 std::array<std::int64_t, 3> ClosestPointGrid::cellOf(const std::array<double, 3>& p) const
 {
-  std::array<std::int64_t, 3> cell{};
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    const double c = std::floor((p[axis] - m_Origin[axis]) / m_CellSize);
-    cell[axis] = static_cast<std::int64_t>(std::clamp(c, 0.0, double(cellsPerAxis - 1)));
-  }
-  return cell;
+  return cellAt(p, m_Origin, m_CellSize);
 }
 
 std::uint64_t ClosestPointGrid::keyOf(const std::array<std::int64_t, 3>& cell) const
