@@ -24,8 +24,9 @@ packages=(
   clang-14 libclang-rt-14-dev
   # The cohort workflow (Workflows/cohort) and its test on a one-node Slurm started on localhost.
   snakemake slurm-wlm munge
-  # The scaling benchmark times whole runs with GNU time (Utilities/scaling-benchmark.sh).
-  time
+  # The scaling benchmark times whole runs with GNU time (Utilities/scaling-benchmark.sh); it and the
+  # label volume comparison (Utilities/label-volumes.sh) make their tables with Python.
+  time python3
 )
 
 # npm fetches the DICOM test series (fetch-test-data.sh); keep a Node.js install that brings its own.
