@@ -420,6 +420,8 @@ TEST(EndToEnd, LabelsPastFloatsPrecisionStayApart)
   ASSERT_EQ(one.exitCode, cli::Success) << one.err;
   const std::string summary = linesOf(one.out).back();
   ASSERT_NE(summary.find(", 1 component,"), std::string::npos) << summary;
+  EXPECT_NE(summary.find(" triangles, closed, "), std::string::npos) << summary;
+  EXPECT_NE(summary.find(", manifold, no self-intersections"), std::string::npos) << summary;
   const std::size_t at = summary.find(", volume ");
   ASSERT_NE(at, std::string::npos) << summary;
   EXPECT_NEAR(std::stod(summary.substr(at + 9)), 64.0, 0.02 * 64.0) << summary;
