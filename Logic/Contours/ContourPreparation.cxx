@@ -47,7 +47,7 @@ ContourStack prepareContours(const ContourStack& traced, const ContourPreparatio
     result = smoothContours(result, smoothing);
   }
   if (resolved.simplificationTolerance > 0.0)
-    result = simplifyContours(result, resolved.simplificationTolerance);
+    result = simplifyContours(result, resolved.simplificationTolerance, resolved.simplificationMaxEdge);
   // Traced contours keep their enclosed area: chords cut the corners of small structures. Drawn
   // contours keep their corners and every point on the drawn line: they are the anatomy as drawn.
   if (resolved.pointSpacing > 0.0)

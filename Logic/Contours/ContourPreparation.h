@@ -23,6 +23,7 @@ struct ContourPreparationOptions
   int smoothingIterations = 30;         ///< Taubin lambda/mu pairs (Smoothed); 0: no smoothing
   double smoothingMaxShift = 0.0;       ///< bound on each point's move (mm); 0: 0.3 of the smaller pixel side
   double simplificationTolerance = 0.0; ///< Douglas-Peucker tolerance, crossing-free (mm); 0: none
+  double simplificationMaxEdge = 0.0;   ///< no simplified edge longer than this where points allow (mm); 0: any
   double pointSpacing = 0.0;            ///< resample to this spacing (mm); 0: automatic (see resolved)
   /** Drawn contours (a structure set's): resampled keeping their corners and every point on the
    *  drawn polyline (resampleContourKeepingCorners), not keeping their area. Traced contours are a

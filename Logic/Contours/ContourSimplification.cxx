@@ -36,8 +36,16 @@ std::size_t farthestBetween(const Polygon2& polygon, std::size_t first, std::siz
   return best;
 }
 
+/** The point half way between first and last (cyclic) by count; n when there is none between. */
+std::size_t middleBetween(const Polygon2& polygon, std::size_t first, std::size_t last)
+{
+  const std::size_t n = polygon.size();
+  const std::size_t between = (last + n - first) % n;
+  return between < 2 ? n : (first + between / 2) % n;
+}
+
 void douglasPeucker(const Polygon2& polygon, std::size_t first, std::size_t last, double tolerance,
-                    std::vector<char>& kept)
+                    double maxEdgeLength, std::vector<char>& kept)
 {
   // An explicit stack: contours of many thousand points must not recurse that deep.
   std::vector<std::pair<std::size_t, std::size_t>> spans{ { first, last } };
@@ -46,8 +54,11 @@ void douglasPeucker(const Polygon2& polygon, std::size_t first, std::size_t last
     const auto [a, b] = spans.back();
     spans.pop_back();
     double d = 0.0;
-    const std::size_t split = farthestBetween(polygon, a, b, &d);
-    if (split == polygon.size() || d <= tolerance)
+    std::size_t split = farthestBetween(polygon, a, b, &d);
+    if (split != polygon.size() && d <= tolerance)
+      split = maxEdgeLength > 0.0 && distance(polygon[a], polygon[b]) > maxEdgeLength ? middleBetween(polygon, a, b)
+                                                                                      : polygon.size();
+    if (split == polygon.size())
       continue;
     kept[split] = 1;
     spans.push_back({ a, split });
@@ -103,7 +114,7 @@ bool putBackFarthestDropped(const Polygon2& polygon, std::vector<char>& kept)
 
 } // namespace
 
-std::vector<Polygon2> simplifyContours(const std::vector<Polygon2>& contours, double tolerance)
+std::vector<Polygon2> simplifyContours(const std::vector<Polygon2>& contours, double tolerance, double maxEdgeLength)
 {
   if (!(tolerance > 0.0))
     return contours;
@@ -126,8 +137,8 @@ std::vector<Polygon2> simplifyContours(const std::vector<Polygon2>& contours, do
         far = i;
       }
     kept[c][0] = kept[c][far] = 1;
-    douglasPeucker(polygon, 0, far, tolerance, kept[c]);
-    douglasPeucker(polygon, far, 0, tolerance, kept[c]);
+    douglasPeucker(polygon, 0, far, tolerance, maxEdgeLength, kept[c]);
+    douglasPeucker(polygon, far, 0, tolerance, maxEdgeLength, kept[c]);
     while (!isProperPolygon(polygon, kept[c]) && putBackFarthestDropped(polygon, kept[c]))
     {
     }
@@ -167,11 +178,11 @@ std::vector<Polygon2> simplifyContours(const std::vector<Polygon2>& contours, do
   }
 }
 
-ContourStack simplifyContours(const ContourStack& stack, double tolerance)
+ContourStack simplifyContours(const ContourStack& stack, double tolerance, double maxEdgeLength)
 {
   ContourStack result = stack;
   for (Slice& slice : result.slices)
-    slice.contours = simplifyContours(slice.contours, tolerance);
+    slice.contours = simplifyContours(slice.contours, tolerance, maxEdgeLength);
   return result;
 }
 

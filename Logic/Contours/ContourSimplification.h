@@ -15,11 +15,15 @@ namespace slicemesh
  *  that the input did not have, and nesting is unchanged. Every contour stays a proper polygon:
  *  while it has fewer than 3 points or less than half its traced area, the dropped point farthest
  *  from its kept edge is put back (a contour thinner than the tolerance keeps its width).
+ *  With maxEdgeLength > 0, a kept edge longer than that (mm) keeps the dropped point half way along
+ *  it, by count, until none is or no point is left between: a straight run of a thousand pixels
+ *  stays a few hundred edges, not one, which would give the tiling needles as long as the run.
  *  tolerance <= 0 returns the contours unchanged. */
-std::vector<Polygon2> simplifyContours(const std::vector<Polygon2>& contours, double tolerance);
+std::vector<Polygon2> simplifyContours(const std::vector<Polygon2>& contours, double tolerance,
+                                       double maxEdgeLength = 0.0);
 
 /** simplifyContours on every slice of the stack. */
-ContourStack simplifyContours(const ContourStack& stack, double tolerance);
+ContourStack simplifyContours(const ContourStack& stack, double tolerance, double maxEdgeLength = 0.0);
 
 } // namespace slicemesh
 

@@ -58,6 +58,8 @@ MeshingOptions resolvedMeshingOptions(const MeshingOptions& options, const std::
   if (finishing.finish == SurfaceFinish::Remeshed && resolved.contours.mode == ContourPreparation::Traced &&
       !(resolved.contours.pointSpacing > 0.0) && !(resolved.contours.simplificationTolerance > 0.0))
     resolved.contours.simplificationTolerance = collinearTolerance * pixel;
+  if (finishing.finish == SurfaceFinish::Remeshed && !(resolved.contours.simplificationMaxEdge > 0.0))
+    resolved.contours.simplificationMaxEdge = simplifiedEdgeBound * finishing.remeshing.targetEdgeLength;
   return resolved;
 }
 

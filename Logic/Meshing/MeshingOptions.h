@@ -42,13 +42,21 @@ constexpr double resampledSliceRatio = 1.2;
  *  given: only the points on the straight line between their neighbours go. */
 constexpr double collinearTolerance = 1e-3;
 
+/** The longest edge a remeshed surface's simplified contours keep, in target edges. The remesh
+ *  halves a longer edge of the tiling until it is short enough, and halving a needle (a wall row
+ *  along a straight run of a thousand pixels) makes needles again: a one-voxel bar 8000 voxels long
+ *  took 11.6 s and 895 MB, four times as long for twice the length. Eight target edges need three
+ *  halvings and, on the benchmark's phantoms and the AAL atlas, cost nothing measurable. */
+constexpr double simplifiedEdgeBound = 8.0;
+
 /** The options with every automatic value replaced by its value for a grid of this spacing (x, y,
  *  slice; mm): the contour preparation (resolvedContourPreparation), the finishing
  *  (finishingOptionsFor: the target edge length, the smoothing's displacement bound) and, for a
  *  remeshed surface between slices resampledSliceRatio pixels thick or more, a contour point spacing
  *  of remeshedContourSpacing target edges where none is given (the traced contours' points are kept
  *  otherwise), and for a remeshed surface's traced contours kept at their points a simplification
- *  tolerance of collinearTolerance pixels where none is given. */
+ *  tolerance of collinearTolerance pixels where none is given, and no simplified edge longer than
+ *  simplifiedEdgeBound target edges. */
 MeshingOptions resolvedMeshingOptions(const MeshingOptions& options, const std::array<double, 3>& spacing);
 
 } // namespace slicemesh

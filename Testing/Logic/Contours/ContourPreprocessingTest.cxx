@@ -165,6 +165,34 @@ TEST(ContourSimplification, AContourThinnerThanTheToleranceKeepsItsWidth)
   }
 }
 
+TEST(ContourSimplification, AKeptEdgeIsNoLongerThanTheBoundWherePointsAllow)
+{
+  // A bar one pixel thick and 1000 long, traced: a point on every pixel edge, the long sides each a
+  // straight run. Collinear points alone dropped, it is four edges; with a bound of 8.8 mm every
+  // kept edge is at most that, and no longer than needed by more than half.
+  const std::vector<Polygon2> bar =
+    staircaseContours(1004, 4, [](double x, double y) { return y == 1 && x >= 2 && x <= 1001; });
+  ASSERT_EQ(bar.size(), 1u);
+  const Polygon2 runEnds = simplifyContours(bar, 1e-3).front();
+  EXPECT_LE(runEnds.size(), 8u);
+  const double bound = 8.8;
+  const Polygon2 bounded = simplifyContours(bar, 1e-3, bound).front();
+  double longest = 0.0;
+  for (std::size_t i = 0; i < bounded.size(); ++i)
+    longest = std::max(longest, distance(bounded[i], bounded[(i + 1) % bounded.size()]));
+  EXPECT_LE(longest, bound);
+  EXPECT_LE(bounded.size(), 2u * static_cast<std::size_t>(2.0 * 1000.0 / bound) + 8u);
+  EXPECT_NEAR(polygonArea(bounded), polygonArea(bar.front()), 1e-9);
+  EXPECT_TRUE(contourCrossings({ bounded }).empty());
+  for (const Point2& p : bounded)
+    EXPECT_NE(std::find_if(bar.front().begin(), bar.front().end(), [&](const Point2& q) { return q.x == p.x && q.y == p.y; }),
+              bar.front().end());
+  // A bound does not hold points off the tolerance: a zigzag keeps the same points under a loose one.
+  const Polygon2 zigzag = zigzagCircle(0, 0, 20, 0.25, 400);
+  EXPECT_EQ(simplifyContours(std::vector<Polygon2>{ zigzag }, 1.0, 1000.0).front().size(),
+            simplifyContours(std::vector<Polygon2>{ zigzag }, 1.0).front().size());
+}
+
 TEST(ContourSimplification, NeverCreatesCrossings)
 {
   // A ring (outer and hole 0.4 mm apart) and a neighbour 0.3 mm away: plain Douglas-Peucker at
@@ -422,6 +450,8 @@ TEST(ContourPreparation, TracedContoursLoseOnlyThePointsOnAStraightRun)
     EXPECT_LE(kept.size(), turns + 3);
     EXPECT_GE(kept.size(), turns);
   }
-  // The block's contour is its four sides with a chamfer at each corner: eight points.
-  EXPECT_EQ(prepared.slices[0].contours[1].size(), 8u);
+  // The block's contour is its four sides with a chamfer at each corner: eight points, and the
+  // middle of each long side (6.3 mm, longer than the bound of eight 0.77 mm target edges).
+  EXPECT_EQ(prepared.slices[0].contours[1].size(), 10u);
+  EXPECT_NEAR(resolved.simplificationMaxEdge, simplifiedEdgeBound * automaticEdgeLength({ pixel, pixel, 0.7 }), 1e-12);
 }

@@ -126,6 +126,46 @@ TEST(MeshContours, TheFinishedBallIsValidCloseToTheSphereAndMeasured)
   EXPECT_NEAR(m.surface.validation.volume, 4.0 / 3.0 * M_PI * 216.0, 0.03 * 4.0 / 3.0 * M_PI * 216.0);
 }
 
+TEST(MeshContours, ALongStraightRunIsTiledInEdgesOfAFewTargetEdges)
+{
+  // A bar one voxel thick and 400 long in one slice of 1 mm voxels, its long sides a point every
+  // voxel. Tiled from the run's ends alone, its walls and caps were needles 400 mm long, which the
+  // remesh halved into needles again: time and memory grew with the square of the length.
+  const double length = 400.0;
+  Polygon2 bar;
+  for (double x = 0.0; x <= length; x += 1.0)
+    bar.push_back({ x, 0.0 });
+  for (double x = length; x >= 0.0; x -= 1.0)
+    bar.push_back({ x, 1.0 });
+  ContourStack stack;
+  stack.sliceSpacing = 1.0;
+  stack.slices.push_back({ 0.0, { bar } });
+  MeshedContours m = startMeshing(stack, {}, { 1.0, 1.0, 1.0 });
+  for (MeshingStage stage : { MeshingStage::Preparation, MeshingStage::Correspondence, MeshingStage::Tiling })
+    runMeshingStage(stage, m, {});
+  const double target = m.options.finishing.remeshing.targetEdgeLength;
+  double longest = 0.0;
+  for (const Triangle& t : m.tiling.triangles)
+    for (int k = 0; k < 3; ++k)
+    {
+      const Point3& a = m.tiling.points[t[k]];
+      const Point3& b = m.tiling.points[t[(k + 1) % 3]];
+      longest = std::max(longest, std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z)));
+    }
+  // A cap's diagonal across the bar: the bound plus the bar's width at most.
+  EXPECT_LE(longest, simplifiedEdgeBound * target + 1.0);
+  for (MeshingStage stage : { MeshingStage::Validation, MeshingStage::Finishing })
+    runMeshingStage(stage, m, {});
+  EXPECT_EQ(m.surface.finish, SurfaceFinish::Remeshed) << m.surface.fallback;
+  EXPECT_TRUE(m.surface.validation.valid()) << m.surface.validation.summary();
+  EXPECT_EQ(m.measures.genus, 0);
+  // The bar's voxels, 400 mm^3, within 2% (its square section is rounded, within the smoothing's
+  // bound); about as many triangles as its area holds of the target.
+  EXPECT_NEAR(m.surface.validation.volume, length, 0.02 * length);
+  const double area = 2.0 * length * 2.0 + 2.0;
+  EXPECT_LT(static_cast<double>(m.surface.mesh.triangles.size()), 3.0 * area / (0.25 * std::sqrt(3.0) * target * target));
+}
+
 /** Nine circles of radius 20 mm (64 points) about (c, c, c), 2.5 mm apart along a normal tilted by
  *  `degrees` about x, coordinates rounded to `decimals` as a planning system writes them, or to
  *  single precision (decimals < 0) as 3D Slicer keeps planar contours. */
