@@ -306,6 +306,20 @@ double distanceOffSlices(const StackedContours& contours, const VolumeGeometry& 
 
 } // namespace
 
+std::optional<std::string> speckNoiseWarning(const FinishedSurface& surface)
+{
+  const std::size_t specks = surface.smallPiecesRemeshed + surface.smallPiecesAsTiled;
+  const std::size_t pieces = surface.validation.components;
+  if (specks < speckNoiseCount || 2 * specks <= pieces)
+    return std::nullopt;
+  std::ostringstream text;
+  text << specks << " of the " << pieces
+       << " pieces are specks of a few voxels, more likely noise than anatomy: --minimumComponentVolume drops "
+          "pieces smaller than a volume before meshing, and for a thresholded image --gaussianSigma smooths it "
+          "first";
+  return text.str();
+}
+
 std::optional<std::string> frameOfReferenceWarning(const StructureSet& set, const VolumeGeometry& reference,
                                                    const ContourInputSettings& contours)
 {

@@ -75,6 +75,15 @@ std::vector<Structure> labelStructures(std::vector<LabelSource> sources, const s
 std::optional<std::string> frameOfReferenceWarning(const StructureSet& set, const VolumeGeometry& reference,
                                                    const ContourInputSettings& contours);
 
+/** The warning to give when most pieces of a one-mesh run are specks (a few voxels each) and there
+ *  are many (speckNoiseCount): noise, above all from thresholding a noisy image, which costs most of
+ *  the run and gives a mesh of thousands of grains. It names the options that remove them first.
+ *  Nothing otherwise: an atlas label's specks are few, and a multi-label run's pieces are its labels'. */
+std::optional<std::string> speckNoiseWarning(const FinishedSurface& surface);
+
+/** How many specks make speckNoiseWarning speak. */
+constexpr std::size_t speckNoiseCount = 1000;
+
 /** One structure per ROI asked for (every ROI by default), in the file's order: its contours as a
  *  stack along the reference image's slice direction and spacing when they lie on its slices (else
  *  along their own normal, with one warning for the set), crossings and keyholes repaired.

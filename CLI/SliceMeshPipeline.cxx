@@ -496,6 +496,8 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
       if (!surface.fallback.empty())
         std::cerr << "SliceMesh: warning: " << who(s, noun) << "surface finishing: " << oneLine(surface.fallback)
                   << std::endl;
+      if (const auto specks = perLabel ? std::nullopt : speckNoiseWarning(surface))
+        std::cerr << "SliceMesh: warning: " << *specks << std::endl;
       validations.push_back(s.report.validation);
       if (perLabel)
       {

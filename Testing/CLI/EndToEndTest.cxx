@@ -355,6 +355,40 @@ TEST(EndToEnd, MultiLabelDropsComponentsUnderTheMinimumVolume)
   EXPECT_TRUE(fs::is_directory(folder / "theirs"));
 }
 
+TEST(EndToEnd, AMaskOfManySpecksIsMeshedWithAHintToDropThem)
+{
+  // A block and 1304 single voxels three apart around it, as a threshold of a noisy image leaves:
+  // the run says most pieces are specks and names the options that remove them.
+  const fs::path folder = freshFolder("e2e-speck-noise");
+  const fs::path input = folder / "block-in-noise.mha";
+  // The block spans voxels 12 to 19: the lattice's nearest points outside it (9 and 21) are a voxel off.
+  auto inBlock = [](int i, int j, int k) { return i >= 12 && i < 20 && j >= 12 && j < 20 && k >= 12 && k < 20; };
+  writeMetaImage(input, { 33, 33, 33 }, { 1.0, 1.0, 1.0 },
+                 [&](int i, int j, int k) -> unsigned char
+                 {
+                   if (inBlock(i, j, k))
+                     return 1;
+                   const bool lattice = i % 3 == 0 && j % 3 == 0 && k % 3 == 0;
+                   return lattice ? 1 : 0;
+                 });
+  const RunResult noisy = runSliceMesh(quoted(input.string()) + " " + quoted((folder / "noisy.vtp").string()));
+  ASSERT_EQ(noisy.exitCode, cli::Success) << noisy.err;
+  const std::size_t at = noisy.err.find(" pieces are specks of a few voxels");
+  ASSERT_NE(at, std::string::npos) << noisy.err;
+  const std::string line = noisy.err.substr(noisy.err.rfind("warning: ", at), at - noisy.err.rfind("warning: ", at));
+  std::size_t specks = 0, pieces = 0;
+  ASSERT_EQ(std::sscanf(line.c_str(), "warning: %zu of the %zu", &specks, &pieces), 2) << line;
+  EXPECT_GE(specks, 1000u);
+  EXPECT_EQ(pieces, specks + 1) << "the block is the one piece not a speck";
+  EXPECT_NE(noisy.err.find("--minimumComponentVolume"), std::string::npos);
+  // The specks dropped first: the block alone, no hint.
+  const RunResult clean = runSliceMesh("--minimumComponentVolume 2 " + quoted(input.string()) + " " +
+                                       quoted((folder / "clean.vtp").string()));
+  ASSERT_EQ(clean.exitCode, cli::Success) << clean.err;
+  EXPECT_EQ(clean.err.find("specks"), std::string::npos) << clean.err;
+  EXPECT_NE(linesOf(clean.out).back().find(" 1 component,"), std::string::npos) << linesOf(clean.out).back();
+}
+
 TEST(EndToEnd, MeshFilesOfAnEarlierRunInTheFolderAreSaidAndKept)
 {
   const fs::path folder = freshFolder("e2e-earlier-files");
