@@ -111,7 +111,10 @@ public:
   TaubinPairs(const TaubinPairs&) = delete;
   TaubinPairs& operator=(const TaubinPairs&) = delete;
 
-  void run(int pairs, double lambda, double mu, unsigned int threads);
+  /** Up to `pairs` pairs, fewer when a pair leaves the points as they were (checked every
+   *  fixedPointCheck pairs: the rest would too); returns how many ran. */
+  int run(int pairs, double lambda, double mu, unsigned int threads);
+  static constexpr int fixedPointCheck = 4;
   /** From now on the `features` (a flag per vertex) stay where they are, and the others move within
    *  the ellipsoid of semi-axes `wide`. */
   void holdFeatures(const std::vector<char>& features, const std::array<double, 3>& wide);

@@ -98,3 +98,40 @@ TEST(PackedTaubinSteps, ABoundedStepStopsOnItsEllipsoid)
   EXPECT_GT(after[0].x, 1.0);
   EXPECT_LE(after[0].x, 1.5 + 1e-6);
 }
+
+TEST(PackedTaubinSteps, PairsStopOnceTheyChangeNothingWithTheSamePoints)
+{
+  // An octahedron of 1 mm pressed by the filter against a bound of 0.1 mm: its points stop changing
+  // within a few pairs. The run stops there, and its points are those of every pair run one by one.
+  const std::vector<Point3> points{ { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 } };
+  Rows rows;
+  for (std::size_t v = 0; v < points.size(); ++v)
+  {
+    std::vector<std::int32_t> around;
+    for (std::size_t u = 0; u < points.size(); ++u)
+      if (u != v && u != (v ^ 1u)) // every vertex but itself and its opposite
+        around.push_back(static_cast<std::int32_t>(u));
+    rows.add(around);
+  }
+  const double lambda = 0.63, mu = 1.0 / (0.01 - 1.0 / lambda);
+  TaubinPairs early(points, rows.first, rows.ids, { 0.1, 0.1, 0.1 }, true, {});
+  const int ran = early.run(200, lambda, mu, 1);
+  EXPECT_LT(ran, 200);
+  EXPECT_EQ(ran % TaubinPairs::fixedPointCheck, 0);
+  TaubinPairs oneByOne(points, rows.first, rows.ids, { 0.1, 0.1, 0.1 }, true, {});
+  for (int i = 0; i < 200; ++i)
+    ASSERT_EQ(oneByOne.run(1, lambda, mu, 1), 1); // a single pair is never checked
+  std::vector<Point3> a(points.size()), b(points.size());
+  early.unpackInto(a);
+  oneByOne.unpackInto(b);
+  for (std::size_t v = 0; v < points.size(); ++v)
+  {
+    EXPECT_EQ(a[v].x, b[v].x) << v;
+    EXPECT_EQ(a[v].y, b[v].y) << v;
+    EXPECT_EQ(a[v].z, b[v].z) << v;
+    EXPECT_NEAR(std::sqrt(a[v].x * a[v].x + a[v].y * a[v].y + a[v].z * a[v].z), 0.9, 1e-6) << v; // on its bound
+  }
+  // Unbounded, the filter keeps moving the points (towards their middle) all the pairs.
+  TaubinPairs unbounded(points, rows.first, rows.ids, {}, false, {});
+  EXPECT_EQ(unbounded.run(200, lambda, mu, 1), 200);
+}
