@@ -32,6 +32,29 @@ std::vector<CDT::Edge> slab::finiteEdgesInStableOrder(const CDT& cdt)
   return edges;
 }
 
+FaceHandle SlabOverlay::Impl::locate(const Kernel::Point_2& p, CDT::Locate_type& type, int& index) const
+{
+  FaceHandle f = cdt.locate(p, type, index, locateHint == VertexHandle() ? FaceHandle() : locateHint->face());
+  if (type == CDT::EDGE)
+  {
+    const FaceHandle g = f->neighbor(index);
+    const bool gFirst = cdt.is_infinite(f) ||
+                        (!cdt.is_infinite(g) && g->vertex(g->index(f))->info() < f->vertex(index)->info());
+    if (gFirst)
+    {
+      index = g->index(f);
+      f = g;
+    }
+  }
+  for (int i = 0; i < 3; ++i)
+    if (!cdt.is_infinite(f->vertex(i)))
+    {
+      locateHint = f->vertex(i);
+      break;
+    }
+  return f;
+}
+
 namespace
 {
 

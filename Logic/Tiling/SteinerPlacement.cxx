@@ -82,7 +82,7 @@ bool SlabOverlay::Impl::insertSteiner(const Point2& p, double z, MeshBuilder& me
   CDT::Locate_type type;
   int index = 0;
   const Kernel::Point_2 point(p.x, p.y);
-  FaceHandle f = cdt.locate(point, type, index);
+  FaceHandle f = locate(point, type, index);
   if (type == CDT::VERTEX || type == CDT::OUTSIDE_CONVEX_HULL || type == CDT::OUTSIDE_AFFINE_HULL)
     return false;
   if (type == CDT::EDGE && f->is_constrained(index))
@@ -111,6 +111,7 @@ bool SlabOverlay::Impl::insertSteiner(const Point2& p, double z, MeshBuilder& me
   region.cornerLevel = { NoLevel, NoLevel, NoLevel };
   region.lifted = { -1, -1, -1 };
   VertexHandle v = cdt.insert(point, type, f, index);
+  locateHint = v;
   auto face = cdt.incident_faces(v), done = face;
   do
     face->info() = region;
