@@ -32,8 +32,29 @@ std::vector<CDT::Edge> slab::finiteEdgesInStableOrder(const CDT& cdt)
   return edges;
 }
 
+/** The side of the cells that locate's walks start from, in typical contour edges: a walk from a
+ *  vertex of p's own cell crosses a few triangles. */
+constexpr double vertexCellEdges = 4.0;
+
+void SlabOverlay::Impl::addToVertexCells(VertexHandle v)
+{
+  if (!vertexCells)
+    vertexCells = std::make_unique<SpatialHash>(vertexCellEdges * typicalEdge);
+  const int id = v->info();
+  if (vertexHandles.size() <= static_cast<std::size_t>(id))
+    vertexHandles.resize(static_cast<std::size_t>(id) + 1);
+  vertexHandles[static_cast<std::size_t>(id)] = v;
+  vertexCells->insert(Point2{ v->point().x(), v->point().y() }, id);
+}
+
 FaceHandle SlabOverlay::Impl::locate(const Kernel::Point_2& p, CDT::Locate_type& type, int& index) const
 {
+  if (vertexCells)
+    for (int id : vertexCells->cell(vertexCells->cellOf(p.x()), vertexCells->cellOf(p.y())))
+    {
+      locateHint = vertexHandles[static_cast<std::size_t>(id)];
+      break;
+    }
   FaceHandle f = cdt.locate(p, type, index, locateHint == VertexHandle() ? FaceHandle() : locateHint->face());
   if (type == CDT::EDGE)
   {
@@ -240,6 +261,8 @@ void SlabOverlay::Impl::triangulate()
   std::vector<VertexHandle> handles(vertices.size());
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
     handles[v->info()] = v;
+  for (VertexHandle v : handles)
+    addToVertexCells(v);
   for (const auto& [key, edge] : edges)
   {
     (void)edge;

@@ -7,6 +7,7 @@
 #define SlabOverlayState_h
 
 #include "Core/NearestSegment.h"
+#include "Core/SpatialHash.h"
 #include "Tiling/SlabTiling.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -162,13 +163,15 @@ struct SlabOverlay::Impl
     auto it = edges.find(slab::edgeKey(a->info(), b->info()));
     return it == edges.end() ? nullptr : &it->second;
   }
-  /** Where p lies in the overlay (CGAL's locate). The walk starts at the last point located or
-   *  inserted (`locateHint`): points are asked for in runs along rows and contours, and a walk from
-   *  nowhere crosses the slab, which for a slab long and thin (a row of specks, a comb, nested rings)
-   *  made the tiling's time grow with the square of its points. On an edge, of its two faces the one
-   *  whose corner across the edge has the lower vertex id (the finite one, by an infinite face), so
-   *  that the answer never depends on where the walk started. */
+  /** Where p lies in the overlay (CGAL's locate). The walk starts at a vertex in p's cell of
+   *  `vertexCells`, or else where the last one ended: a walk from CGAL's own start crosses the slab,
+   *  which for a slab long and thin (a row of specks, a comb, nested rings) made the tiling's time
+   *  grow with the square of its points. On an edge, of its two faces the one whose corner across the
+   *  edge has the lower vertex id (the finite one, by an infinite face), so that the answer never
+   *  depends on where the walk started. */
   slab::FaceHandle locate(const slab::Kernel::Point_2& p, slab::CDT::Locate_type& type, int& index) const;
+  /** Adds an overlay vertex to `vertexCells` (its id is its info()). */
+  void addToVertexCells(slab::VertexHandle v);
   /** The face a new point at p would go into; an infinite face where p is a vertex already or lies
    *  outside the overlay. */
   slab::FaceHandle faceFor(const Point2& p) const
@@ -178,9 +181,11 @@ struct SlabOverlay::Impl
     const slab::FaceHandle f = locate(slab::Kernel::Point_2(p.x, p.y), type, index);
     return type == slab::CDT::VERTEX ? cdt.infinite_face() : f;
   }
-  /** Where locate's next walk starts: a vertex, not a face (insertions delete faces; no vertex is
-   *  removed). Null: from CGAL's own start. */
-  mutable slab::VertexHandle locateHint;
+  /** The overlay's vertices by cells a few typical edges wide, as ids into `vertexHandles`: where
+   *  locate's walks start (vertices, not faces: insertions delete faces, and no vertex is removed). */
+  std::unique_ptr<SpatialHash> vertexCells;
+  std::vector<slab::VertexHandle> vertexHandles;
+  mutable slab::VertexHandle locateHint; ///< where the last walk ended; null: CGAL's own start
 
   // RegionClassification.cxx: which regions each face lies in, the correspondences, the difference
   // polygons, and the sectors around vertices common to both slices.

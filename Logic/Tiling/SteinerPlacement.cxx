@@ -111,7 +111,6 @@ bool SlabOverlay::Impl::insertSteiner(const Point2& p, double z, MeshBuilder& me
   region.cornerLevel = { NoLevel, NoLevel, NoLevel };
   region.lifted = { -1, -1, -1 };
   VertexHandle v = cdt.insert(point, type, f, index);
-  locateHint = v;
   auto face = cdt.incident_faces(v), done = face;
   do
     face->info() = region;
@@ -121,6 +120,8 @@ bool SlabOverlay::Impl::insertSteiner(const Point2& p, double z, MeshBuilder& me
   steiner.steinerId = mesh.addPoint(p.x, p.y, z);
   v->info() = static_cast<int>(vertices.size());
   vertices.push_back(steiner);
+  addToVertexCells(v);
+  locateHint = v;
   return true;
 }
 
