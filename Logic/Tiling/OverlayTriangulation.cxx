@@ -56,7 +56,7 @@ FaceHandle SlabOverlay::Impl::locate(const Kernel::Point_2& p, CDT::Locate_type&
       break;
     }
   FaceHandle f = cdt.locate(p, type, index, locateHint == VertexHandle() ? FaceHandle() : locateHint->face());
-  if (type == CDT::EDGE)
+  if (type == CDT::EDGE && cdt.dimension() == 2) // below two dimensions an edge has no two faces
   {
     const FaceHandle g = f->neighbor(index);
     const bool gFirst = cdt.is_infinite(f) ||
