@@ -10,7 +10,6 @@
 #include "Finishing/SurfaceSmoothing.h"
 #include "MaskMeshing.h"
 #include "MeshSnapshot.h"
-#include "itkMetaDataObject.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/MeshQuality.h"
 #include "Measures/MeshValidation.h"
@@ -20,6 +19,7 @@
 #include "StoredVolume.h"
 #include "VolumeReader.h"
 #include "VolumeSegmentation.h"
+#include "itkMetaDataObject.h"
 
 #include <algorithm>
 #include <cerrno>

@@ -50,11 +50,11 @@ void SlabOverlay::Impl::addToVertexCells(VertexHandle v)
 FaceHandle SlabOverlay::Impl::locate(const Kernel::Point_2& p, CDT::Locate_type& type, int& index) const
 {
   if (vertexCells)
-    for (int id : vertexCells->cell(vertexCells->cellOf(p.x()), vertexCells->cellOf(p.y())))
-    {
-      locateHint = vertexHandles[static_cast<std::size_t>(id)];
-      break;
-    }
+  {
+    const SpatialHash::Cell cell = vertexCells->cell(vertexCells->cellOf(p.x()), vertexCells->cellOf(p.y()));
+    if (cell.begin() != cell.end())
+      locateHint = vertexHandles[static_cast<std::size_t>(*cell.begin())];
+  }
   FaceHandle f = cdt.locate(p, type, index, locateHint == VertexHandle() ? FaceHandle() : locateHint->face());
   if (type == CDT::EDGE && cdt.dimension() == 2) // below two dimensions an edge has no two faces
   {
@@ -258,15 +258,12 @@ void SlabOverlay::Impl::triangulate()
   cdt.insert(points.begin(), points.end());
   if (cdt.number_of_vertices() != vertices.size())
     throw Error("slab overlay: two contour points coincide in projection beyond the merge tolerance");
-  std::vector<VertexHandle> handles(vertices.size());
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-    handles[v->info()] = v;
-  for (VertexHandle v : handles)
-    addToVertexCells(v);
+    addToVertexCells(v); // vertexHandles by id, for the constraints and the locate
   for (const auto& [key, edge] : edges)
   {
     (void)edge;
-    cdt.insert_constraint(handles[key >> 32], handles[key & 0xffffffffULL]);
+    cdt.insert_constraint(vertexHandles[key >> 32], vertexHandles[key & 0xffffffffULL]);
   }
   bool consistent = cdt.number_of_vertices() == vertices.size();
   Point2 where;

@@ -107,7 +107,6 @@ std::optional<std::array<double, N>> decimals(const char* text)
   return values;
 }
 
-
 double angleDegrees(const std::array<double, 3>& a, const std::array<double, 3>& b)
 {
   const double dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
