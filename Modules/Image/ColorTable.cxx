@@ -2,7 +2,9 @@
 #include "ColorTable.h"
 
 #include "Core/SliceMeshTypes.h"
+#include "Core/Utf8.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -104,22 +106,55 @@ std::array<unsigned char, 4> ColorTable::generatedColor(int label)
            static_cast<unsigned char>(std::lround(b * 255)), 255 };
 }
 
+namespace
+{
+
+/** The code point of the well-formed UTF-8 sequence of `length` bytes at `at`. */
+char32_t codePoint(const unsigned char* at, std::size_t length)
+{
+  static const unsigned char leadBits[5] = { 0, 0x7F, 0x1F, 0x0F, 0x07 };
+  char32_t c = at[0] & leadBits[length];
+  for (std::size_t k = 1; k < length; ++k)
+    c = (c << 6) | (at[k] & 0x3F);
+  return c;
+}
+
+/** Whether a character beyond ASCII may stand in a file name as it is: letters and signs of any
+ *  script ("Rückenmark", "肝臓"), but no control, space or formatting character (C1 controls, the
+ *  no-break space, zero-width and direction marks, the ideographic space, the byte order mark),
+ *  which hide in a listing or reorder how the name reads. */
+bool keptInFileName(char32_t c)
+{
+  return c > 0xA0 && c != 0xAD && !(c >= 0x2000 && c <= 0x206F) && c != 0x3000 && c != 0xFEFF &&
+         !(c >= 0xFFF0 && c <= 0xFFFF);
+}
+
+} // namespace
+
 std::string safeFileName(const std::string& name)
 {
   std::string safe;
-  bool inCharacter = false; // within a UTF-8 character of several bytes
-  for (unsigned char c : name)
+  const auto* at = reinterpret_cast<const unsigned char*>(name.data());
+  const auto* const end = at + name.size();
+  while (at < end)
   {
-    // One '_' for each character that is not kept, not for each byte of it.
-    const bool continuation = inCharacter && (c & 0xC0) == 0x80;
-    inCharacter = c >= 0x80;
-    if (!continuation)
-      safe += ((c < 0x80 && std::isalnum(c)) || c == '-' || c == '_' || c == '.') ? static_cast<char>(c) : '_';
+    // One '_' for each character that is not kept (a stray byte is one character).
+    const std::size_t length = std::max<std::size_t>(utf8SequenceLength(at, end), 1);
+    const unsigned char c = *at;
+    const bool kept = length == 1 ? (c < 0x80 && (std::isalnum(c) || c == '-' || c == '_' || c == '.'))
+                                  : keptInFileName(codePoint(at, length));
+    // A file name holds at most 255 bytes: a longer segment or label name (a sentence pasted into
+    // Slicer's name field) made the whole run fail to write its file, after the others were written.
+    // Cut between characters, never inside one.
+    const std::size_t bytes = kept ? length : 1;
+    if (safe.size() + bytes > maxSafeFileNameLength)
+      break;
+    if (kept)
+      safe.append(reinterpret_cast<const char*>(at), length);
+    else
+      safe += '_';
+    at += length;
   }
-  // A file name holds at most 255 bytes: a longer segment or label name (a sentence pasted into
-  // Slicer's name field) made the whole run fail to write its file, after the others were written.
-  if (safe.size() > maxSafeFileNameLength)
-    safe.resize(maxSafeFileNameLength);
   return safe.empty() ? std::string("unnamed") : safe;
 }
 

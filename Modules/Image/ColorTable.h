@@ -46,8 +46,10 @@ private:
 /** The longest safeFileName: room for the number before it and the extension after it. */
 constexpr std::size_t maxSafeFileNameLength = 200;
 
-/** A file-name-safe form of a label name: ASCII letters, digits, '-', '_' and '.'; each other
- *  character (of one byte or a UTF-8 sequence) becomes one '_'; cut at maxSafeFileNameLength. */
+/** A file-name-safe form of a label name: ASCII letters, digits, '-', '_' and '.', and the letters
+ *  and signs of other scripts as their UTF-8 bytes; each other character (ASCII punctuation and
+ *  spaces, controls, spaces and formatting characters beyond ASCII, a byte that is not well-formed
+ *  UTF-8) becomes one '_'. Cut between characters at maxSafeFileNameLength bytes at most. */
 std::string safeFileName(const std::string& name);
 
 } // namespace slicemesh

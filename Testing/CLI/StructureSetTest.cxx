@@ -19,6 +19,7 @@
 #include <cstring>
 
 #include <fstream>
+#include <iterator>
 
 namespace fs = std::filesystem;
 
@@ -519,7 +520,7 @@ TEST(StructureSet, APointOfInterestIsSkippedUnlessAskedForByName)
   EXPECT_FALSE(fs::exists(alone.folder / "all.vtp"));
 }
 
-TEST(StructureSet, ANameInLatin1IsUtf8InTheOutputAndTheReportAndItsFileNameIsSafe)
+TEST(StructureSet, ANameInLatin1IsUtf8InTheOutputTheReportAndItsFileName)
 {
   // No Specific Character Set, as the writer leaves it: the byte 0xFC beyond ASCII is Latin-1's u umlaut.
   PlanarStructure latin1 = nestedAnnulus();
@@ -532,8 +533,9 @@ TEST(StructureSet, ANameInLatin1IsUtf8InTheOutputAndTheReportAndItsFileNameIsSaf
   const std::string json = fileText(report);
   EXPECT_NE(json.find("\"name\": \"" + utf8 + "\""), std::string::npos) << json;
   EXPECT_EQ(json.find('\xFC'), std::string::npos) << "no Latin-1 byte left in the report";
-  // One '_' for the character (as for the Latin-1 byte before names were converted) and one for the slash.
-  expectValid(run.folder / "rois" / "001_R_ckenmark_C1.vtp");
+  // The letter as UTF-8 in the file name too; the slash, which would make a folder, becomes '_'.
+  expectValid(run.folder / "rois" / ("001_" + std::string("R\xC3\xBC" "ckenmark_C1") + ".vtp"));
+  EXPECT_EQ(std::distance(fs::directory_iterator(run.folder / "rois"), fs::directory_iterator()), 1);
 }
 
 TEST(StructureSet, TwoROIsOfOneNumberFailWithOneWarningAndTheOthersAreWritten)
