@@ -287,7 +287,7 @@ namespace
  *  image's slice direction. */
 double distanceOffSlices(const StackedContours& contours, const VolumeGeometry& image)
 {
-  const std::array<double, 3> normal = image.sliceNormal(); // a tilted CT's slices step sideways too
+  const itk::Vector<double, 3> normal = image.sliceNormal(); // a tilted CT's slices step sideways too
   const double distance = image.sliceDistance();
   const auto& frame = contours.frame;
   double farthest = 0.0;
@@ -345,7 +345,8 @@ std::vector<Structure> roiStructures(const StructureSet& set, const std::optiona
   if (reference)
   {
     // The planes' normal and distance: a tilted CT's slices step sideways along its third axis.
-    stacking.sliceNormal = reference->sliceNormal();
+    const itk::Vector<double, 3> normal = reference->sliceNormal();
+    stacking.sliceNormal = Vector3{ normal[0], normal[1], normal[2] };
     stacking.expectedSliceSpacing = reference->sliceDistance();
   }
   auto stack = [&](std::size_t n)

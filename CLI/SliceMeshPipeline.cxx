@@ -20,6 +20,7 @@
 #include "VolumeReader.h"
 #include "VolumeSegmentation.h"
 #include "itkMetaDataObject.h"
+#include "vnl/vnl_matrix_fixed.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -116,20 +117,18 @@ ColorTable checkBeforeWork(const PipelineSettings& settings, MadeFolders& made)
   return {};
 }
 
-/** The run's figures of one finished structure, for the summary line and the report. */
 /** Whether the frame's axes are not at right angles (a sheared grid, which NRRD and MetaImage can
  *  state): the stack frame's volumes, areas and angles are then not the physical mesh's. */
 bool shears(const SliceFrame& frame)
 {
-  const auto& d = frame.direction;
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b)
-    {
-      const double dot = d[0][a] * d[0][b] + d[1][a] * d[1][b] + d[2][a] * d[2][b];
-      if (std::abs(dot - (a == b ? 1.0 : 0.0)) > 1e-6)
-        return true;
-    }
-  return false;
+  vnl_matrix_fixed<double, 3, 3> axes; // columns: the frame's axes
+  for (int row = 0; row < 3; ++row)
+    for (int column = 0; column < 3; ++column)
+      axes(row, column) = frame.direction[row][column];
+  vnl_matrix_fixed<double, 3, 3> identity;
+  identity.set_identity();
+  // The axes' dot products against those of orthonormal axes.
+  return (axes.transpose() * axes - identity).absolute_value_max() > 1e-6;
 }
 
 /** The validation's and the quality's measures of a structure, taken again on its mesh in physical

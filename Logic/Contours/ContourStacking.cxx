@@ -2,6 +2,8 @@
 
 #include "Core/PlanarGeometry.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -14,27 +16,10 @@ namespace
 
 constexpr double Pi = 3.14159265358979323846;
 
-double dot(const Vector3& a, const Vector3& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
+/** A vector to compute with; the interface keeps Vector3, a plain array. */
+using Vec = Eigen::Vector3d;
 
-Vector3 cross(const Vector3& a, const Vector3& b)
-{
-  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
-}
-
-double norm(const Vector3& a)
-{
-  return std::sqrt(dot(a, a));
-}
-
-Vector3 scaled(const Vector3& a, double s)
-{
-  return { a[0] * s, a[1] * s, a[2] * s };
-}
-
-Vector3 asVector(const Point3& p)
+Vec asVector(const Point3& p)
 {
   return { p.x, p.y, p.z };
 }
@@ -61,15 +46,11 @@ Polygon3 withoutRepeatedPoints(const Polygon3& contour)
 
 /** An in-plane orthonormal basis (u, v) with u x v = normal: u from the patient axis most
  *  perpendicular to the normal, so axial contours keep x along L and y along P. */
-std::pair<Vector3, Vector3> inPlaneBasis(const Vector3& normal)
+std::pair<Vec, Vec> inPlaneBasis(const Vec& normal)
 {
-  const Vector3 axis = std::abs(normal[0]) < 0.9 ? Vector3{ 1.0, 0.0, 0.0 } : Vector3{ 0.0, 1.0, 0.0 };
-  Vector3 u = axis;
-  const double along = dot(axis, normal);
-  for (int k = 0; k < 3; ++k)
-    u[k] -= along * normal[k];
-  u = scaled(u, 1.0 / norm(u));
-  return { u, cross(normal, u) };
+  const Vec axis = std::abs(normal[0]) < 0.9 ? Vec::UnitX() : Vec::UnitY();
+  const Vec u = (axis - axis.dot(normal) * normal).normalized();
+  return { u, normal.cross(u) };
 }
 
 /** Whether two contours of one slice are the same polygon (in either direction, from any start). */
@@ -110,22 +91,21 @@ constexpr double maxOffPlane = 0.1;
 
 /** The mean of the contour's points: the products of the normals are taken about it, since far
  *  from the origin they would lose the digits that matter. */
-Vector3 centreOf(const Polygon3& contour)
+Vec centreOf(const Polygon3& contour)
 {
-  Vector3 centre{ 0.0, 0.0, 0.0 };
+  Vec centre = Vec::Zero();
   for (const Point3& p : contour)
-    centre = { centre[0] + p.x, centre[1] + p.y, centre[2] + p.z };
-  return scaled(centre, 1.0 / static_cast<double>(contour.size()));
+    centre += asVector(p);
+  return centre / static_cast<double>(contour.size());
 }
 
-} // namespace
-
-Vector3 newellNormal(const Polygon3& contour)
+/** newellNormal, as a vector to compute with. */
+Vec newellVector(const Polygon3& contour)
 {
-  Vector3 normal{ 0.0, 0.0, 0.0 };
+  Vec normal = Vec::Zero();
   if (contour.size() < 3)
     return normal;
-  const Vector3 centre = centreOf(contour);
+  const Vec centre = centreOf(contour);
   for (std::size_t i = 0; i < contour.size(); ++i)
   {
     const Point3& p = contour[i];
@@ -139,74 +119,88 @@ Vector3 newellNormal(const Polygon3& contour)
   return normal;
 }
 
-Vector3 planeNormal(const Polygon3& contour)
+/** planeNormal, as a vector to compute with. */
+Vec planeVector(const Polygon3& contour)
 {
-  const Vector3 newell = newellNormal(contour);
+  const Vec newell = newellVector(contour);
   if (contour.size() < 3)
     return newell;
   // The triangles from the centroid to each edge, each turned to agree with the largest: they do
   // not cancel where the contour's lobes wind opposite ways (a symmetric figure eight, whose
   // Newell normal vanishes while it still spans a plane and, by the even-odd rule, two lobes).
-  const Vector3 centre = centreOf(contour);
-  std::vector<Vector3> fan;
+  const Vec centre = centreOf(contour);
+  std::vector<Vec> fan;
   std::size_t largest = 0;
   for (std::size_t i = 0; i < contour.size(); ++i)
   {
-    const Point3& p = contour[i];
-    const Point3& q = contour[(i + 1) % contour.size()];
-    const Vector3 a{ p.x - centre[0], p.y - centre[1], p.z - centre[2] };
-    const Vector3 b{ q.x - centre[0], q.y - centre[1], q.z - centre[2] };
-    fan.push_back({ a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] });
-    if (norm(fan.back()) > norm(fan[largest]))
+    const Vec a = asVector(contour[i]) - centre;
+    const Vec b = asVector(contour[(i + 1) % contour.size()]) - centre;
+    fan.push_back(a.cross(b));
+    if (fan.back().norm() > fan[largest].norm())
       largest = fan.size() - 1;
   }
-  Vector3 unsignedSum{ 0.0, 0.0, 0.0 };
-  for (const Vector3& n : fan)
-  {
-    const double sign = dot(n, fan[largest]) < 0.0 ? -1.0 : 1.0;
-    for (int k = 0; k < 3; ++k)
-      unsignedSum[k] += sign * n[k];
-  }
+  Vec unsignedSum = Vec::Zero();
+  for (const Vec& n : fan)
+    unsignedSum += n.dot(fan[largest]) < 0.0 ? -n : n;
   // Newell's wherever it stands for the contour (any contour that does not cross itself, and most
   // that do): only a cancelling one is replaced.
-  return norm(newell) > 1e-6 * norm(unsignedSum) ? newell : unsignedSum;
+  return newell.norm() > 1e-6 * unsignedSum.norm() ? newell : unsignedSum;
+}
+
+/** sliceNormalOf, as a vector to compute with. */
+Vec sliceVector(const std::vector<Polygon3>& contours)
+{
+  std::vector<Vec> normals;
+  std::size_t largest = 0;
+  for (const Polygon3& contour : contours)
+  {
+    normals.push_back(planeVector(withoutRepeatedPoints(contour)));
+    if (normals.back().norm() > normals[largest].norm())
+      largest = normals.size() - 1;
+  }
+  if (normals.empty() || !(normals[largest].norm() > 0.0))
+    throw Error("no contour encloses an area: the slice plane is undefined");
+  const Vec reference = normals[largest].normalized();
+  // Area-weighted (a Newell normal's length is twice the area), signs aligned to the largest
+  // contour (windings are unreliable), contours tilted by more than 5 degrees left out.
+  const double agree = std::cos(5.0 * Pi / 180.0);
+  Vec sum = Vec::Zero();
+  for (const Vec& n : normals)
+  {
+    const double length = n.norm();
+    if (!(length > 0.0))
+      continue;
+    const double cosine = n.dot(reference) / length;
+    if (std::abs(cosine) < agree)
+      continue;
+    sum += cosine < 0.0 ? -n : n;
+  }
+  const Vec normal = sum.normalized();
+  Eigen::Index biggest = 0;
+  normal.cwiseAbs().maxCoeff(&biggest);
+  return normal[biggest] < 0.0 ? -normal : normal;
+}
+
+Vector3 asArray(const Vec& v)
+{
+  return { v[0], v[1], v[2] };
+}
+
+} // namespace
+
+Vector3 newellNormal(const Polygon3& contour)
+{
+  return asArray(newellVector(contour));
+}
+
+Vector3 planeNormal(const Polygon3& contour)
+{
+  return asArray(planeVector(contour));
 }
 
 Vector3 sliceNormalOf(const std::vector<Polygon3>& contours)
 {
-  std::vector<Vector3> normals;
-  std::size_t largest = 0;
-  for (const Polygon3& contour : contours)
-  {
-    normals.push_back(planeNormal(withoutRepeatedPoints(contour)));
-    if (norm(normals.back()) > norm(normals[largest]))
-      largest = normals.size() - 1;
-  }
-  if (normals.empty() || !(norm(normals[largest]) > 0.0))
-    throw Error("no contour encloses an area: the slice plane is undefined");
-  const Vector3 reference = scaled(normals[largest], 1.0 / norm(normals[largest]));
-  // Area-weighted (a Newell normal's length is twice the area), signs aligned to the largest
-  // contour (windings are unreliable), contours tilted by more than 5 degrees left out.
-  const double agree = std::cos(5.0 * Pi / 180.0);
-  Vector3 sum{ 0.0, 0.0, 0.0 };
-  for (const Vector3& n : normals)
-  {
-    const double length = norm(n);
-    if (!(length > 0.0))
-      continue;
-    const double cosine = dot(n, reference) / length;
-    if (std::abs(cosine) < agree)
-      continue;
-    const double sign = cosine < 0.0 ? -1.0 : 1.0;
-    for (int k = 0; k < 3; ++k)
-      sum[k] += sign * n[k];
-  }
-  Vector3 normal = scaled(sum, 1.0 / norm(sum));
-  const auto biggest = std::max_element(normal.begin(), normal.end(),
-                                        [](double a, double b) { return std::abs(a) < std::abs(b); });
-  if (*biggest < 0.0)
-    normal = scaled(normal, -1.0);
-  return normal;
+  return asArray(sliceVector(contours));
 }
 
 double automaticPointSpacing(const ContourStack& stack)
@@ -285,19 +279,19 @@ double coordinateStep(const std::vector<Polygon3>& contours)
 StackedContours stackContours(const std::vector<Polygon3>& contours, const ContourStackingOptions& options)
 {
   StackedContours result;
-  Vector3 normal = sliceNormalOf(contours);
+  Vec normal = sliceVector(contours);
   if (options.sliceNormal)
   {
-    const Vector3& given = *options.sliceNormal;
-    if (!(norm(given) > 0.0) || !std::isfinite(norm(given)))
+    const Vec given(options.sliceNormal->data());
+    if (!(given.norm() > 0.0) || !std::isfinite(given.norm()))
       throw Error("the given slice normal is zero or not finite");
-    const double cosine = std::min(1.0, std::abs(dot(normal, given)) / norm(given));
+    const double cosine = std::min(1.0, std::abs(normal.dot(given)) / given.norm());
     result.normalDeviationDegrees = std::acos(cosine) * 180.0 / Pi;
     // Contours drawn on the image's slices lie on its planes up to the planner's rounding; its
     // direction is then exact where theirs is an estimate.
     result.givenNormalUsed = *result.normalDeviationDegrees <= options.maxNormalDeviationDegrees;
     if (result.givenNormalUsed)
-      normal = scaled(given, 1.0 / norm(given));
+      normal = given.normalized();
   }
   const auto [u, v] = inPlaneBasis(normal);
 
@@ -313,27 +307,27 @@ StackedContours stackContours(const std::vector<Polygon3>& contours, const Conto
   for (const Polygon3& raw : contours)
   {
     const Polygon3 contour = withoutRepeatedPoints(raw);
-    const Vector3 n = planeNormal(contour);
-    const double length = norm(n);
+    const Vec n = planeVector(contour);
+    const double length = n.norm();
     if (contour.size() < 3 || !(length > 1e-12))
     {
       ++arealess;
       continue;
     }
-    if (std::abs(dot(n, normal)) / length < maxTiltCosine)
+    if (std::abs(n.dot(normal)) / length < maxTiltCosine)
     {
       ++tilted;
       continue;
     }
     Placed p;
-    const Vector3 centre = centreOf(contour);
+    const Vec centre = centreOf(contour);
     double offPlane = 0.0; // the farthest point from the contour's own plane
     for (const Point3& point : contour)
     {
-      const Vector3 x = asVector(point);
-      p.position += dot(x, normal);
-      p.contour.push_back({ dot(x, u), dot(x, v) });
-      offPlane = std::max(offPlane, std::abs(dot({ x[0] - centre[0], x[1] - centre[1], x[2] - centre[2] }, n)) / length);
+      const Vec x = asVector(point);
+      p.position += x.dot(normal);
+      p.contour.push_back({ x.dot(u), x.dot(v) });
+      offPlane = std::max(offPlane, std::abs((x - centre).dot(n)) / length);
     }
     if (offPlane > maxOffPlane)
     {

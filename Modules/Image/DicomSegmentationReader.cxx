@@ -22,6 +22,8 @@
 #include "dcmtk/dcmseg/segutils.h"
 #include "dcmtk/oflog/oflog.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -33,23 +35,14 @@ namespace slicemesh
 namespace
 {
 
-using Vector3 = std::array<double, 3>;
-
-double dot(const Vector3& a, const Vector3& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-Vector3 cross(const Vector3& a, const Vector3& b)
-{
-  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
-}
+using Vector3 = Eigen::Vector3d;
 
 /** One frame as the functional groups describe it. */
 struct FrameGeometry
 {
-  Vector3 position{};      ///< Image Position (Patient) of the first pixel, LPS mm
-  Vector3 row{}, column{}; ///< Image Orientation (Patient): along a row (columns increase), down a column
+  Vector3 position = Vector3::Zero(); ///< Image Position (Patient) of the first pixel, LPS mm
+  Vector3 row = Vector3::Zero();      ///< Image Orientation (Patient): along a row (columns increase)
+  Vector3 column = Vector3::Zero();   ///< down a column
   double rowSpacing = 0.0, columnSpacing = 0.0; ///< Pixel Spacing: between rows, between columns
   double sliceSpacing = 0.0;                    ///< Spacing Between Slices, 0 when absent
   double sliceThickness = 0.0;                  ///< Slice Thickness, 0 when absent
@@ -95,8 +88,8 @@ FrameGeometry frameGeometry(const std::string& path, FGInterface& groups, Uint32
  *  normal from the lowest frame up. */
 struct SliceGrid
 {
-  Vector3 origin{};
-  Vector3 axes[3]{};
+  Vector3 origin = Vector3::Zero();
+  Vector3 axes[3];
   double spacing[3]{};
   std::vector<long> sliceOfFrame;
   long slices = 0;
@@ -107,15 +100,12 @@ SliceGrid sliceGrid(const std::string& path, const std::vector<FrameGeometry>& f
   const FrameGeometry& first = frames.front();
   SliceGrid grid;
   const Vector3 row = first.row, column = first.column;
-  const double rowLength = std::sqrt(dot(row, row)), columnLength = std::sqrt(dot(column, column));
-  if (!(rowLength > 0.5 && columnLength > 0.5) || std::abs(dot(row, column)) > 1e-3 * rowLength * columnLength)
+  const double rowLength = row.norm(), columnLength = column.norm();
+  if (!(rowLength > 0.5 && columnLength > 0.5) || std::abs(row.dot(column)) > 1e-3 * rowLength * columnLength)
     throw Error(path + ": the Image Orientation (Patient) is not two perpendicular directions");
-  for (int a = 0; a < 3; ++a)
-  {
-    grid.axes[0][a] = row[a] / rowLength;
-    grid.axes[1][a] = column[a] / columnLength;
-  }
-  grid.axes[2] = cross(grid.axes[0], grid.axes[1]);
+  grid.axes[0] = row / rowLength;
+  grid.axes[1] = column / columnLength;
+  grid.axes[2] = grid.axes[0].cross(grid.axes[1]);
   grid.spacing[0] = first.columnSpacing; // neighbours along a row are a column apart
   grid.spacing[1] = first.rowSpacing;
   if (!(grid.spacing[0] > 0.0 && grid.spacing[1] > 0.0 && std::isfinite(grid.spacing[0]) && std::isfinite(grid.spacing[1])))
@@ -130,7 +120,7 @@ SliceGrid sliceGrid(const std::string& path, const std::vector<FrameGeometry>& f
     if (std::abs(f.rowSpacing - first.rowSpacing) > 1e-4 * first.rowSpacing ||
         std::abs(f.columnSpacing - first.columnSpacing) > 1e-4 * first.columnSpacing)
       throw Error(path + ": the frames have different pixel spacings");
-    heights.push_back(dot(f.position, grid.axes[2]));
+    heights.push_back(f.position.dot(grid.axes[2]));
   }
   const auto lowest = std::min_element(heights.begin(), heights.end()) - heights.begin();
   grid.origin = frames[lowest].position;
@@ -156,19 +146,17 @@ SliceGrid sliceGrid(const std::string& path, const std::vector<FrameGeometry>& f
 
   for (std::size_t n = 0; n < frames.size(); ++n)
   {
-    Vector3 offset;
-    for (int a = 0; a < 3; ++a)
-      offset[a] = frames[n].position[a] - grid.origin[a];
+    const Vector3 offset = frames[n].position - grid.origin;
     for (int a = 0; a < 2; ++a)
-      if (std::abs(dot(offset, grid.axes[a])) > 1e-3 + 1e-2 * grid.spacing[a])
+      if (std::abs(offset.dot(grid.axes[a])) > 1e-3 + 1e-2 * grid.spacing[a])
         throw Error(path + ": frame " + std::to_string(n + 1) +
                     " is shifted in its plane against the others; SliceMesh needs the frames on one grid");
-    const double step = dot(offset, grid.axes[2]) / spacing;
+    const double step = offset.dot(grid.axes[2]) / spacing;
     const long slice = std::lround(step);
     if (std::abs(step - static_cast<double>(slice)) > 0.02)
     {
       std::ostringstream message;
-      message << path << ": frame " << n + 1 << " lies " << dot(offset, grid.axes[2])
+      message << path << ": frame " << n + 1 << " lies " << offset.dot(grid.axes[2])
               << " mm above the lowest frame, not a whole number of slices of " << spacing << " mm";
       throw Error(message.str());
     }

@@ -8,7 +8,9 @@
 #include "itkGDCMImageIO.h"
 #include "itkGDCMSeriesFileNames.h"
 #include "itkImageSeriesReader.h"
+#include "itkMath.h"
 #include "itkMetaDataObject.h"
+#include "itkVector.h"
 
 #include <gdcmScanner.h>
 
@@ -107,11 +109,9 @@ std::optional<std::array<double, N>> decimals(const char* text)
   return values;
 }
 
-double angleDegrees(const std::array<double, 3>& a, const std::array<double, 3>& b)
+double angleDegrees(const itk::Vector<double, 3>& a, const itk::Vector<double, 3>& b)
 {
-  const double dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  const double norms = std::sqrt((a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) * (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]));
-  return std::acos(std::clamp(dot / norms, -1.0, 1.0)) * 180.0 / 3.14159265358979323846;
+  return std::acos(std::clamp(a * b / (a.GetNorm() * b.GetNorm()), -1.0, 1.0)) * 180.0 / itk::Math::pi;
 }
 
 /** The step from one slice's Image Position to the next's, checked. The series reader places every
@@ -139,8 +139,9 @@ std::optional<std::array<double, 3>> checkedSliceStep(const std::string& folder,
     const auto other = decimals<6>(scanner.GetValue(file.c_str(), orientationTag));
     if (!other)
       continue;
-    const double turn = std::max(angleDegrees({ o[0], o[1], o[2] }, { (*other)[0], (*other)[1], (*other)[2] }),
-                                 angleDegrees({ o[3], o[4], o[5] }, { (*other)[3], (*other)[4], (*other)[5] }));
+    using Direction = itk::Vector<double, 3>; // the row's (values 0-2) and the column's (3-5)
+    const double turn = std::max(angleDegrees(Direction(&o[0]), Direction(&(*other)[0])),
+                                 angleDegrees(Direction(&o[3]), Direction(&(*other)[3])));
     if (turn > 0.01)
     {
       char text[320];

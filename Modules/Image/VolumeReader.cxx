@@ -512,23 +512,24 @@ bool isSeriesFolder(const std::string& path)
 
 } // namespace
 
-std::array<double, 3> VolumeGeometry::sliceNormal() const
+itk::Vector<double, 3> VolumeGeometry::axis(int k) const
 {
-  const std::array<double, 3> u{ direction[0][0], direction[1][0], direction[2][0] };
-  const std::array<double, 3> v{ direction[0][1], direction[1][1], direction[2][1] };
-  std::array<double, 3> normal{ u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0] };
-  const std::array<double, 3> slice = sliceDirection();
-  const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
-  const double side = normal[0] * slice[0] + normal[1] * slice[1] + normal[2] * slice[2] < 0.0 ? -1.0 : 1.0;
-  for (double& c : normal)
-    c *= side / length;
-  return normal;
+  itk::Vector<double, 3> column;
+  for (int row = 0; row < 3; ++row)
+    column[row] = direction[row][k];
+  return column;
+}
+
+itk::Vector<double, 3> VolumeGeometry::sliceNormal() const
+{
+  itk::Vector<double, 3> normal = itk::CrossProduct(axis(0), axis(1));
+  normal.Normalize();
+  return normal * sliceDirection() < 0.0 ? -normal : normal; // Vector * Vector: the dot product
 }
 
 double VolumeGeometry::sliceDistance() const
 {
-  const std::array<double, 3> normal = sliceNormal(), slice = sliceDirection();
-  return spacing[2] * std::abs(normal[0] * slice[0] + normal[1] * slice[1] + normal[2] * slice[2]);
+  return spacing[2] * std::abs(sliceNormal() * sliceDirection());
 }
 
 VolumeGeometry readVolumeGeometry(const std::string& path)

@@ -3,6 +3,7 @@
 #define VolumeReader_h
 
 #include "itkImage.h"
+#include "itkVector.h"
 
 #include <array>
 #include <cstdint>
@@ -45,10 +46,12 @@ struct VolumeGeometry
   std::array<double, 3> origin{ 0.0, 0.0, 0.0 };
   /** Columns: the directions of the voxel axes in LPS; the third is the slice direction. */
   std::array<std::array<double, 3>, 3> direction{ { { 1.0, 0.0, 0.0 }, { 0.0, 1.0, 0.0 }, { 0.0, 0.0, 1.0 } } };
-  std::array<double, 3> sliceDirection() const { return { direction[0][2], direction[1][2], direction[2][2] }; }
+  /** Column `k` of direction: where voxel axis k points. */
+  itk::Vector<double, 3> axis(int k) const;
+  itk::Vector<double, 3> sliceDirection() const { return axis(2); }
   /** The unit normal of the slices' planes, on the side the slices go: the slice direction, unless
    *  the grid is sheared (a gantry-tilted CT, whose slices step sideways as they go). */
-  std::array<double, 3> sliceNormal() const;
+  itk::Vector<double, 3> sliceNormal() const;
   /** The distance between the slices' planes along sliceNormal (spacing[2] unless sheared). */
   double sliceDistance() const;
   /** A DICOM image's Frame of Reference UID (0020,0052); empty for other formats or when absent. */
