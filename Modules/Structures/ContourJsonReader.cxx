@@ -14,19 +14,78 @@ namespace
 
 using Json = nlohmann::json;
 
+/** The parser's message without its "[json.exception.parse_error.101] " tag. */
+std::string messageOf(const Json::exception& e)
+{
+  const std::string what = e.what();
+  const std::size_t tag = what.rfind("] ", what.find(' '));
+  return what.compare(0, 16, "[json.exception.") == 0 && tag != std::string::npos ? what.substr(tag + 2) : what;
+}
+
 [[noreturn]] void malformed(const std::string& path, const std::string& where, const std::string& what)
 {
   throw Error("'" + path + "': " + where + ": " + what);
 }
 
-double coordinate(const Json& value, const std::string& path, const std::string& where)
+/** A fault in one ROI's contour data: that ROI cannot be meshed, the file's other ROIs can (as a
+ *  structure set's ContourData that is no number fails its ROI alone). */
+struct ContourDataFault
+{
+  std::string where, what;
+};
+
+[[noreturn]] void faulty(const std::string& where, const std::string& what)
+{
+  throw ContourDataFault{ where, what };
+}
+
+double coordinate(const Json& value, const std::string& where)
 {
   if (!value.is_number())
-    malformed(path, where, "a coordinate is not a number");
+    faulty(where, "a coordinate is not a number");
   const double number = value.get<double>();
   if (!std::isfinite(number))
-    malformed(path, where, "a coordinate is not finite");
+    faulty(where, "a coordinate is not finite");
   return number;
+}
+
+/** The ROI's contours from its "slices" (`at`: where the ROI is in the file, for messages). */
+void readSlices(const Json& roi, const std::string& at, double sign, PlanarStructure& structure)
+{
+  std::string zDisagrees; // the first slice whose points' z is not its own "z"
+  const Json slices = roi.value("slices", Json::array());
+  if (!slices.is_array())
+    faulty(at + ".slices", "not an array");
+  for (std::size_t s = 0; s < slices.size(); ++s)
+  {
+    const Json& slice = slices[s];
+    const std::string sliceAt = at + ".slices[" + std::to_string(s) + "]";
+    if (!slice.is_object() || !slice.contains("polygons") || !slice["polygons"].is_array())
+      faulty(sliceAt, "expected an object with a \"polygons\" array");
+    const bool hasZ = slice.contains("z");
+    const double z = hasZ ? coordinate(slice["z"], sliceAt + ".z") : 0.0;
+    const Json& polygons = slice["polygons"];
+    for (std::size_t p = 0; p < polygons.size(); ++p)
+    {
+      const std::string polygonAt = sliceAt + ".polygons[" + std::to_string(p) + "]";
+      if (!polygons[p].is_array())
+        faulty(polygonAt, "a polygon is not an array of points");
+      Polygon3 contour;
+      for (const Json& point : polygons[p])
+      {
+        if (!point.is_array() || !(point.size() == 3 || (point.size() == 2 && hasZ)))
+          faulty(polygonAt, hasZ ? "a point needs [x, y] or [x, y, z]" : "a point needs [x, y, z] (or the slice a \"z\")");
+        const double x = coordinate(point[0], polygonAt), y = coordinate(point[1], polygonAt);
+        contour.push_back({ sign * x, sign * y, point.size() == 3 ? coordinate(point[2], polygonAt) : z });
+        if (hasZ && point.size() == 3 && zDisagrees.empty() &&
+            std::abs(contour.back().z - z) > 1e-6 * std::max(1.0, std::abs(z)))
+          zDisagrees = sliceAt;
+      }
+      structure.contours.push_back(std::move(contour));
+    }
+  }
+  if (!zDisagrees.empty())
+    structure.notes.push_back(zDisagrees + " has points whose z is not its \"z\": the points' own are used");
 }
 
 StructureSet readDocument(const std::string& path)
@@ -39,9 +98,9 @@ StructureSet readDocument(const std::string& path)
   {
     document = Json::parse(in);
   }
-  catch (const Json::parse_error& e)
+  catch (const Json::exception& e) // a syntax error, or a number beyond a double's range
   {
-    throw Error("cannot read '" + path + "' as JSON: " + e.what());
+    throw Error("cannot read '" + path + "' as JSON: " + messageOf(e));
   }
   if (!document.is_object() || !document.contains("rois") || !document["rois"].is_array())
     malformed(path, "top level", "expected an object with a \"rois\" array");
@@ -79,40 +138,16 @@ StructureSet readDocument(const std::string& path)
         structure.rgb[c] = static_cast<unsigned char>(color[c].get<double>() + 0.5);
       }
     }
-    std::string zDisagrees; // the first slice whose points' z is not its own "z"
-    const Json slices = roi.value("slices", Json::array());
-    if (!slices.is_array())
-      malformed(path, at + ".slices", "not an array");
-    for (std::size_t s = 0; s < slices.size(); ++s)
+    try
     {
-      const Json& slice = slices[s];
-      const std::string sliceAt = at + ".slices[" + std::to_string(s) + "]";
-      if (!slice.is_object() || !slice.contains("polygons") || !slice["polygons"].is_array())
-        malformed(path, sliceAt, "expected an object with a \"polygons\" array");
-      const bool hasZ = slice.contains("z");
-      const double z = hasZ ? coordinate(slice["z"], path, sliceAt + ".z") : 0.0;
-      const Json& polygons = slice["polygons"];
-      for (std::size_t p = 0; p < polygons.size(); ++p)
-      {
-        const std::string polygonAt = sliceAt + ".polygons[" + std::to_string(p) + "]";
-        if (!polygons[p].is_array())
-          malformed(path, polygonAt, "a polygon is not an array of points");
-        Polygon3 contour;
-        for (const Json& point : polygons[p])
-        {
-          if (!point.is_array() || !(point.size() == 3 || (point.size() == 2 && hasZ)))
-            malformed(path, polygonAt, hasZ ? "a point needs [x, y] or [x, y, z]" : "a point needs [x, y, z] (or the slice a \"z\")");
-          const double x = coordinate(point[0], path, polygonAt), y = coordinate(point[1], path, polygonAt);
-          contour.push_back({ sign * x, sign * y, point.size() == 3 ? coordinate(point[2], path, polygonAt) : z });
-          if (hasZ && point.size() == 3 && zDisagrees.empty() &&
-              std::abs(contour.back().z - z) > 1e-6 * std::max(1.0, std::abs(z)))
-            zDisagrees = sliceAt;
-        }
-        structure.contours.push_back(std::move(contour));
-      }
+      readSlices(roi, at, sign, structure);
     }
-    if (!zDisagrees.empty())
-      structure.notes.push_back(zDisagrees + " has points whose z is not its \"z\": the points' own are used");
+    catch (const ContourDataFault& fault)
+    {
+      structure.contours.clear();
+      structure.notes.clear();
+      structure.unusableBecause = fault.where + ": " + fault.what;
+    }
     set.structures.push_back(std::move(structure));
   }
   if (set.structures.empty())
@@ -131,7 +166,7 @@ StructureSet readContourJson(const std::string& path)
   catch (const Json::exception& e)
   {
     // A value of the wrong type where a name or number was expected.
-    throw Error("'" + path + "': " + e.what());
+    throw Error("'" + path + "': " + messageOf(e));
   }
 }
 
