@@ -146,7 +146,7 @@ std::vector<LabelSource> segmentSources(const SegmentationFile& file, const std:
   {
     try
     {
-      layerExtents.push_back(indexLabels(layer));
+      layerExtents.push_back(indexLabels(layer.GetPointer()));
     }
     catch (const std::exception& e)
     {

@@ -27,8 +27,10 @@ bool notALabel(Pixel value)
     return static_cast<std::uint64_t>(value) >= 2147483648u; // four unsigned bytes may pass a label's int
 }
 
+} // namespace
+
 template <typename TImage>
-std::vector<LabelExtent> indexLabelsOf(const TImage* labelMap)
+std::vector<LabelExtent> indexLabels(const TImage* labelMap)
 {
   using Pixel = typename TImage::PixelType;
   const auto region = labelMap->GetBufferedRegion();
@@ -82,7 +84,7 @@ std::vector<LabelExtent> indexLabelsOf(const TImage* labelMap)
 }
 
 template <typename TImage>
-MaskVolume::Pointer cropLabelMaskOf(const TImage* labelMap, const LabelExtent& extent)
+MaskVolume::Pointer cropLabelMask(const TImage* labelMap, const LabelExtent& extent)
 {
   using Pixel = typename TImage::PixelType;
   const auto region = labelMap->GetBufferedRegion();
@@ -120,76 +122,17 @@ MaskVolume::Pointer cropLabelMaskOf(const TImage* labelMap, const LabelExtent& e
   return mask;
 }
 
-} // namespace
-
-std::vector<LabelExtent> indexLabels(const ScalarVolume* labelMap)
-{
-  return indexLabelsOf(labelMap);
-}
-
-MaskVolume::Pointer cropLabelMask(const ScalarVolume* labelMap, const LabelExtent& extent)
-{
-  return cropLabelMaskOf(labelMap, extent);
-}
-
-std::vector<LabelExtent> indexLabels(const itk::Image<std::uint8_t, 3>* labelMap)
-{
-  return indexLabelsOf(labelMap);
-}
-
-MaskVolume::Pointer cropLabelMask(const itk::Image<std::uint8_t, 3>* labelMap, const LabelExtent& extent)
-{
-  return cropLabelMaskOf(labelMap, extent);
-}
-
-std::vector<LabelExtent> indexLabels(const itk::Image<std::int8_t, 3>* labelMap)
-{
-  return indexLabelsOf(labelMap);
-}
-
-MaskVolume::Pointer cropLabelMask(const itk::Image<std::int8_t, 3>* labelMap, const LabelExtent& extent)
-{
-  return cropLabelMaskOf(labelMap, extent);
-}
-
-std::vector<LabelExtent> indexLabels(const itk::Image<std::uint16_t, 3>* labelMap)
-{
-  return indexLabelsOf(labelMap);
-}
-
-MaskVolume::Pointer cropLabelMask(const itk::Image<std::uint16_t, 3>* labelMap, const LabelExtent& extent)
-{
-  return cropLabelMaskOf(labelMap, extent);
-}
-
-std::vector<LabelExtent> indexLabels(const itk::Image<std::int16_t, 3>* labelMap)
-{
-  return indexLabelsOf(labelMap);
-}
-
-MaskVolume::Pointer cropLabelMask(const itk::Image<std::int16_t, 3>* labelMap, const LabelExtent& extent)
-{
-  return cropLabelMaskOf(labelMap, extent);
-}
-
-std::vector<LabelExtent> indexLabels(const itk::Image<std::uint32_t, 3>* labelMap)
-{
-  return indexLabelsOf(labelMap);
-}
-
-MaskVolume::Pointer cropLabelMask(const itk::Image<std::uint32_t, 3>* labelMap, const LabelExtent& extent)
-{
-  return cropLabelMaskOf(labelMap, extent);
-}
-
-std::vector<LabelExtent> indexLabels(const itk::Image<std::int32_t, 3>* labelMap)
-{
-  return indexLabelsOf(labelMap);
-}
-
-MaskVolume::Pointer cropLabelMask(const itk::Image<std::int32_t, 3>* labelMap, const LabelExtent& extent)
-{
-  return cropLabelMaskOf(labelMap, extent);
-}
+// Every image type a StoredVolume holds.
+#define SLICEMESH_LABEL_INDEX(Pixel)                                                                         \
+  template std::vector<LabelExtent> indexLabels(const itk::Image<Pixel, 3>*);                                \
+  template MaskVolume::Pointer cropLabelMask(const itk::Image<Pixel, 3>*, const LabelExtent&);
+SLICEMESH_LABEL_INDEX(float)
+SLICEMESH_LABEL_INDEX(std::uint8_t)
+SLICEMESH_LABEL_INDEX(std::int8_t)
+SLICEMESH_LABEL_INDEX(std::uint16_t)
+SLICEMESH_LABEL_INDEX(std::int16_t)
+SLICEMESH_LABEL_INDEX(std::uint32_t)
+SLICEMESH_LABEL_INDEX(std::int32_t)
+#undef SLICEMESH_LABEL_INDEX
 
 } // namespace slicemesh

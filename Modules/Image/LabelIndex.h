@@ -20,27 +20,17 @@ struct LabelExtent
 };
 
 /** The non-zero labels of the volume in increasing order, each with its voxel count and index
- *  box. Throws slicemesh::Error when a voxel is not an integer in [0, 2^31) (not a label map). */
-std::vector<LabelExtent> indexLabels(const ScalarVolume* labelMap);
-/** indexLabels on a label map in the pixel type of its file (readStoredVolume). */
-std::vector<LabelExtent> indexLabels(const itk::Image<std::uint8_t, 3>* labelMap);
-std::vector<LabelExtent> indexLabels(const itk::Image<std::int8_t, 3>* labelMap);
-std::vector<LabelExtent> indexLabels(const itk::Image<std::uint16_t, 3>* labelMap);
-std::vector<LabelExtent> indexLabels(const itk::Image<std::int16_t, 3>* labelMap);
-std::vector<LabelExtent> indexLabels(const itk::Image<std::uint32_t, 3>* labelMap);
-std::vector<LabelExtent> indexLabels(const itk::Image<std::int32_t, 3>* labelMap);
+ *  box. Throws slicemesh::Error when a voxel is not an integer in [0, 2^31) (not a label map).
+ *  TImage: ScalarVolume, or a label map in the pixel type of its file (any image of StoredVolume). */
+template <typename TImage>
+std::vector<LabelExtent> indexLabels(const TImage* labelMap);
 
 /** The mask (1 where the voxel equals extent.label) of the label's box: an image whose region
  *  starts at the box's index, with the label map's spacing, origin and direction, so physical
- *  points and Logic's stack frame (sliceFrameOf) place it where it is in the full volume. */
-MaskVolume::Pointer cropLabelMask(const ScalarVolume* labelMap, const LabelExtent& extent);
-/** cropLabelMask on a label map in the pixel type of its file (readStoredVolume). */
-MaskVolume::Pointer cropLabelMask(const itk::Image<std::uint8_t, 3>* labelMap, const LabelExtent& extent);
-MaskVolume::Pointer cropLabelMask(const itk::Image<std::int8_t, 3>* labelMap, const LabelExtent& extent);
-MaskVolume::Pointer cropLabelMask(const itk::Image<std::uint16_t, 3>* labelMap, const LabelExtent& extent);
-MaskVolume::Pointer cropLabelMask(const itk::Image<std::int16_t, 3>* labelMap, const LabelExtent& extent);
-MaskVolume::Pointer cropLabelMask(const itk::Image<std::uint32_t, 3>* labelMap, const LabelExtent& extent);
-MaskVolume::Pointer cropLabelMask(const itk::Image<std::int32_t, 3>* labelMap, const LabelExtent& extent);
+ *  points and Logic's stack frame (sliceFrameOf) place it where it is in the full volume. TImage
+ *  as for indexLabels. */
+template <typename TImage>
+MaskVolume::Pointer cropLabelMask(const TImage* labelMap, const LabelExtent& extent);
 
 } // namespace slicemesh
 
