@@ -119,14 +119,26 @@ char32_t codePoint(const unsigned char* at, std::size_t length)
   return c;
 }
 
-/** Whether a character beyond ASCII may stand in a file name as it is: letters and signs of any
- *  script ("Rückenmark", "肝臓"), but no control, space or formatting character (C1 controls, the
- *  no-break space, zero-width and direction marks, the ideographic space, the byte order mark),
- *  which hide in a listing or reorder how the name reads. */
+/** Characters beyond ASCII that show nothing or break a name: controls, spaces, line and paragraph
+ *  separators and formatting characters (Unicode's Cc, Zs, Zl, Zp and Cf, with the Hangul fillers that
+ *  show as blanks), and the general punctuation block and the specials (the replacement character
+ *  among them). Direction marks and overrides reorder how a name reads in a listing. */
+constexpr char32_t hiddenRanges[][2] = {
+  { 0x80, 0xA0 },       { 0xAD, 0xAD },       { 0x0600, 0x0605 },   { 0x061C, 0x061C },   { 0x06DD, 0x06DD },
+  { 0x070F, 0x070F },   { 0x0890, 0x0891 },   { 0x08E2, 0x08E2 },   { 0x115F, 0x1160 },   { 0x1680, 0x1680 },
+  { 0x180E, 0x180E },   { 0x2000, 0x206F },   { 0x3000, 0x3000 },   { 0x3164, 0x3164 },   { 0xFEFF, 0xFEFF },
+  { 0xFFA0, 0xFFA0 },   { 0xFFF0, 0xFFFF },   { 0x110BD, 0x110BD }, { 0x110CD, 0x110CD }, { 0x13430, 0x1343F },
+  { 0x1BCA0, 0x1BCA3 }, { 0x1D173, 0x1D17A }, { 0xE0000, 0xE007F },
+};
+
+/** Whether a character beyond ASCII may stand in a file name as it is: the letters and signs of any
+ *  script ("Rückenmark", "肝臓"), but none of hiddenRanges. */
 bool keptInFileName(char32_t c)
 {
-  return c > 0xA0 && c != 0xAD && !(c >= 0x2000 && c <= 0x206F) && c != 0x3000 && c != 0xFEFF &&
-         !(c >= 0xFFF0 && c <= 0xFFFF);
+  for (const auto& range : hiddenRanges)
+    if (c >= range[0] && c <= range[1])
+      return false;
+  return true;
 }
 
 } // namespace

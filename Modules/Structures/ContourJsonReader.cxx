@@ -152,6 +152,8 @@ StructureSet readDocument(const std::string& path)
   }
   if (set.structures.empty())
     malformed(path, "rois", "no ROI");
+  markSharedRoiNumbers(set, path, "one number cannot name two meshes, so none of them is meshed",
+                       "one number cannot name two meshes");
   return set;
 }
 

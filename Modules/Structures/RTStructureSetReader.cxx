@@ -244,7 +244,6 @@ StructureSet readWithDcmtk(const std::string& path)
       addFrameOfReference(uid);
   }
   std::map<Sint32, std::size_t> byNumber;
-  std::map<Sint32, std::vector<std::size_t>> declared; // each number's ROIs: more than one is ambiguous
   forEachItem(roiSequence,
               [&](DRTStructureSetROISequence::Item& item)
               {
@@ -261,36 +260,14 @@ StructureSet readWithDcmtk(const std::string& path)
                 if (roi.name.empty())
                   roi.name = "ROI_" + std::to_string(number);
                 byNumber.emplace(number, set.structures.size());
-                declared[number].push_back(set.structures.size());
                 set.structures.push_back(std::move(roi));
               });
   // The ROI Contour Sequence refers to an ROI by number only: where two ROIs share one, no contour
   // can be given to either. Both are listed, and neither gets contours.
-  std::set<Sint32> ambiguous;
-  for (const auto& [number, rois] : declared)
-  {
-    if (rois.size() < 2)
-      continue;
-    ambiguous.insert(number);
-    std::string names;
-    for (std::size_t k = 0; k < rois.size(); ++k)
-    {
-      const char* before = k == 0 ? "" : k + 1 == rois.size() ? " and " : ", ";
-      names += before + ("'" + set.structures[rois[k]].name + "'");
-    }
-    set.notes.push_back("'" + path + "': ROI number " + std::to_string(number) + " is given to " +
-                        std::to_string(rois.size()) + " ROIs, " + names +
-                        ": which contours are whose cannot be told, so none of them is meshed");
-    for (const std::size_t n : rois)
-    {
-      std::string others;
-      for (const std::size_t other : rois)
-        if (other != n)
-          others += std::string(others.empty() ? "" : ", ") + "'" + set.structures[other].name + "'";
-      set.structures[n].unusableBecause = "ROI number " + std::to_string(number) + " is also given to " + others +
-                                          ": which contours are this ROI's cannot be told";
-    }
-  }
+  const std::vector<int> sharedNumbers =
+    markSharedRoiNumbers(set, path, "which contours are whose cannot be told, so none of them is meshed",
+                         "which contours are this ROI's cannot be told");
+  const std::set<Sint32> ambiguous(sharedNumbers.begin(), sharedNumbers.end());
 
   DcmSequenceOfItems* contourSequences = nullptr;
   dataset.findAndGetSequence(DCM_ROIContourSequence, contourSequences);

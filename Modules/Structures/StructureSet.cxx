@@ -3,10 +3,13 @@
 #include "Lowercase.h"
 #include "RTStructureSetPlugin.h"
 
+#include "Core/Utf8.h"
+
 #include <algorithm>
 #include <cctype>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <set>
 
 namespace slicemesh
@@ -67,7 +70,32 @@ StructureSet readRTStructureSet(const std::string& path)
   return rtStructureSetFunctions().read(path);
 }
 
-StructureSet readStructureSet(const std::string& path, ContourFileKind kind)
+namespace
+{
+
+/** The text with each control character (a line break, a tab, a C1 control) and each line or
+ *  paragraph separator as a space: an ROI's name stands on one line in every message and in the
+ *  report, and so does each note that names it. */
+std::string oneLine(const std::string& text)
+{
+  std::string line;
+  const auto* at = reinterpret_cast<const unsigned char*>(text.data());
+  const auto* const end = at + text.size();
+  while (at < end)
+  {
+    const std::size_t length = std::max<std::size_t>(utf8SequenceLength(at, end), 1);
+    const bool control = (length == 1 && (*at < 0x20 || *at == 0x7F)) || (length == 2 && at[0] == 0xC2 && at[1] < 0xA0) ||
+                         (length == 3 && at[0] == 0xE2 && at[1] == 0x80 && (at[2] == 0xA8 || at[2] == 0xA9));
+    if (control)
+      line += ' ';
+    else
+      line.append(reinterpret_cast<const char*>(at), length);
+    at += length;
+  }
+  return line;
+}
+
+StructureSet readOfKind(const std::string& path, ContourFileKind kind)
 {
   if (kind == ContourFileKind::Automatic)
   {
@@ -84,6 +112,54 @@ StructureSet readStructureSet(const std::string& path, ContourFileKind kind)
     case ContourFileKind::Automatic: break;
   }
   return readContourJson(path);
+}
+
+} // namespace
+
+StructureSet readStructureSet(const std::string& path, ContourFileKind kind)
+{
+  StructureSet set = readOfKind(path, kind);
+  for (PlanarStructure& structure : set.structures)
+  {
+    structure.name = oneLine(structure.name);
+    structure.unusableBecause = oneLine(structure.unusableBecause);
+    for (std::string& note : structure.notes)
+      note = oneLine(note);
+  }
+  for (std::string& note : set.notes)
+    note = oneLine(note);
+  return set;
+}
+
+std::vector<int> markSharedRoiNumbers(StructureSet& set, const std::string& path, const std::string& consequence,
+                                      const std::string& reason)
+{
+  std::map<int, std::vector<std::size_t>> byNumber;
+  for (std::size_t n = 0; n < set.structures.size(); ++n)
+    byNumber[set.structures[n].number].push_back(n);
+  std::vector<int> shared;
+  auto quoted = [&](std::size_t n) { return "'" + set.structures[n].name + "'"; };
+  for (const auto& [number, rois] : byNumber)
+  {
+    if (rois.size() < 2)
+      continue;
+    shared.push_back(number);
+    std::string names;
+    for (std::size_t k = 0; k < rois.size(); ++k)
+      names += (k == 0 ? "" : k + 1 == rois.size() ? " and " : ", ") + quoted(rois[k]);
+    set.notes.push_back("'" + path + "': ROI number " + std::to_string(number) + " is given to " +
+                        std::to_string(rois.size()) + " ROIs, " + names + ": " + consequence);
+    for (const std::size_t n : rois)
+    {
+      std::string others;
+      for (const std::size_t other : rois)
+        if (other != n)
+          others += (others.empty() ? "" : ", ") + quoted(other);
+      set.structures[n].contours.clear();
+      set.structures[n].unusableBecause = "ROI number " + std::to_string(number) + " is also given to " + others + ": " + reason;
+    }
+  }
+  return shared;
 }
 
 std::vector<PlanarStructure> chosenStructures(const StructureSet& set, const std::vector<std::string>& wanted)

@@ -67,6 +67,13 @@ StructureSet readRTStructureSet(const std::string& path);
 StructureSet readContourPolyData(const std::string& path);
 StructureSet readContourJson(const std::string& path);
 
+/** Marks the ROIs of `set` that share an ROI number with another as unusable: one note of the file
+ *  (`path`) for each such number, naming its ROIs and the `consequence`; each ROI's unusableBecause
+ *  names the others and the `reason`. Returns the shared numbers. The number is an ROI's identity
+ *  (what --rois picks, the merged model's Label, the prefix of its file), so two ROIs cannot have one. */
+std::vector<int> markSharedRoiNumbers(StructureSet& set, const std::string& path, const std::string& consequence,
+                                      const std::string& reason);
+
 /** The structures whose name or number is in `wanted` (numbers as text), in the set's order; all
  *  when it is empty. Throws Error naming what matches no ROI, and the ROIs there are. */
 std::vector<PlanarStructure> chosenStructures(const StructureSet& set, const std::vector<std::string>& wanted);

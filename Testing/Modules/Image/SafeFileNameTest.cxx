@@ -26,6 +26,10 @@ TEST(SafeFileName, ReplacesEachHiddenOrSeparatingCharacterByOneUnderscore)
   EXPECT_EQ(safeFileName("a\xC2\xA0" "b\xE2\x80\x8B" "c\xE2\x80\xAE" "d\xE3\x80\x80" "e"), "a_b_c_d_e");
   // A C1 control and a byte order mark.
   EXPECT_EQ(safeFileName("\xC2\x85x\xEF\xBB\xBF"), "_x_");
+  // Arabic's letter mark (a direction mark in real Arabic text), the Ogham space, the Mongolian vowel
+  // separator and a tag character.
+  EXPECT_EQ(safeFileName("\xD8\xA7\xD9\x84\xD8\x9C" "a\xE1\x9A\x80" "b\xE1\xA0\x8E" "c\xF3\xA0\x80\xA1"),
+            "\xD8\xA7\xD9\x84_a_b_c_");
 }
 
 TEST(SafeFileName, ReplacesBytesThatAreNotUtf8OneByOne)

@@ -668,6 +668,50 @@ TEST(StructureSetReader, AJsonROIWithContourDataThatIsNoNumberIsUnusableAlone)
   }
 }
 
+TEST(StructureSetReader, JsonROIsThatShareANumberAreNeitherMeshedWithOneNote)
+{
+  // The number names an ROI's mesh (its file, its Label, what --rois picks): two ROIs given one
+  // number wrote one file over the other without a word. The third ROI has no number of its own and
+  // is numbered by its place (3), which the fourth also claims.
+  const fs::path path = folder("json-shared-number") / "contours.json";
+  const std::string slices = R"("slices": [ { "z": 0, "polygons": [ [[0, 0], [4, 0], [4, 4], [0, 4]] ] } ])";
+  writeText(path, R"({ "rois": [ { "number": 7, "name": "A B", )" + slices + R"( }, { "number": 7, "name": "A/B", )" +
+                    slices + R"( }, { "name": "Third", )" + slices + R"( }, { "number": 3, "name": "Fourth", )" + slices +
+                    R"( }, { "number": 9, "name": "Alone", )" + slices + R"( } ] })");
+  const StructureSet set = readStructureSet(path.string());
+  ASSERT_EQ(set.structures.size(), 5u);
+  ASSERT_EQ(set.notes.size(), 2u);
+  EXPECT_NE(set.notes[0].find("ROI number 3 is given to 2 ROIs, 'Third' and 'Fourth'"), std::string::npos) << set.notes[0];
+  EXPECT_NE(set.notes[1].find("ROI number 7 is given to 2 ROIs, 'A B' and 'A/B'"), std::string::npos) << set.notes[1];
+  for (std::size_t n = 0; n < 4; ++n)
+  {
+    EXPECT_TRUE(set.structures[n].contours.empty()) << n;
+    EXPECT_NE(set.structures[n].unusableBecause.find("is also given to"), std::string::npos) << n;
+  }
+  EXPECT_TRUE(set.structures[4].unusableBecause.empty());
+  EXPECT_EQ(set.structures[4].contours.size(), 1u);
+}
+
+TEST(StructureSetReader, AnROINameWithLineBreaksIsReadOnOneLine)
+{
+  // Each message that names an ROI is one line: a line feed, a carriage return, a tab, a C1 control
+  // or a line separator in a name becomes a space, in the name and in the notes that quote it.
+  const fs::path path = folder("json-name-lines") / "contours.json";
+  const std::string slices = R"("slices": [ { "z": 0, "polygons": [ [[0, 0], [4, 0], [4, 4], [0, 4]] ] } ])";
+  writeText(path, R"({ "rois": [ { "number": 2, "name": "B\nsecond\rline\tX\u0085Y\u2028Z", )" + slices +
+                    R"( }, { "number": 2, "name": "C", )" + slices + R"( } ] })");
+  const StructureSet set = readStructureSet(path.string());
+  ASSERT_EQ(set.structures.size(), 2u);
+  EXPECT_EQ(set.structures[0].name, "B second line X Y Z");
+  ASSERT_EQ(set.notes.size(), 1u);
+  // The note names both ROIs, and C's reason names B.
+  for (const std::string& text : { set.notes[0], set.structures[1].unusableBecause })
+  {
+    EXPECT_EQ(text.find_first_of("\n\r\t"), std::string::npos) << text;
+    EXPECT_NE(text.find("B second line X Y Z"), std::string::npos) << text;
+  }
+}
+
 TEST(StructureSetReader, ReadsSlicerPlanarContoursFromLegacyAndXmlPolyData)
 {
   const fs::path dir = folder("polydata");
