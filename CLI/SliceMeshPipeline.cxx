@@ -575,15 +575,25 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   // Said, not removed: the files are the user's, and may be wanted.
   if (structureFiles)
   {
-    std::set<std::string> written; // file names
+    std::set<std::string> written, failed; // file names: of the meshes written, of those that failed
     for (const Structure& s : structures)
       if (s.live())
         written.insert(fs::path(s.report.path).filename().string());
-    const std::vector<fs::path> others =
+      else if (!s.report.error.empty())
+        failed.insert(labelFileName(s, width, output.extension().string()));
+    std::vector<fs::path> others =
       otherStructureFiles(settings.multiLabel.outputDirectory, written, output.extension().string());
-    if (!others.empty())
-      std::cerr << "SliceMesh: warning: '" << settings.multiLabel.outputDirectory << "' also holds " << others.size()
-                << " mesh file(s) this run did not write (first: " << others.front().filename().string()
+    // A file of a structure that failed here is an earlier run's mesh of it, not of another.
+    const auto stale = std::stable_partition(others.begin(), others.end(), [&](const fs::path& file)
+                                             { return failed.count(file.filename().string()) > 0; });
+    const std::string folder = settings.multiLabel.outputDirectory;
+    if (stale != others.begin())
+      std::cerr << "SliceMesh: warning: '" << folder << "' still holds " << (stale - others.begin())
+                << " mesh file(s) of " << noun << "s that failed in this run (first: "
+                << others.front().filename().string() << "): an earlier run's, left as they were" << std::endl;
+    if (stale != others.end())
+      std::cerr << "SliceMesh: warning: '" << folder << "' also holds " << (others.end() - stale)
+                << " mesh file(s) this run did not write (first: " << stale->filename().string()
                 << "): an earlier run's, of other " << noun << "s" << std::endl;
   }
   if (!perLabel)

@@ -125,6 +125,8 @@ StructureSet readDocument(const std::string& path)
         malformed(path, at + ".number", "not an integer");
       structure.number = roi["number"].get<int>();
     }
+    if (roi.contains("name") && !roi["name"].is_string())
+      malformed(path, at + ".name", "not a string");
     structure.name = roi.value("name", std::string("ROI_") + std::to_string(structure.number));
     if (roi.contains("color"))
     {

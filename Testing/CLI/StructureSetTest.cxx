@@ -538,6 +538,37 @@ TEST(StructureSet, ANameInLatin1IsUtf8InTheOutputTheReportAndItsFileName)
   EXPECT_EQ(std::distance(fs::directory_iterator(run.folder / "rois"), fs::directory_iterator()), 1);
 }
 
+TEST(StructureSet, AnEarlierMeshOfAnROIThatFailsNowIsKeptAndSaidToBeItsOwn)
+{
+  // A run whose ROI B fails keeps B's mesh from the run before (nothing the user had is lost) and
+  // says it is an earlier run's mesh of an ROI that failed, not of another ROI.
+  const fs::path folder = freshFolder("StructureSetEarlierFailed");
+  auto writeSet = [&](const std::string& bCoordinate)
+  {
+    std::ofstream(folder / "set.json")
+      << R"({ "rois": [ { "name": "A", "slices": [ { "z": 0, "polygons": [ [[0, 0], [8, 0], [8, 8], [0, 8]] ] },)"
+      << R"( { "z": 2, "polygons": [ [[0, 0], [8, 0], [8, 8], [0, 8]] ] } ] },)"
+      << R"( { "name": "B", "slices": [ { "z": 0, "polygons": [ [[20, 0], [28, 0], [28, 8], [20, )" << bCoordinate
+      << R"(]] ] }, { "z": 2, "polygons": [ [[20, 0], [28, 0], [28, 8], [20, 8]] ] } ] } ] })";
+  };
+  const std::string run = "--outputDirectory " + quoted((folder / "rois").string()) + " " +
+                          quoted((folder / "set.json").string()) + " " + quoted((folder / "all.vtp").string());
+  writeSet("8");
+  ASSERT_EQ(runSliceMesh(run).exitCode, cli::Success);
+  const std::string before = fileText(folder / "rois" / "002_B.vtp");
+  writeSet("\"8\"");
+  const RunResult failed = runSliceMesh(run);
+  EXPECT_EQ(failed.exitCode, cli::MeshingFailed) << failed.err;
+  EXPECT_TRUE(hasLine(failed.err, "error: ROI 2 (B): rois[1].slices[0].polygons[0]: a coordinate is not a number"))
+    << failed.err;
+  EXPECT_NE(failed.err.find("still holds 1 mesh file(s) of ROIs that failed in this run (first: 002_B.vtp)"),
+            std::string::npos)
+    << failed.err;
+  EXPECT_EQ(failed.err.find("of other ROIs"), std::string::npos) << failed.err;
+  EXPECT_EQ(fileText(folder / "rois" / "002_B.vtp"), before);
+  expectValid(folder / "rois" / "001_A.vtp");
+}
+
 TEST(StructureSet, TwoROIsOfOneNumberFailWithOneWarningAndTheOthersAreWritten)
 {
   // Which of the two ROIs numbered 1 a contour of ROI 1 belongs to cannot be told: neither may get
