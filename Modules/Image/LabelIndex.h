@@ -32,6 +32,18 @@ std::vector<LabelExtent> indexLabels(const TImage* labelMap);
 template <typename TImage>
 MaskVolume::Pointer cropLabelMask(const TImage* labelMap, const LabelExtent& extent);
 
+/** The two above for an image held by a smart pointer. */
+template <typename TImage>
+std::vector<LabelExtent> indexLabels(const itk::SmartPointer<TImage>& labelMap)
+{
+  return indexLabels(labelMap.GetPointer());
+}
+template <typename TImage>
+MaskVolume::Pointer cropLabelMask(const itk::SmartPointer<TImage>& labelMap, const LabelExtent& extent)
+{
+  return cropLabelMask(labelMap.GetPointer(), extent);
+}
+
 } // namespace slicemesh
 
 #endif

@@ -81,7 +81,7 @@ LabelFigures meshLabel(const ScalarVolume* labelMap, const LabelExtent& extent)
 void checkEveryLabel(const std::string& path, std::size_t expectedLabels, double volumeTolerance)
 {
   const ScalarVolume::Pointer labelMap = readVolume(path);
-  const std::vector<LabelExtent> extents = indexLabels(labelMap.GetPointer());
+  const std::vector<LabelExtent> extents = indexLabels(labelMap);
   ASSERT_EQ(extents.size(), expectedLabels);
   std::size_t valid = 0, componentsMatch = 0, differ26 = 0, cavities = 0, labelsWithCavities = 0;
   double worstRatio = 1.0, total = 0.0;
@@ -152,13 +152,13 @@ TEST(AtlasLabels, EveryAALLabelFinishedIsValidWithItsTilingsTopology)
   // the vertices around the crossings go back to their remeshed positions (checked at the end;
   // measured 45 vertices; with 100 pairs and no bound it no longer crosses).
   const ScalarVolume::Pointer labelMap = readVolume(mricronTemplates + "aal.nii.gz");
-  const std::vector<LabelExtent> extents = indexLabels(labelMap.GetPointer());
+  const std::vector<LabelExtent> extents = indexLabels(labelMap);
   ASSERT_EQ(extents.size(), 116u);
   std::size_t remeshed = 0, repaired = 0, triangles = 0, below30 = 0;
   double smallest = 180.0, worstVolume = 0.0;
   for (const LabelExtent& extent : extents)
   {
-    const MaskVolume::Pointer mask = cropLabelMask(labelMap.GetPointer(), extent);
+    const MaskVolume::Pointer mask = cropLabelMask(labelMap, extent);
     const TriangleMesh tiling = reconstructSurface(extractContours(mask));
     const MeshValidation tiled = validateMesh(tiling);
     const auto spacing = mask->GetSpacing();
@@ -183,7 +183,7 @@ TEST(AtlasLabels, EveryAALLabelFinishedIsValidWithItsTilingsTopology)
   {
     const auto extent = std::find_if(extents.begin(), extents.end(), [&](const LabelExtent& e) { return e.label == label; });
     ASSERT_NE(extent, extents.end());
-    const MaskVolume::Pointer mask = cropLabelMask(labelMap.GetPointer(), *extent);
+    const MaskVolume::Pointer mask = cropLabelMask(labelMap, *extent);
     const TriangleMesh tiling = reconstructSurface(extractContours(mask));
     const MeshValidation tiled = validateMesh(tiling);
     SurfaceFinishingOptions unbounded = finishingOptionsFor({ 1.0, 1.0, 1.0 });

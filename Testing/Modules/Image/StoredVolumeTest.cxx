@@ -162,7 +162,7 @@ TEST_F(StoredVolumeTest, LabelsAboveOneByteGiveTheBoxesAndMasksOfFloat)
   const ScalarVolume::Pointer asFloat = readVolume(path("labels.nrrd"));
 
   const std::vector<LabelExtent> extents = indexLabels(labelMap);
-  const std::vector<LabelExtent> floatExtents = indexLabels(asFloat.GetPointer());
+  const std::vector<LabelExtent> floatExtents = indexLabels(asFloat);
   ASSERT_EQ(extents.size(), 3u);
   ASSERT_EQ(floatExtents.size(), 3u);
   const int expectedLabels[] = { 300, 1000, 40000 };
@@ -177,7 +177,7 @@ TEST_F(StoredVolumeTest, LabelsAboveOneByteGiveTheBoxesAndMasksOfFloat)
     EXPECT_EQ(extents[n].lower, floatExtents[n].lower);
     EXPECT_EQ(extents[n].upper, floatExtents[n].upper);
     const MaskVolume::Pointer mask = cropLabelMask(labelMap, extents[n]);
-    EXPECT_TRUE(sameMask(mask, cropLabelMask(asFloat.GetPointer(), floatExtents[n])));
+    EXPECT_TRUE(sameMask(mask, cropLabelMask(asFloat, floatExtents[n])));
     std::size_t inside = 0;
     for (std::size_t v = 0; v < mask->GetBufferedRegion().GetNumberOfPixels(); ++v)
       inside += mask->GetBufferPointer()[v];
