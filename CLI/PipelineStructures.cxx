@@ -146,7 +146,7 @@ std::vector<LabelSource> segmentSources(const SegmentationFile& file, const std:
   {
     try
     {
-      layerExtents.push_back(indexLabels(layer.GetPointer()));
+      layerExtents.push_back(indexLabels(layer));
     }
     catch (const std::exception& e)
     {

@@ -16,35 +16,31 @@ namespace slicemesh::cli
 std::string jsonString(const std::string& text)
 {
   std::string out = "\"";
-  const auto* at = reinterpret_cast<const unsigned char*>(text.data());
-  const auto* const end = at + text.size();
-  while (at < end)
-  {
-    const unsigned char c = *at;
-    switch (c)
-    {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (c < 0x20)
-        {
-          char buffer[8];
-          std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
-          out += buffer;
-        }
-        else if (const std::size_t length = utf8SequenceLength(at, end); length > 0)
-        {
-          out.append(reinterpret_cast<const char*>(at), length);
-          at += length;
-          continue;
-        }
-        else // JSON is UTF-8: a byte that starts no valid sequence (text in another encoding) becomes U+FFFD
-          out += "\xEF\xBF\xBD";
-    }
-    ++at;
-  }
+  forEachCharacter(text,
+                   [&](const Utf8Character& c)
+                   {
+                     if (!c.wellFormed) // JSON is UTF-8: a byte of text in another encoding becomes U+FFFD
+                       out += "\xEF\xBF\xBD";
+                     else if (c.length > 1)
+                       out.append(c.bytes, c.length);
+                     else if (c.codePoint == '"')
+                       out += "\\\"";
+                     else if (c.codePoint == '\\')
+                       out += "\\\\";
+                     else if (c.codePoint == '\n')
+                       out += "\\n";
+                     else if (c.codePoint == '\t')
+                       out += "\\t";
+                     else if (c.codePoint < 0x20)
+                     {
+                       char buffer[8];
+                       std::snprintf(buffer, sizeof buffer, "\\u%04x", static_cast<unsigned>(c.codePoint));
+                       out += buffer;
+                     }
+                     else
+                       out += *c.bytes;
+                     return true;
+                   });
   return out + "\"";
 }
 

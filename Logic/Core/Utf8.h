@@ -36,19 +36,48 @@ inline std::size_t utf8SequenceLength(const unsigned char* at, const unsigned ch
   return length;
 }
 
-/** Whether the whole text is well-formed UTF-8 (utf8SequenceLength). */
-inline bool isUtf8(const std::string& text)
+/** One character of a text as forEachCharacter gives it: its bytes and, where they are well-formed
+ *  UTF-8, its code point. A byte that starts no well-formed sequence is a character of its own. */
+struct Utf8Character
 {
+  const char* bytes = nullptr;
+  std::size_t length = 0;  ///< bytes, 1 to 4
+  bool wellFormed = false; ///< utf8SequenceLength accepts it
+  char32_t codePoint = 0;  ///< 0 where not wellFormed
+};
+
+/** Calls visit(character) for each character of the text in order, as long as visit returns true. */
+template <typename Visit>
+void forEachCharacter(const std::string& text, Visit visit)
+{
+  static constexpr unsigned char leadBits[5] = { 0, 0x7F, 0x1F, 0x0F, 0x07 };
   const auto* at = reinterpret_cast<const unsigned char*>(text.data());
   const auto* const end = at + text.size();
   while (at < end)
   {
-    const std::size_t length = utf8SequenceLength(at, end);
-    if (length == 0)
-      return false;
-    at += length;
+    Utf8Character character;
+    character.bytes = reinterpret_cast<const char*>(at);
+    const std::size_t sequence = utf8SequenceLength(at, end);
+    character.wellFormed = sequence > 0;
+    character.length = character.wellFormed ? sequence : 1;
+    if (character.wellFormed)
+    {
+      character.codePoint = at[0] & leadBits[sequence];
+      for (std::size_t k = 1; k < sequence; ++k)
+        character.codePoint = (character.codePoint << 6) | (at[k] & 0x3F);
+    }
+    if (!visit(character))
+      return;
+    at += character.length;
   }
-  return true;
+}
+
+/** Whether the whole text is well-formed UTF-8 (utf8SequenceLength). */
+inline bool isUtf8(const std::string& text)
+{
+  bool wellFormed = true;
+  forEachCharacter(text, [&](const Utf8Character& c) { return wellFormed = c.wellFormed; });
+  return wellFormed;
 }
 
 } // namespace slicemesh

@@ -4,7 +4,6 @@
 #include "Core/SliceMeshTypes.h"
 #include "Core/Utf8.h"
 
-#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -109,16 +108,6 @@ std::array<unsigned char, 4> ColorTable::generatedColor(int label)
 namespace
 {
 
-/** The code point of the well-formed UTF-8 sequence of `length` bytes at `at`. */
-char32_t codePoint(const unsigned char* at, std::size_t length)
-{
-  static const unsigned char leadBits[5] = { 0, 0x7F, 0x1F, 0x0F, 0x07 };
-  char32_t c = at[0] & leadBits[length];
-  for (std::size_t k = 1; k < length; ++k)
-    c = (c << 6) | (at[k] & 0x3F);
-  return c;
-}
-
 /** Characters beyond ASCII that show nothing or break a name: controls, spaces, line and paragraph
  *  separators and formatting characters (Unicode's Cc, Zs, Zl, Zp and Cf, with the Hangul fillers that
  *  show as blanks), and the general punctuation block and the specials (the replacement character
@@ -146,27 +135,25 @@ bool keptInFileName(char32_t c)
 std::string safeFileName(const std::string& name)
 {
   std::string safe;
-  const auto* at = reinterpret_cast<const unsigned char*>(name.data());
-  const auto* const end = at + name.size();
-  while (at < end)
-  {
-    // One '_' for each character that is not kept (a stray byte is one character).
-    const std::size_t length = std::max<std::size_t>(utf8SequenceLength(at, end), 1);
-    const unsigned char c = *at;
-    const bool kept = length == 1 ? (c < 0x80 && (std::isalnum(c) || c == '-' || c == '_' || c == '.'))
-                                  : keptInFileName(codePoint(at, length));
-    // A file name holds at most 255 bytes: a longer segment or label name (a sentence pasted into
-    // Slicer's name field) made the whole run fail to write its file, after the others were written.
-    // Cut between characters, never inside one.
-    const std::size_t bytes = kept ? length : 1;
-    if (safe.size() + bytes > maxSafeFileNameLength)
-      break;
-    if (kept)
-      safe.append(reinterpret_cast<const char*>(at), length);
-    else
-      safe += '_';
-    at += length;
-  }
+  forEachCharacter(name,
+                   [&](const Utf8Character& c)
+                   {
+                     // One '_' for each character that is not kept (a stray byte is one character).
+                     const auto ascii = static_cast<unsigned char>(c.codePoint);
+                     const bool kept = c.wellFormed && (c.length == 1 ? std::isalnum(ascii) || ascii == '-' ||
+                                                                          ascii == '_' || ascii == '.'
+                                                                      : keptInFileName(c.codePoint));
+                     // A file name holds at most 255 bytes: a longer segment or label name (a sentence
+                     // pasted into Slicer's name field) made the whole run fail to write its file, after
+                     // the others were written. Cut between characters, never inside one.
+                     if (safe.size() + (kept ? c.length : 1) > maxSafeFileNameLength)
+                       return false;
+                     if (kept)
+                       safe.append(c.bytes, c.length);
+                     else
+                       safe += '_';
+                     return true;
+                   });
   return safe.empty() ? std::string("unnamed") : safe;
 }
 

@@ -79,19 +79,18 @@ namespace
 std::string oneLine(const std::string& text)
 {
   std::string line;
-  const auto* at = reinterpret_cast<const unsigned char*>(text.data());
-  const auto* const end = at + text.size();
-  while (at < end)
-  {
-    const std::size_t length = std::max<std::size_t>(utf8SequenceLength(at, end), 1);
-    const bool control = (length == 1 && (*at < 0x20 || *at == 0x7F)) || (length == 2 && at[0] == 0xC2 && at[1] < 0xA0) ||
-                         (length == 3 && at[0] == 0xE2 && at[1] == 0x80 && (at[2] == 0xA8 || at[2] == 0xA9));
-    if (control)
-      line += ' ';
-    else
-      line.append(reinterpret_cast<const char*>(at), length);
-    at += length;
-  }
+  forEachCharacter(text,
+                   [&](const Utf8Character& c)
+                   {
+                     const char32_t code = c.codePoint;
+                     const bool control = c.wellFormed && (code < 0x20 || (code >= 0x7F && code < 0xA0) ||
+                                                           code == 0x2028 || code == 0x2029);
+                     if (control)
+                       line += ' ';
+                     else
+                       line.append(c.bytes, c.length);
+                     return true;
+                   });
   return line;
 }
 
