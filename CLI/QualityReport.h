@@ -45,7 +45,7 @@ struct RunQuality
   std::string fallback;          ///< why less was applied than asked (SurfaceFinishing.h); empty when all of it was
   std::size_t smallPiecesRemeshed = 0; ///< specks remeshed at their own scale (FinishedSurface::smallPiecesRemeshed)
   std::size_t smallPiecesAsTiled = 0; ///< specks left as tiled (FinishedSurface::smallPiecesAsTiled)
-  std::size_t unsmoothedVertices = 0; ///< left at their remeshed positions where smoothing made triangles cross
+  std::size_t unsmoothedVertices = 0; ///< where smoothing made triangles cross, or a piece crossed another (FinishedSurface)
   /** Of remeshed pieces, kept as tiled where their remesh crossed itself or another piece. */
   std::size_t trianglesKeptTiled = 0;
   /** Flips, collapses and vertex moves that undid a remesh's few crossings without a second remesh

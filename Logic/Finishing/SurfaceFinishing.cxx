@@ -8,6 +8,7 @@
 #include "Finishing/PieceRejection.h"
 #include "Finishing/PieceTargetVolumes.h"
 #include "Finishing/PutBackVertices.h"
+#include "Measures/ClosestPointGrid.h"
 #include "Measures/ComponentOrientation.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/MeshCrossings.h"
@@ -149,6 +150,9 @@ struct FinishedPiece
   std::vector<Point3> crossedAt;
   std::size_t crossingRepairOperations = 0; ///< of the repair that undid its crossings (repairedLocally)
   std::size_t narrowTrianglesWidened = 0;   ///< operations that widened its narrow triangles at the end
+  /** Whether it crossed another piece once already: laid onto its tiled surface there (or remeshed
+   *  around those places after that failed). */
+  bool laidBack = false;
 };
 
 /** The validation of a piece of the tiling as it was tiled, without its self-intersection test:
@@ -422,9 +426,10 @@ FinishedPiece finishedSpeck(const TriangleMesh& tiled, const MeshValidation& ref
   return keptAsTiled(tiled, reference, SurfaceFinish::Tiled, {});
 }
 
-/** Rounds in which the pieces that cross other pieces once finished are remeshed again around the
- *  places where they cross, before those still crossing go back to their tiled shape. */
-constexpr int roundsRemeshedAround = 3;
+/** Rounds in which the pieces that cross other pieces once finished are laid onto their tiled
+ *  surface where they cross (the first), then remeshed again around those places (three more),
+ *  before those still crossing go back to their tiled shape. */
+constexpr int roundsRemeshedAround = 4;
 
 /** Rounds, after those, in which the pieces still crossing go back to their tiled shape. A valid
  *  tiling's pieces do not cross, so one round does it; pieces of a tiling that crosses itself (its
@@ -455,8 +460,48 @@ std::map<std::size_t, std::vector<Point3>> crossingPlacesByPiece(const std::vect
   return places;
 }
 
+/** A remeshed piece that crossed another one at `places`, its vertices within `radius` of them laid
+ *  onto its tiled surface (the closest point), where the remesh had put them before the smoothing
+ *  and the volume offset moved them towards the other piece, whose tiled surface a valid tiling
+ *  keeps apart; the piece's other vertices then give it its `volume` back, as after the first
+ *  smoothing. Whether the piece is still a valid surface of its tiled topology (`reference`); else
+ *  it is left as it was. Whether it still crosses the other piece, the next round tells. On a brain
+ *  atlas whose labels come in thousands of pieces, each large piece beside a one-voxel speck was
+ *  remeshed whole again for it. */
+bool laidOntoTiled(FinishedPiece& piece, const TriangleMesh& tiled, const MeshValidation& reference,
+                   const std::vector<Point3>& places, const SurfaceFinishingOptions& options, double volume,
+                   unsigned int threads)
+{
+  const std::vector<char> near = verticesNear(piece.mesh, places, keptRadius(options));
+  const std::vector<Point3> before = piece.mesh.points;
+  const ClosestPointGrid onTiled(tiled);
+  std::vector<char> fixed = heldVertices(piece.mesh, options);
+  fixed.resize(near.size(), 0);
+  std::size_t laid = 0;
+  for (std::size_t v = 0; v < near.size(); ++v)
+    if (near[v])
+    {
+      Point3& p = piece.mesh.points[v];
+      const ClosestPointGrid::Point q = onTiled.closestPoint(ClosestPointGrid::Point(p.x, p.y, p.z));
+      p = Point3{ q.x(), q.y(), q.z() };
+      fixed[v] = 1;
+      ++laid;
+    }
+  offsetToVolume(piece.mesh, volume, fixed, heldOffset(options), threads);
+  const MeshValidation validation = validateMesh(piece.mesh);
+  if (!rejection(validation, reference).empty())
+  {
+    piece.mesh.points = before;
+    return false;
+  }
+  piece.validation = validation;
+  piece.unsmoothedVertices += laid;
+  return true;
+}
+
 /** A finished piece that crossed another one at `places`, finished again: if it was remeshed and
- *  `remeshAgain`, remeshed around those places besides the ones it was remeshed around already
+ *  `remeshAgain`, the first time laid onto its tiled surface there (laidOntoTiled), after that
+ *  remeshed around those places besides the ones it was remeshed around already
  *  (KeptPlaces::crossedOthers); if that gives no valid surface, or else, put back to its tiled shape,
  *  which a valid tiling keeps apart from the other pieces. (A piece smoothed only could not be
  *  remeshed at all: around a few more places would not change that.) `tiled` and `reference`: the
@@ -466,6 +511,12 @@ FinishedPiece finishedAgainAround(FinishedPiece piece, const TriangleMesh& tiled
                                   const std::vector<Point3>& places, bool remeshAgain)
 {
   const SurfaceFinishingOptions options = optionsForPiece(asked, tiled);
+  if (remeshAgain && piece.finish == SurfaceFinish::Remeshed && !piece.laidBack)
+  {
+    piece.laidBack = true;
+    if (laidOntoTiled(piece, tiled, reference, places, options, volume, threads))
+      return piece;
+  }
   if (remeshAgain && piece.finish == SurfaceFinish::Remeshed)
   {
     KeptPlaces around = std::move(piece.kept);
@@ -473,7 +524,10 @@ FinishedPiece finishedAgainAround(FinishedPiece piece, const TriangleMesh& tiled
     piece = FinishedPiece(); // not held beside the new remesh
     std::optional<FinishedPiece> again = remeshedAround(tiled, reference, options, volume, threads, std::move(around));
     if (again)
+    {
+      again->laidBack = true;
       return std::move(*again);
+    }
   }
   return keptAsTiled(tiled, reference, SurfaceFinish::Tiled, "it crossed another piece once finished");
 }
@@ -609,10 +663,11 @@ FinishedSurface finishSurface(const TriangleMesh& tiling, const MeshValidation& 
                   pieces[p] = finishPiece(*tiledPieces[p], tiledValidations[p], options, volumeScales[p], threads);
               });
 
-  // Pieces that cross each other once finished are remeshed again with their tiled triangles kept
-  // around the places where they cross, as a piece whose remesh crosses itself is (pieces of one
-  // label a voxel apart are two sheets of one structure), and checked again; those still crossing
-  // after roundsRemeshedAround rounds go back to their tiled shape.
+  // Pieces that cross each other once finished are laid onto their tiled surface where they cross,
+  // then, if they still cross, remeshed again with their tiled triangles kept around those places,
+  // as a piece whose remesh crosses itself is (pieces of one label a voxel apart are two sheets of
+  // one structure), and checked again; those still crossing after roundsRemeshedAround rounds go
+  // back to their tiled shape.
   const std::size_t crossingTriangles = separatePieces(
     pieces, speck, threads,
     [&](std::size_t p, const std::vector<Point3>& places, int round)

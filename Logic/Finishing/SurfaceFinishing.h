@@ -44,7 +44,8 @@ struct FinishedSurface
   SurfaceFinish finish = SurfaceFinish::Tiled;
   std::string fallback; ///< why less was applied than asked, and to how many pieces; empty when all of it was
   /** Vertices left unsmoothed (where the remesh put them, or the tiling for a piece smoothed only)
-   *  because smoothing made triangles near them cross (two sheets a voxel or two apart). */
+   *  because smoothing made triangles near them cross (two sheets a voxel or two apart), or laid
+   *  back onto the tiled surface where a finished piece crossed another. */
   std::size_t unsmoothedVertices = 0;
   /** Specks: pieces with less area than 48 equilateral triangles of the target edge (a few voxels),
    *  which the target edge would collapse. When a remesh is asked each is remeshed at its own
@@ -56,8 +57,9 @@ struct FinishedSurface
   std::size_t smallPiecesRemeshed = 0;
   std::size_t smallPiecesAsTiled = 0;
   /** Triangles of remeshed pieces kept as tiled: around the places where a piece's remesh crossed
-   *  itself (two sheets closer than the target edge) or, once finished, crossed another piece, the
-   *  piece remeshed again around them. */
+   *  itself (two sheets closer than the target edge) or, once finished, crossed another piece (and
+   *  still did with its vertices there laid back onto the tiling), the piece remeshed again around
+   *  them. */
   std::size_t trianglesKeptTiled = 0;
   /** Edge flips and collapses and vertex moves (CrossingRepair) that undid the few places where a
    *  remesh crossed itself (a fold where two voxels touch along an edge, a chord through a gap a
