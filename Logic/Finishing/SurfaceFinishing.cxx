@@ -496,6 +496,9 @@ bool laidOntoTiled(FinishedPiece& piece, const TriangleMesh& tiled, const MeshVa
   }
   piece.validation = validation;
   piece.unsmoothedVertices += laid;
+  // Laid back, a remesh's triangles can be narrow again where the tiling bends.
+  piece.narrowTrianglesWidened += widenNarrowTriangles(piece.mesh, piece.validation, heldVertices(piece.mesh, options),
+                                                       options.remeshing.targetEdgeLength);
   return true;
 }
 
