@@ -19,13 +19,16 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <optional>
+#include <set>
 #include <sstream>
+#include <vector>
 
 namespace slicemesh
 {
@@ -183,9 +186,73 @@ bool endsWith(const std::string& text, const std::string& suffix)
   return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+/** A MetaImage header's "ElementDataFile = LIST [kD]" names one file per k-D block, a line each after
+ *  it: as many as the sizes beyond the first k (k = NDims - 1 unless given) make, each of which must
+ *  exist. MetaIO reads a shorter list without complaint and leaves the rest of the volume as
+ *  whatever memory held. `header`: the lines of the .mhd file; `at`: the LIST line's index. */
+void checkMetaImageList(const std::string& path, const std::vector<std::string>& header, std::size_t at)
+{
+  int dimensions = 0;
+  std::vector<double> sizes;
+  for (std::size_t i = 0; i < at; ++i)
+  {
+    const std::string& line = header[i];
+    const std::size_t equals = line.find('=');
+    if (equals == std::string::npos)
+      continue;
+    std::string key = line.substr(0, equals);
+    key.erase(key.find_last_not_of(" \t") + 1);
+    std::istringstream values(line.substr(equals + 1));
+    if (key == "NDims")
+      values >> dimensions;
+    else if (key == "DimSize")
+      for (double size; values >> size;)
+        sizes.push_back(size);
+  }
+  std::istringstream list(header[at].substr(header[at].find("LIST") + 4));
+  int blockDimensions = dimensions - 1;
+  std::string given;
+  if (list >> given && given.size() >= 2 && (given.back() == 'D' || given.back() == 'd'))
+    blockDimensions = std::atoi(given.c_str());
+  if (dimensions < 1 || static_cast<int>(sizes.size()) < dimensions || blockDimensions < 1 || blockDimensions > dimensions)
+    return; // MetaIO says what is wrong with the header
+  double expected = 1.0;
+  for (int axis = blockDimensions; axis < dimensions; ++axis)
+    expected *= sizes[static_cast<std::size_t>(axis)];
+  std::vector<std::string> files;
+  for (std::size_t i = at + 1; i < header.size(); ++i)
+  {
+    std::string name = header[i];
+    name.erase(0, name.find_first_not_of(" \t"));
+    name.erase(name.find_last_not_of(" \t") + 1);
+    if (!name.empty())
+      files.push_back(name);
+  }
+  if (static_cast<double>(files.size()) < expected)
+  {
+    std::ostringstream message;
+    message << path << ": its ElementDataFile LIST names " << files.size() << " files where its sizes need "
+            << std::fixed << std::setprecision(0) << expected;
+    throw Error(message.str());
+  }
+  for (const std::string& name : files)
+  {
+    const std::filesystem::path data = std::filesystem::path(name).is_absolute()
+                                         ? std::filesystem::path(name)
+                                         : std::filesystem::path(path).parent_path() / name;
+    if (!std::filesystem::exists(data))
+      throw Error(path + ": its voxels are partly in '" + name + "', which does not exist (" + data.string() + ")");
+  }
+}
+
+bool isNiftiName(const std::string& path)
+{
+  return endsWith(path, ".nii") || endsWith(path, ".nii.gz") || endsWith(path, ".NII") || endsWith(path, ".NII.GZ");
+}
+
 /** A detached header's (MetaImage .mhd, NRRD .nhdr) data file, when it names one file, must exist:
- *  the readers' own message names the header as the file that "cannot be read". Lists, patterns
- *  and LOCAL data are left to the readers. */
+ *  the readers' own message names the header as the file that "cannot be read". A MetaImage list
+ *  is checked by checkMetaImageList; NRRD's lists, patterns and LOCAL data are left to the readers. */
 void checkDetachedDataFile(const std::string& path)
 {
   std::string lower = path;
@@ -194,10 +261,16 @@ void checkDetachedDataFile(const std::string& path)
   if (!meta && !nrrd)
     return;
   std::ifstream in(path);
+  std::vector<std::string> header;
   for (std::string line; std::getline(in, line);)
   {
     if (!line.empty() && line.back() == '\r')
       line.pop_back();
+    header.push_back(line);
+  }
+  for (std::size_t at = 0; at < header.size(); ++at)
+  {
+    const std::string& line = header[at];
     std::string named;
     if (meta && line.rfind("ElementDataFile", 0) == 0 && line.find('=') != std::string::npos)
       named = line.substr(line.find('=') + 1);
@@ -207,6 +280,8 @@ void checkDetachedDataFile(const std::string& path)
       continue;
     named.erase(0, named.find_first_not_of(" \t"));
     named.erase(named.find_last_not_of(" \t") + 1);
+    if (meta && named.rfind("LIST", 0) == 0)
+      return checkMetaImageList(path, header, at);
     if (named.empty() || named == "LOCAL" || named.rfind("LIST", 0) == 0 || named.find(' ') != std::string::npos ||
         named.find('%') != std::string::npos)
       return;
@@ -246,6 +321,9 @@ struct Nifti1Header
   std::int16_t bitpix = 0;   ///< bits per stored voxel, before any scl_slope / scl_inter scaling
   std::array<float, 8> pixdim{};
   float voxOffset = 0.0f;    ///< where the voxels start
+  std::int16_t qformCode = 0, sformCode = 0;
+  std::array<float, 6> quaternion{}; ///< quatern_b, c, d, then qoffset_x, y, z
+  std::array<float, 12> sform{};     ///< srow_x, srow_y, srow_z
 };
 
 std::optional<Nifti1Header> readNifti1Header(const std::string& path)
@@ -286,6 +364,12 @@ std::optional<Nifti1Header> readNifti1Header(const std::string& path)
   }
   std::memcpy(&header.bitpix, field(72, 2, swap).data(), 2);
   std::memcpy(&header.voxOffset, field(108, 4, swap).data(), 4);
+  std::memcpy(&header.qformCode, field(252, 2, swap).data(), 2);
+  std::memcpy(&header.sformCode, field(254, 2, swap).data(), 2);
+  for (int i = 0; i < 6; ++i)
+    std::memcpy(&header.quaternion[static_cast<std::size_t>(i)], field(256 + 4 * i, 4, swap).data(), 4);
+  for (int i = 0; i < 12; ++i)
+    std::memcpy(&header.sform[static_cast<std::size_t>(i)], field(280 + 4 * i, 4, swap).data(), 4);
   return header;
 }
 
@@ -342,38 +426,100 @@ void checkNiftiSpacing(const std::string& path, const std::optional<Nifti1Header
   }
 }
 
-/** GDCM aborts the process (a failed assertion) on a DICOM file cut off inside or just after its
- *  File Meta Information, before ITK could report anything: such a file is refused here. The meta
- *  group's length is its first element, (0002,0000) UL, after the 128-byte preamble and "DICM"; the
- *  file must hold the group and at least one element of the data set after it. */
+/** The orientation a NIfTI-1 header's codes put in use (the quaternion and offset when qform_code
+ *  is set, the affine rows when sform_code is), and where its voxels start, must be finite: ITK
+ *  aborts the process on a NaN or infinite affine (an assertion in its decomposition), takes a NaN
+ *  offset for 0 and reads a negative vox_offset bytes before the voxels. `header`: the file's
+ *  (readNifti1Header; empty for another file). */
+void checkNiftiOrientation(const std::string& path, const std::optional<Nifti1Header>& header)
+{
+  if (!header)
+    return;
+  const auto finite = [](const auto& values) {
+    return std::all_of(values.begin(), values.end(), [](float v) { return std::isfinite(v); });
+  };
+  if (header->qformCode > 0 && !finite(header->quaternion))
+    throw Error(path + ": the NIfTI header's quaternion orientation (qform) holds a value that is not a finite number");
+  if (header->sformCode > 0 && !finite(header->sform))
+    throw Error(path + ": the NIfTI header's affine orientation (sform) holds a value that is not a finite number");
+  if (!std::isfinite(header->voxOffset) || header->voxOffset < 0.0f)
+    throw Error(path + ": the NIfTI header's vox_offset (where the voxels start) is not a non-negative number");
+}
+
+/** GDCM aborts the process (a failed assertion) on a DICOM file whose File Meta Information is cut
+ *  off, names a value representation that does not exist, or gives an element a length beyond the
+ *  file, before ITK could report anything: such a file is refused here. The meta group (0002,xxxx)
+ *  follows the 128-byte preamble and "DICM", always in explicit VR little endian; the file must hold
+ *  it and at least one element of the data set after it. */
 void checkDicomFileMeta(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
-  std::array<unsigned char, 144> head{};
-  in.read(reinterpret_cast<char*>(head.data()), static_cast<std::streamsize>(head.size()));
-  const std::streamsize read = in.gcount();
-  if (read < 132 || std::memcmp(head.data() + 128, "DICM", 4) != 0)
+  std::array<unsigned char, 132> preamble{};
+  in.read(reinterpret_cast<char*>(preamble.data()), static_cast<std::streamsize>(preamble.size()));
+  if (in.gcount() < 132 || std::memcmp(preamble.data() + 128, "DICM", 4) != 0)
     return; // not a DICOM file with a preamble
   std::error_code error;
   const auto fileSize = std::filesystem::file_size(path, error);
   if (error)
     return;
-  const bool groupLengthFirst = read == 144 && head[132] == 0x02 && head[133] == 0 && head[134] == 0 && head[135] == 0 &&
-                                head[136] == 'U' && head[137] == 'L';
-  const std::uint64_t groupLength =
-    groupLengthFirst ? static_cast<std::uint64_t>(head[140]) | static_cast<std::uint64_t>(head[141]) << 8 |
-                         static_cast<std::uint64_t>(head[142]) << 16 | static_cast<std::uint64_t>(head[143]) << 24
-                     : 0;
-  const std::uint64_t needed = 144 + groupLength + 8;
-  if (fileSize < needed)
-    throw Error(path + ": a truncated DICOM file (" + std::to_string(fileSize) + " bytes; its header needs at least " +
-                std::to_string(needed) + ")");
+  const auto damaged = [&](const std::string& why) {
+    return Error(path + ": a damaged DICOM file (" + why + ")");
+  };
+  // Value representations whose length takes 4 bytes after 2 reserved ones; the others take 2.
+  static const std::set<std::string> longLength = { "OB", "OD", "OF", "OL", "OV", "OW", "SQ", "SV", "UC", "UN", "UR", "UT", "UV" };
+  static const std::set<std::string> shortLength = { "AE", "AS", "AT", "CS", "DA", "DS", "DT", "FD", "FL", "IS",
+                                                     "LO", "LT", "PN", "SH", "SL", "SS", "ST", "TM", "UI", "UL", "US" };
+  std::uint64_t at = 132;
+  for (;;)
+  {
+    std::array<unsigned char, 12> element{};
+    in.read(reinterpret_cast<char*>(element.data()), 8);
+    if (in.gcount() < 8)
+      throw Error(path + ": a truncated DICOM file (" + std::to_string(fileSize) + " bytes, cut off in its File Meta Information)");
+    if (element[0] != 0x02 || element[1] != 0x00)
+      return; // the data set begins
+    const std::string vr(reinterpret_cast<const char*>(element.data()) + 4, 2);
+    std::uint64_t length = 0;
+    std::uint64_t value = at + 8;
+    if (longLength.count(vr))
+    {
+      in.read(reinterpret_cast<char*>(element.data()) + 8, 4);
+      if (in.gcount() < 4)
+        throw Error(path + ": a truncated DICOM file (" + std::to_string(fileSize) + " bytes, cut off in its File Meta Information)");
+      length = static_cast<std::uint64_t>(element[8]) | static_cast<std::uint64_t>(element[9]) << 8 |
+               static_cast<std::uint64_t>(element[10]) << 16 | static_cast<std::uint64_t>(element[11]) << 24;
+      value = at + 12;
+    }
+    else if (shortLength.count(vr))
+      length = static_cast<std::uint64_t>(element[6]) | static_cast<std::uint64_t>(element[7]) << 8;
+    else
+      throw damaged("its File Meta Information names the value representation '" + oneLine(vr) + "', which does not exist");
+    // One element of the data set at least (8 bytes) follows the meta group.
+    if (length == 0xFFFFFFFFu || value + length + 8 > fileSize)
+      throw Error(path + ": a truncated DICOM file (" + std::to_string(fileSize) +
+                  " bytes; an element of its File Meta Information needs " + std::to_string(value + length + 8) + ")");
+    // The group's length, (0002,0000) UL, promises where the data set begins.
+    if (element[2] == 0x00 && element[3] == 0x00 && vr == "UL" && length == 4)
+    {
+      std::array<unsigned char, 4> bytes{};
+      in.read(reinterpret_cast<char*>(bytes.data()), 4);
+      const std::uint64_t groupEnd = value + 4 + (static_cast<std::uint64_t>(bytes[0]) | static_cast<std::uint64_t>(bytes[1]) << 8 |
+                                                  static_cast<std::uint64_t>(bytes[2]) << 16 | static_cast<std::uint64_t>(bytes[3]) << 24);
+      if (groupEnd + 8 > fileSize)
+        throw Error(path + ": a truncated DICOM file (" + std::to_string(fileSize) + " bytes; its header needs at least " +
+                    std::to_string(groupEnd + 8) + ")");
+    }
+    at = value + length;
+    in.seekg(static_cast<std::streamoff>(at));
+  }
 }
 
 /** The header of an image file through the ImageIO ITK picks for it. */
 itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
 {
   checkDicomFileMeta(path);
+  if (isNiftiName(path))
+    checkNiftiOrientation(path, readNifti1Header(path));
   constexpr auto reading = itk::ImageIOFactory::FileModeEnum::ReadMode;
   itk::ImageIOBase::Pointer io = itk::ImageIOFactory::CreateImageIO(path.c_str(), reading);
   const std::string unreadable = path + ": not an image file SliceMesh can read (NIfTI, NRRD, MetaImage, DICOM)";
@@ -419,8 +565,7 @@ itk::ImageIOBase::Pointer checkedImageHeader(const std::string& path, bool asSto
   itk::ImageIOBase::Pointer io = readImageHeader(path);
   checkHeader(path, io, asStored);
   // NIfTI-1 (plain or gzip): its header read once, for the two checks.
-  const bool nifti = endsWith(path, ".nii") || endsWith(path, ".nii.gz") || endsWith(path, ".NII") || endsWith(path, ".NII.GZ");
-  const std::optional<Nifti1Header> header = nifti ? readNifti1Header(path) : std::nullopt;
+  const std::optional<Nifti1Header> header = isNiftiName(path) ? readNifti1Header(path) : std::nullopt;
   checkNiftiFileSize(path, io, header);
   checkNiftiSpacing(path, header);
   return io;
@@ -470,6 +615,11 @@ typename TImage::Pointer readImageFileAs(const std::string& path, itk::ImageIOBa
 /** The largest image series in the folder (DicomImageFunctions::readSeries), checked. */
 ScalarVolume::Pointer readDicomSeries(const std::string& directory, bool voxels)
 {
+  // GDCM scans every file of the folder: one damaged file would abort the process there.
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(directory, error))
+    if (entry.is_regular_file(error))
+      checkDicomFileMeta(entry.path().string());
   ScalarVolume::Pointer volume;
   try
   {

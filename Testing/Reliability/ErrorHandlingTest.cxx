@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <cstdlib>
 #include <fstream>
@@ -103,17 +104,28 @@ std::string readBytes(const fs::path& path)
   return bytes.str();
 }
 
-/** The sample label map, uncompressed, with pixdim[axis + 1] (the spacing) replaced. */
-fs::path niftiWithSpacing(const fs::path& folder, const std::string& name, int axis, float spacing)
+/** The sample label map, uncompressed, with header fields replaced: floats and 16-bit integers at
+ *  their byte offsets in the NIfTI-1 header. */
+fs::path niftiWithFields(const fs::path& folder, const std::string& name, const std::vector<std::pair<int, float>>& floats,
+                         const std::vector<std::pair<int, std::int16_t>>& shorts = {})
 {
   const fs::path path = folder / name;
   const RunResult r = runCommand("gzip -dc " + quoted(SLICEMESH_DATA_DIR "/sample-labelmap.nii.gz") + " > " +
                                  quoted(path.string()));
   EXPECT_EQ(r.exitCode, cli::Success) << r.err;
   std::string bytes = readBytes(path);
-  std::memcpy(&bytes[80 + 4 * axis], &spacing, sizeof spacing); // NIfTI-1: float pixdim[8] at byte 76
+  for (const auto& [offset, value] : floats)
+    std::memcpy(&bytes[static_cast<std::size_t>(offset)], &value, sizeof value);
+  for (const auto& [offset, value] : shorts)
+    std::memcpy(&bytes[static_cast<std::size_t>(offset)], &value, sizeof value);
   writeText(path, bytes);
   return path;
+}
+
+/** The sample label map, uncompressed, with pixdim[axis + 1] (the spacing) replaced. */
+fs::path niftiWithSpacing(const fs::path& folder, const std::string& name, int axis, float spacing)
+{
+  return niftiWithFields(folder, name, { { 80 + 4 * axis, spacing } }); // NIfTI-1: float pixdim[8] at byte 76
 }
 
 TEST(ErrorHandling, MissingInput)
@@ -169,6 +181,58 @@ TEST(ErrorHandling, TruncatedOrCorruptFiles)
     writeText(cut, dicom.substr(0, bytes));
     expectFailure(f.outputs, cut.string(), cli::UnreadableInput, "truncated DICOM file");
   }
+}
+
+TEST(ErrorHandling, FilesThatAbortedTheReadersAreRefusedFirst)
+{
+  // A NIfTI affine (sform) or quaternion offset (qform) that is not a finite number, in use by its
+  // code: ITK aborted the process on the first (an assertion in its decomposition) and took the
+  // second for 0. A negative vox_offset was read from before the voxels.
+  const Folders f = foldersFor("aborting-readers");
+  const float nan = std::nanf("");
+  const std::int16_t inUse = 1;
+  expectFailure(f.outputs, niftiWithFields(f.inputs, "sform.nii", { { 280, nan } }, { { 254, inUse } }).string(),
+                cli::UnreadableInput, "(sform) holds a value that is not a finite number");
+  expectFailure(f.outputs,
+                niftiWithFields(f.inputs, "sform-offset.nii", { { 292, std::numeric_limits<float>::infinity() } },
+                                { { 254, inUse } })
+                  .string(),
+                cli::UnreadableInput, "(sform)");
+  expectFailure(f.outputs, niftiWithFields(f.inputs, "qform.nii", { { 268, nan } }, { { 252, inUse } }).string(),
+                cli::UnreadableInput, "(qform) holds a value that is not a finite number");
+  expectFailure(f.outputs, niftiWithFields(f.inputs, "offset.nii", { { 108, -4.0f } }).string(), cli::UnreadableInput,
+                "vox_offset");
+  // The same affine where a reference volume is only read for its geometry (contours given).
+  const fs::path contours = f.inputs / "contours.json";
+  writeText(contours, R"({"rois": [{"name": "A", "slices": [{"z": 0, "polygons": [[[0, 0], [5, 0], [5, 5]]]}]}]})");
+  expectFailure(f.outputs, (f.inputs / "sform.nii").string(), cli::UnreadableInput, "(sform)",
+                "--inputContours " + quoted(contours.string()));
+
+  // DICOM File Meta Information that GDCM's reader aborted on (a failed assertion): a value
+  // representation that does not exist, and an element longer than the file. In a series folder,
+  // GDCM's scan of the folder aborted on such a file as well.
+  std::string meta(128, '\0');
+  meta += "DICM";
+  meta += std::string("\x02\x00\x00\x00UL\x04\x00\x1a\x00\x00\x00", 12); // group length 26
+  std::string badVr = meta + std::string("\x02\x00\x10\x00ZZ\x12\x00", 8) + "1.2.840.10008.1.2.1";
+  badVr.resize(400, '\0');
+  writeText(f.inputs / "bad-vr.dcm", badVr);
+  expectFailure(f.outputs, (f.inputs / "bad-vr.dcm").string(), cli::UnreadableInput,
+                "value representation 'ZZ', which does not exist");
+  std::string tooLong = meta + std::string("\x02\x00\x01\x00OB\x00\x00\x00\x00\x01\x00", 12);
+  tooLong.resize(400, '\0');
+  fs::create_directories(f.inputs / "series");
+  writeText(f.inputs / "series" / "a.dcm", tooLong);
+  expectFailure(f.outputs, (f.inputs / "series" / "a.dcm").string(), cli::UnreadableInput, "truncated DICOM file");
+  expectFailure(f.outputs, (f.inputs / "series").string(), cli::UnreadableInput, "truncated DICOM file");
+
+  // A MetaImage whose voxels are in a list of slice files, the list shorter than its sizes: MetaIO
+  // read what memory held for the rest.
+  writeText(f.inputs / "slice0.raw", std::string(64, '\1'));
+  writeText(f.inputs / "slice1.raw", std::string(64, '\1'));
+  writeText(f.inputs / "list.mhd", "ObjectType = Image\nNDims = 3\nDimSize = 8 8 4\nElementSpacing = 1 1 1\n"
+                                   "ElementType = MET_UCHAR\nElementDataFile = LIST\nslice0.raw\nslice1.raw\n");
+  expectFailure(f.outputs, (f.inputs / "list.mhd").string(), cli::UnreadableInput, "names 2 files where its sizes need 4");
 }
 
 TEST(ErrorHandling, AMalformedNrrdIsOneLineNamingTheFileAndTheFault)
