@@ -9,7 +9,8 @@
 namespace slicemesh
 {
 
-/** The `count` thresholds that split the volume's 256-bin histogram into count + 1 classes with
+/** The `count` thresholds that split the volume's 256-bin histogram (coarser past four thresholds,
+ *  so that the exhaustive search ends in seconds) into count + 1 classes with
  *  the largest between-class variance (ITK's OtsuMultipleThresholdsCalculator), in increasing
  *  order. Computed on the whole volume, also when the rest of the segmentation works per slice:
  *  a slice's own histogram (often background only) gives meaningless thresholds. NaN and

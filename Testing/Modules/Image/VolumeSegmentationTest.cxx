@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <limits>
 #include <random>
@@ -152,6 +154,27 @@ TEST(VolumeSegmentation, OtsuSeparatesTheTwoPopulations)
   const MaskVolume::Pointer mask = segmentVolume(volume, SegmentationOptions{});
   expectMask(volume.GetPointer(), mask.GetPointer(), [](float v) { return v > 55.0f; });
   EXPECT_EQ(countInside(mask), 1000u);
+}
+
+TEST(VolumeSegmentation, ManyOtsuThresholdsComeBackInOrderInsideTheRange)
+{
+  // Five thresholds or more: ITK's calculator tries every placement in the histogram, which in 256
+  // bins did not end for minutes (the option allows up to eight); fewer bins past four.
+  const auto volume = grayscaleVolume();
+  const auto range = finiteIntensityRange(volume);
+  ASSERT_TRUE(range);
+  for (const unsigned int count : { 5u, 8u })
+  {
+    SCOPED_TRACE(count);
+    const std::vector<double> thresholds = otsuThresholds(volume, count);
+    ASSERT_EQ(thresholds.size(), count);
+    EXPECT_TRUE(std::is_sorted(thresholds.begin(), thresholds.end()));
+    EXPECT_GE(thresholds.front(), range->first);
+    EXPECT_LE(thresholds.back(), range->second);
+    // Below the object (100 +- 3) and above the bulk of the background (10 +- 3), a threshold keeps
+    // the object a class of its own, however many split the background.
+    EXPECT_TRUE(std::any_of(thresholds.begin(), thresholds.end(), [](double t) { return t > 15.0 && t < 88.0; }));
+  }
 }
 
 TEST(VolumeSegmentation, TheFiniteHistogramIsITKsOnAFiniteVolume)
