@@ -33,6 +33,8 @@
 #include <regex>
 #include <iomanip>
 #include <limits>
+#include <map>
+#include <sstream>
 #include <unistd.h>
 
 namespace slicemesh
@@ -40,6 +42,9 @@ namespace slicemesh
 
 namespace
 {
+
+/** Why a write that ran out of room failed, where the writer gives no reason of its own. */
+const char* const WriteFailed = "writing the file failed (disk full?)";
 
 double determinant(const std::array<std::array<double, 3>, 3>& m)
 {
@@ -167,10 +172,17 @@ public:
   {
     this->Callback->SetClientData(this);
     this->Callback->SetCallback(
-      [](vtkObject*, unsigned long, void* clientData, void* callData)
+      [](vtkObject* caller, unsigned long, void* clientData, void* callData)
       {
         auto* self = static_cast<VTKErrorCollector*>(clientData);
-        if (self->FirstMessage.empty() && callData)
+        if (self->FirstMessage.empty() && caller == self->Executive)
+        {
+          // The executive's report of a failed RequestData is a dump of the pipeline request
+          // ("FORWARD_DIRECTION: 0"), nothing about the file; coming first, it means the writer
+          // failed without saying why.
+          self->FirstMessage = WriteFailed;
+        }
+        else if (self->FirstMessage.empty() && callData)
         {
           std::string text = static_cast<const char*>(callData);
           // VTK messages span several lines ("ERROR: In file, line ...\nvtkX (0x..): message"): keep the last.
@@ -183,7 +195,8 @@ public:
         }
       });
     // The executive reports a failed RequestData on its own, so watch it as well.
-    for (vtkObject* object : { static_cast<vtkObject*>(watched), static_cast<vtkObject*>(watched->GetExecutive()) })
+    this->Executive = watched->GetExecutive();
+    for (vtkObject* object : { static_cast<vtkObject*>(watched), static_cast<vtkObject*>(this->Executive) })
     {
       object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
       object->AddObserver(vtkCommand::WarningEvent, this->Callback);
@@ -193,6 +206,7 @@ public:
 
 private:
   vtkNew<vtkCallbackCommand> Callback;
+  vtkObject* Executive = nullptr;
   std::string FirstMessage;
 };
 
@@ -240,7 +254,66 @@ std::string writeOBJ(const TriangleMesh& mesh, CoordinateSystem system, const st
     out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
   }
   out.flush();
-  return out ? std::string() : std::string("writing the file failed (disk full?)");
+  return out ? std::string() : std::string(WriteFailed);
+}
+
+/** Bytes of one value of a PLY property type; 0 for a type the format does not have. */
+std::size_t plyTypeBytes(const std::string& type)
+{
+  static const std::map<std::string, std::size_t> bytes = {
+    { "char", 1 },   { "uchar", 1 },  { "int8", 1 },   { "uint8", 1 },   { "short", 2 },  { "ushort", 2 },
+    { "int16", 2 },  { "uint16", 2 }, { "int", 4 },    { "uint", 4 },    { "float", 4 },  { "int32", 4 },
+    { "uint32", 4 }, { "float32", 4 }, { "double", 8 }, { "float64", 8 }
+  };
+  const auto found = bytes.find(type);
+  return found == bytes.end() ? 0 : found->second;
+}
+
+/** Whether a binary .ply file of triangles is as long as its own header says: each element's count
+ *  times the bytes of its properties, a face's index list holding 3. vtkPLYWriter writes through C
+ *  stdio and reports no failed write, so a full disk leaves a cut file behind a success; reading it
+ *  back is no check, as vtkPLYReader crashes on a cut file. */
+bool isWholePLY(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::uintmax_t dataBytes = 0;
+  std::uintmax_t elementCount = 0;
+  std::string line;
+  while (std::getline(in, line))
+  {
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if (keyword == "end_header")
+    {
+      const std::streamoff headerBytes = in.tellg(); // -1 if the file ends inside this line
+      std::error_code error;
+      const std::uintmax_t fileBytes = std::filesystem::file_size(path, error);
+      return headerBytes > 0 && !error && fileBytes == static_cast<std::uintmax_t>(headerBytes) + dataBytes;
+    }
+    if (keyword == "element")
+    {
+      std::string name;
+      words >> name >> elementCount;
+    }
+    else if (keyword == "property")
+    {
+      std::string type;
+      words >> type;
+      std::size_t bytes = plyTypeBytes(type);
+      if (type == "list")
+      {
+        std::string countType, indexType;
+        words >> countType >> indexType;
+        const std::size_t countBytes = plyTypeBytes(countType), indexBytes = plyTypeBytes(indexType);
+        bytes = countBytes && indexBytes ? countBytes + 3 * indexBytes : 0;
+      }
+      if (bytes == 0)
+        return false;
+      dataBytes += elementCount * bytes;
+    }
+  }
+  return false; // the file ends inside its header
 }
 
 /** Writes to path in the format its extension names; returns an empty string on success. */
@@ -302,7 +375,10 @@ std::string writeByExtension(const TriangleMesh& mesh, CoordinateSystem system, 
       writer->SetArrayName("Color");
       writer->SetColorModeToDefault();
     }
-    return runVTKWriter(writer.GetPointer());
+    const std::string failure = runVTKWriter(writer.GetPointer());
+    if (!failure.empty())
+      return failure;
+    return isWholePLY(path) ? std::string() : std::string(WriteFailed);
   }
   return "unsupported extension";
 }

@@ -17,13 +17,18 @@
 #include <vtkStringArray.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include <sys/resource.h>
+
 #include <cmath>
+#include <csignal>
 #include <filesystem>
+#include <iostream>
 #include <map>
 #include <random>
 #include <fstream>
 #include <sstream>
 #include <unistd.h>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -340,6 +345,61 @@ TEST(MeshWriter, FailedWriteLeavesExistingFileUntouched)
     }
     EXPECT_EQ(fileText(path), "precious") << extension;
     fs::remove_all(blocker);
+  }
+}
+
+TEST(MeshWriter, PLYWithFaceColoursPassesItsSizeCheck)
+{
+  // The written .ply is checked against the length its header declares, colours included.
+  const fs::path path = freshFolder("ply-colours") / "box.ply";
+  const TriangleMesh mesh = testing::box(1, 1, 1);
+  MeshAttributes attributes;
+  attributes.cellColors.assign(mesh.triangles.size(), { 250, 120, 0 });
+  writeMesh(mesh, CoordinateSystem::LPS, path.string(), attributes);
+  EXPECT_NE(fileText(path).find("property uchar red"), std::string::npos);
+  EXPECT_EQ(readBack(path).polyData->GetNumberOfPolys(), 12);
+}
+
+/** Writes the mesh with files limited to `bytes` and SIGXFSZ ignored, so that a write past the limit
+ *  fails as on a full disk, then exits: 0 if writeMesh returned, 3 with its error on stderr if it
+ *  threw (for a death test's child, so the limit never reaches the tests' own process). */
+[[noreturn]] void writeUnderFileSizeLimit(const TriangleMesh& mesh, const fs::path& path, rlim_t bytes)
+{
+  std::signal(SIGXFSZ, SIG_IGN);
+  rlimit limit{};
+  ::getrlimit(RLIMIT_FSIZE, &limit);
+  limit.rlim_cur = bytes;
+  ::setrlimit(RLIMIT_FSIZE, &limit);
+  try
+  {
+    writeMesh(mesh, CoordinateSystem::LPS, path.string());
+  }
+  catch (const Error& e)
+  {
+    std::cerr << e.what() << std::endl;
+    std::exit(3);
+  }
+  std::exit(0);
+}
+
+TEST(MeshWriter, WriteCutShortByAFullDiskFailsAndLeavesExistingFileUntouched)
+{
+  // vtkPLYWriter reported success for a cut file, which then replaced the existing one; and
+  // vtkXMLPolyDataWriter's only message was its pipeline's "FORWARD_DIRECTION: 0".
+  const TriangleMesh mesh = perturbedCube(3); // some 15 kB and more in every format
+  for (const std::string extension : { ".vtp", ".vtk", ".stl", ".ply", ".obj" })
+  {
+    const fs::path folder = freshFolder("full-disk" + extension);
+    const fs::path path = folder / ("cube" + extension);
+    std::ofstream(path, std::ios::binary) << "precious";
+    EXPECT_EXIT(writeUnderFileSizeLimit(mesh, path, 4096), ::testing::ExitedWithCode(3),
+                "^cannot write mesh '[^']*': (writing the file failed \\(disk full\\?\\)|Ran out of disk space)")
+      << extension;
+    EXPECT_TRUE(fileText(path) == "precious") << extension << ": the existing file replaced"; // no binary dump
+    std::vector<fs::path> left;
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder))
+      left.push_back(entry.path().filename());
+    EXPECT_EQ(left, std::vector<fs::path>{ path.filename() }) << extension << ": a temporary file left";
   }
 }
 
