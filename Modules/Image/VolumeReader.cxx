@@ -47,7 +47,18 @@ std::string oneLine(const std::string& text)
 
 /** The geometry checks every reader path shares: a mesh cannot be placed without a usable
  *  spacing and an invertible direction matrix. */
-void checkGeometry(const std::string& path, const double spacing[3], const double direction[3][3])
+/** The voxel sides SliceMesh meshes (mm), and how far apart they may be: outside these the contours
+ *  degenerate (points that coincide in the tiling, memory estimates beyond any machine) or a run
+ *  ends after minutes with a surface that has lost its shape (a 1 x 1 x 1000 mm grid). */
+constexpr double smallestSpacing = 1e-6, largestSpacing = 1e6, largestSpacingRatio = 200.0;
+
+/** How many voxel sides the coordinates may reach: the physical points are doubles, and the mesh is
+ *  written in single precision by most formats, so a grid whose origin lies a billion voxels away
+ *  would land flat, every vertex on the same coordinate. */
+constexpr double farthestInVoxels = 1e9;
+
+void checkGeometry(const std::string& path, const double spacing[3], const double direction[3][3],
+                   const double origin[3], const std::size_t size[3])
 {
   for (int axis = 0; axis < 3; ++axis)
   {
@@ -58,6 +69,34 @@ void checkGeometry(const std::string& path, const double spacing[3], const doubl
               << "; SliceMesh needs positive, finite voxel spacing";
       throw Error(message.str());
     }
+    if (spacing[axis] < smallestSpacing || spacing[axis] > largestSpacing)
+    {
+      std::ostringstream message;
+      message << path << ": spacing along axis " << axis << " is " << spacing[axis] << " mm; SliceMesh meshes voxel sides from "
+              << smallestSpacing << " to " << largestSpacing << " mm";
+      throw Error(message.str());
+    }
+    if (!std::isfinite(origin[axis]))
+      throw Error(path + ": the origin has a non-finite coordinate");
+  }
+  const double finest = std::min({ spacing[0], spacing[1], spacing[2] });
+  const double coarsest = std::max({ spacing[0], spacing[1], spacing[2] });
+  if (coarsest > largestSpacingRatio * finest)
+  {
+    std::ostringstream message;
+    message << path << ": voxel sides of " << finest << " and " << coarsest << " mm; SliceMesh meshes grids whose sides are at most "
+            << largestSpacingRatio << " times apart";
+    throw Error(message.str());
+  }
+  double farthest = 0.0; // from 0, bounding the coordinates of every voxel
+  for (int axis = 0; axis < 3; ++axis)
+    farthest += std::abs(origin[axis]) + static_cast<double>(size[axis]) * spacing[axis];
+  if (farthest > farthestInVoxels * finest)
+  {
+    std::ostringstream message;
+    message << path << ": its voxels lie up to " << farthest << " mm from the origin of the coordinates, more than "
+            << farthestInVoxels << " voxel sides (" << finest << " mm); their coordinates cannot be told apart";
+    throw Error(message.str());
   }
   for (int row = 0; row < 3; ++row)
     for (int column = 0; column < 3; ++column)
@@ -94,17 +133,19 @@ std::string frameOfReferenceIn(const itk::MetaDataDictionary& header)
 VolumeGeometry checkHeaderGeometry(const std::string& path, const itk::ImageIOBase* io)
 {
   VolumeGeometry geometry;
-  double spacing[3];
+  double spacing[3], origin[3];
+  std::size_t size[3];
   double direction[3][3];
   for (unsigned int axis = 0; axis < 3; ++axis)
   {
     spacing[axis] = geometry.spacing[axis] = io->GetSpacing(axis);
-    geometry.origin[axis] = io->GetOrigin(axis);
+    origin[axis] = geometry.origin[axis] = io->GetOrigin(axis);
+    size[axis] = io->GetDimensions(axis);
     const std::vector<double> column = io->GetDirection(axis);
     for (unsigned int row = 0; row < 3; ++row)
       direction[row][axis] = geometry.direction[row][axis] = row < column.size() ? column[row] : 0.0;
   }
-  checkGeometry(path, spacing, direction);
+  checkGeometry(path, spacing, direction, origin, size);
   return geometry;
 }
 
@@ -637,15 +678,18 @@ ScalarVolume::Pointer readDicomSeries(const std::string& directory, bool voxels)
 
 void checkVolumeGeometry(const std::string& path, const itk::ImageBase<3>* volume)
 {
-  double spacing[3];
+  double spacing[3], origin[3];
+  std::size_t size[3];
   double direction[3][3];
   for (int i = 0; i < 3; ++i)
   {
     spacing[i] = volume->GetSpacing()[i];
+    origin[i] = volume->GetOrigin()[i];
+    size[i] = volume->GetLargestPossibleRegion().GetSize()[i];
     for (int j = 0; j < 3; ++j)
       direction[i][j] = volume->GetDirection()[i][j];
   }
-  checkGeometry(path, spacing, direction);
+  checkGeometry(path, spacing, direction, origin, size);
 }
 
 namespace

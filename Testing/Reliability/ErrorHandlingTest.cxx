@@ -79,11 +79,11 @@ void writeMetaImageWith(const fs::path& path, const std::string& header, std::si
     out.put(static_cast<char>(v % 7 == 0 ? value : 0));
 }
 
-void writeNrrd(const fs::path& path, const std::string& spaceDirections)
+void writeNrrd(const fs::path& path, const std::string& spaceDirections, const std::string& origin = "(0,0,0)")
 {
   std::ofstream out(path, std::ios::binary);
   out << "NRRD0004\ntype: uchar\ndimension: 3\nspace: left-posterior-superior\nsizes: 8 8 8\n"
-      << "space directions: " << spaceDirections << "\nencoding: raw\nspace origin: (0,0,0)\n\n";
+      << "space directions: " << spaceDirections << "\nencoding: raw\nspace origin: " << origin << "\n\n";
   for (int v = 0; v < 512; ++v)
     out.put(static_cast<char>(v % 5 == 0));
 }
@@ -233,6 +233,30 @@ TEST(ErrorHandling, FilesThatAbortedTheReadersAreRefusedFirst)
   writeText(f.inputs / "list.mhd", "ObjectType = Image\nNDims = 3\nDimSize = 8 8 4\nElementSpacing = 1 1 1\n"
                                    "ElementType = MET_UCHAR\nElementDataFile = LIST\nslice0.raw\nslice1.raw\n");
   expectFailure(f.outputs, (f.inputs / "list.mhd").string(), cli::UnreadableInput, "names 2 files where its sizes need 4");
+}
+
+TEST(ErrorHandling, GridsOutsideWhatCanBeMeshedAreRefusedAtReading)
+{
+  // Voxel sides of 1e-10 or 1e10 mm (the tiling's points coincided, or memory ran out), sides a
+  // thousand times apart (minutes, then a surface without its shape), and an origin so far away
+  // that every vertex landed on the same coordinate (written as a flat mesh, exit 0).
+  const Folders f = foldersFor("grid-range");
+  writeNrrd(f.inputs / "tiny.nrrd", "(1e-10,0,0) (0,1e-10,0) (0,0,1e-10)");
+  writeNrrd(f.inputs / "huge.nrrd", "(1e10,0,0) (0,1e10,0) (0,0,1e10)");
+  writeNrrd(f.inputs / "thick.nrrd", "(1,0,0) (0,1,0) (0,0,1000)");
+  writeNrrd(f.inputs / "far.nrrd", "(1,0,0) (0,1,0) (0,0,1)", "(1e300,0,0)");
+  expectFailure(f.outputs, (f.inputs / "tiny.nrrd").string(), cli::UnreadableInput, "meshes voxel sides from");
+  expectFailure(f.outputs, (f.inputs / "huge.nrrd").string(), cli::UnreadableInput, "meshes voxel sides from");
+  expectFailure(f.outputs, (f.inputs / "thick.nrrd").string(), cli::UnreadableInput, "at most 200 times apart");
+  expectFailure(f.outputs, (f.inputs / "far.nrrd").string(), cli::UnreadableInput, "cannot be told apart");
+  // A micrometre grid far from nothing, and slices 100 times the pixel, are meshed.
+  writeNrrd(f.inputs / "micro.nrrd", "(0.001,0,0) (0,0.001,0) (0,0,0.001)", "(-200,150,-80)");
+  writeNrrd(f.inputs / "slices.nrrd", "(0.5,0,0) (0,0.5,0) (0,0,50)");
+  for (const char* name : { "micro.nrrd", "slices.nrrd" })
+  {
+    const RunResult r = runSliceMesh(quoted((f.inputs / name).string()) + " " + quoted((f.outputs / "ok.vtp").string()));
+    EXPECT_EQ(r.exitCode, cli::Success) << name << ": " << r.err;
+  }
 }
 
 TEST(ErrorHandling, AMalformedNrrdIsOneLineNamingTheFileAndTheFault)
