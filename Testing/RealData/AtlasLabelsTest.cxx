@@ -137,6 +137,20 @@ void checkEveryLabel(const std::string& path, std::size_t expectedLabels, double
             << worstLabel << "), meshing " << total << " s" << std::endl;
 }
 
+/** Some labels of a mricron-data atlas meshed by the CLI's pipeline into `output` (the test output
+ *  folder), one report each in `outcomes`. */
+cli::PipelineResult meshAtlasLabels(const std::string& atlas, const std::vector<int>& labels, const std::string& output,
+                                    std::vector<cli::LabelReport>& outcomes)
+{
+  cli::PipelineSettings settings;
+  settings.inputVolume = mricronTemplates + atlas;
+  settings.outputModel = outputPath(output);
+  settings.multiLabel.enabled = true;
+  settings.multiLabel.labels = labels;
+  cli::ProgressReporter progress(cli::pipelineStages(), nullptr, nullptr);
+  return cli::runPipeline(settings, progress, &outcomes);
+}
+
 } // namespace
 
 TEST(AtlasLabels, EveryAALLabelIsAValidClosedSurfaceOfItsVoxels)
@@ -239,14 +253,8 @@ TEST(AtlasLabels, SpecksGivenTheirVolumeBackThatThenCrossAPieceStayFinished)
   // AICHAmc (mricron-data, 2 mm): in three of these labels a speck, given back up to half again its
   // tiled volume, reaches another piece of its label. It is finished again at its tiled volume, not
   // left in its tiled shape (which crosses nothing, but has worse triangles).
-  cli::PipelineSettings settings;
-  settings.inputVolume = mricronTemplates + "AICHAmc.nii.gz";
-  settings.outputModel = outputPath("AICHAmc-specks.vtp");
-  settings.multiLabel.enabled = true;
-  settings.multiLabel.labels = { 2, 18, 51, 96 };
-  cli::ProgressReporter progress(cli::pipelineStages(), nullptr, nullptr);
   std::vector<cli::LabelReport> outcomes;
-  const cli::PipelineResult result = cli::runPipeline(settings, progress, &outcomes);
+  const cli::PipelineResult result = meshAtlasLabels("AICHAmc.nii.gz", { 2, 18, 51, 96 }, "AICHAmc-specks.vtp", outcomes);
   ASSERT_EQ(outcomes.size(), 4u);
   EXPECT_TRUE(result.validation.valid()) << result.validation.summary();
   for (const cli::LabelReport& label : outcomes)
@@ -266,14 +274,8 @@ TEST(AtlasLabels, APieceThatCrossesASpeckOfItsLabelIsLaidOntoItsTilingThereNotRe
   // its label a voxel away. Its vertices there go back onto its tiled surface, which a valid tiling
   // keeps apart from the speck's; before, the large piece was remeshed whole again with tiled
   // triangles kept around the speck (170 and 101 of them) and its vertices there left unsmoothed.
-  cli::PipelineSettings settings;
-  settings.inputVolume = mricronTemplates + "natbrainlab.nii.gz";
-  settings.outputModel = outputPath("natbrainlab-laid-back.vtp");
-  settings.multiLabel.enabled = true;
-  settings.multiLabel.labels = { 6, 113 };
-  cli::ProgressReporter progress(cli::pipelineStages(), nullptr, nullptr);
   std::vector<cli::LabelReport> outcomes;
-  const cli::PipelineResult result = cli::runPipeline(settings, progress, &outcomes);
+  const cli::PipelineResult result = meshAtlasLabels("natbrainlab.nii.gz", { 6, 113 }, "natbrainlab-laid-back.vtp", outcomes);
   ASSERT_EQ(outcomes.size(), 2u);
   EXPECT_TRUE(result.validation.valid()) << result.validation.summary();
   for (const cli::LabelReport& label : outcomes)
