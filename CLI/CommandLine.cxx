@@ -8,6 +8,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <iomanip>
+#include <limits>
+#include <optional>
 #include <sstream>
 
 namespace slicemesh::cli
@@ -16,6 +19,7 @@ namespace slicemesh::cli
 namespace
 {
 
+/** Beyond a long, the value is LONG_MIN or LONG_MAX: an integer still, outside any range checked. */
 bool parseInteger(const std::string& text, long& value)
 {
   if (text.empty())
@@ -25,7 +29,7 @@ bool parseInteger(const std::string& text, long& value)
   char* end = nullptr;
   errno = 0;
   value = std::strtol(text.c_str(), &end, 10);
-  return errno == 0 && *end == '\0';
+  return (errno == 0 || errno == ERANGE) && *end == '\0';
 }
 
 bool parseDouble(const std::string& text, double& value)
@@ -105,11 +109,20 @@ void checkValue(const ModuleParameter& p, const std::string& value)
   {
     throw ArgumentError(who + ": '" + value + "' needs " + (p.tag == "point" ? "3" : "6") + " comma-separated numbers");
   }
+  const bool integral = p.isInteger() || p.tag == "integer-vector";
+  std::optional<double> minimum = p.minimum;
+  std::optional<double> maximum = p.maximum;
+  if (integral)
+  {
+    // An integer parameter is an int (as GenerateCLP declares it): a value beyond one would wrap
+    // (--label 4294967297 meshed label 1).
+    minimum = std::max(minimum.value_or(std::numeric_limits<int>::min()), double(std::numeric_limits<int>::min()));
+    maximum = std::min(maximum.value_or(std::numeric_limits<int>::max()), double(std::numeric_limits<int>::max()));
+  }
   for (const std::string& part : parts)
   {
     double number = 0.0;
     long whole = 0;
-    const bool integral = p.isInteger() || p.tag == "integer-vector";
     if (integral ? !parseInteger(part, whole) : !parseDouble(part, number))
     {
       throw ArgumentError(who + ": '" + value + "' is not " + (integral ? "an integer" : "a number"));
@@ -118,13 +131,14 @@ void checkValue(const ModuleParameter& p, const std::string& value)
     {
       number = static_cast<double>(whole);
     }
-    if ((p.minimum && number < *p.minimum) || (p.maximum && number > *p.maximum))
+    if ((minimum && number < *minimum) || (maximum && number > *maximum))
     {
       std::ostringstream range;
-      range << who << ": " << value << " is outside the range ";
-      p.minimum ? range << *p.minimum : range << "-inf";
+      // Ten digits: an int's ends in full (2147483647, not 2.14748e+09).
+      range << std::setprecision(10) << who << ": " << value << " is outside the range ";
+      minimum ? range << *minimum : range << "-inf";
       range << " .. ";
-      p.maximum ? range << *p.maximum : range << "inf";
+      maximum ? range << *maximum : range << "inf";
       throw ArgumentError(range.str());
     }
   }

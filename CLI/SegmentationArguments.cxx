@@ -1,6 +1,8 @@
 #include "SegmentationArguments.h"
 
+#include <cerrno>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 
 namespace slicemesh::cli
@@ -17,6 +19,26 @@ std::vector<std::string> split(const std::string& text, char separator)
     if (!part.empty())
       parts.push_back(part);
   return parts;
+}
+
+/** The comma-separated items of --labels; none when it is empty (every label). An empty item
+ *  ("1,,3", ",,,") is refused: it was read as no label at all, and ",,," as every label. */
+std::vector<std::string> labelItems(const std::string& text)
+{
+  std::vector<std::string> items;
+  if (text.empty())
+    return items;
+  for (std::size_t begin = 0;;)
+  {
+    const std::size_t comma = text.find(',', begin);
+    items.push_back(text.substr(begin, comma - begin));
+    if (items.back().find_first_not_of(" \t") == std::string::npos)
+      throw ArgumentError("--labels: '" + text + "' has an empty item (give the labels to mesh, e.g. --labels 1,3, "
+                          "or leave it empty for every label)");
+    if (comma == std::string::npos)
+      return items;
+    begin = comma + 1;
+  }
 }
 
 double toNumber(const std::string& text, const std::string& who)
@@ -73,15 +95,21 @@ void readArguments(const ParsedArguments& arguments, PipelineSettings& settings)
   }
 
   MultiLabelSettings& multi = settings.multiLabel;
-  for (const std::string& label : split(arguments.text("labels"), ','))
+  for (const std::string& label : labelItems(arguments.text("labels")))
   {
     char* end = nullptr;
+    errno = 0;
     const long value = std::strtol(label.c_str(), &end, 10);
     if (end != label.c_str() && *end == '\0')
     {
       // Voxels of value 0 are the background the labels are cut from, never a structure.
       if (value == 0)
         throw ArgumentError("--labels: 0 is the background, not a label (give the labels to mesh, e.g. --labels 1,3)");
+      // A label is an int: a value beyond one would wrap to another label (4294967297 to 1).
+      if (errno == ERANGE || value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max())
+        throw ArgumentError("--labels: " + label + " is outside the range " +
+                            std::to_string(std::numeric_limits<int>::min()) + " .. " +
+                            std::to_string(std::numeric_limits<int>::max()));
       multi.labels.push_back(static_cast<int>(value));
     }
     else

@@ -103,6 +103,21 @@ TEST(CommandLine, RejectsBadInputWithOneLineMessages)
   EXPECT_NE(errorOf({ "--coordinateSystem", "XYZ", "in", "out.vtp" }).find("LPS, RAS"), std::string::npos);
 }
 
+TEST(CommandLine, AnIntegerIsAnInt)
+{
+  // An integer parameter without a range of its own has an int's: 4294967297 wrapped to 1.
+  for (const std::string value : { "4294967297", "2147483648", "-2147483649", "99999999999999999999" })
+    EXPECT_NE(errorOf({ "--label", value, "in", "out.vtp" }).find("--label (Label): " + value +
+                                                                   " is outside the range -2147483648 .. 2147483647"),
+              std::string::npos)
+      << value;
+  EXPECT_EQ(parse({ "--label", "2147483647", "in", "out.vtp" }).integer("label"), 2147483647);
+  EXPECT_EQ(parse({ "--label", "-2147483648", "in", "out.vtp" }).integer("label"), -2147483648L);
+  // Within the XML's own range, that range is the one named.
+  EXPECT_NE(errorOf({ "--threads", "4294967297", "in", "out.vtp" }).find("outside the range 0 .. 256"),
+            std::string::npos);
+}
+
 TEST(CommandLine, SectionOverlapOptionsReachTheirDefaultsAndRange)
 {
   // The XML's defaults are the library's (UndersamplingOptions), so a run without the flags, or

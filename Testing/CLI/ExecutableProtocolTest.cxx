@@ -191,6 +191,59 @@ TEST(Executable, LabelsZeroIsAUsageError)
   EXPECT_NE(r.err.find("background"), std::string::npos) << r.err;
 }
 
+/** A ball of label 1 in a label map: a run that is not refused meshes it. */
+fs::path labelMapWithLabelOne(const fs::path& folder)
+{
+  const fs::path path = folder / "in.mha";
+  writeMetaImage(path, { 16, 16, 16 }, { 1.0, 1.0, 1.0 },
+                 [](int i, int j, int k)
+                 { return (i - 7.5) * (i - 7.5) + (j - 7.5) * (j - 7.5) + (k - 7.5) * (k - 7.5) < 25.0 ? 1 : 0; });
+  return path;
+}
+
+TEST(Executable, LabelBeyondAnIntIsAUsageError)
+{
+  // 4294967297 wrapped to label 1 and meshed it over the output; 4000000000 looked for label -294967296.
+  const fs::path folder = freshFolder("label-beyond-int");
+  const fs::path input = labelMapWithLabelOne(folder);
+  const fs::path output = folder / "out.vtp";
+  std::ofstream(output) << "an earlier run's mesh";
+  for (const std::string label : { "-l 4294967297", "--label 4000000000", "--label=-2147483649", "--labels 4294967297",
+                                   "--labels 1,4294967297", "--labels 99999999999999999999" })
+  {
+    const RunResult r = runSliceMesh(label + " " + quoted(input.string()) + " " + quoted(output.string()));
+    EXPECT_EQ(r.exitCode, cli::BadArguments) << label << ": " << r.err;
+    EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
+    EXPECT_NE(r.err.find("is outside the range -2147483648 .. 2147483647"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(label.substr(0, label.find_first_of(" ="))), std::string::npos) << r.err;
+  }
+  EXPECT_TRUE(fileText(output) == "an earlier run's mesh") << "the output was overwritten";
+  // The ends of the range are labels (one that no voxel has).
+  EXPECT_EQ(runSliceMesh("-l -2147483648 " + quoted(input.string()) + " " + quoted(output.string())).exitCode,
+            cli::EmptySegmentation);
+}
+
+TEST(Executable, LabelsWithAnEmptyItemIsAUsageError)
+{
+  // ",,," meshed every label, "1,,3" labels 1 and 3: a slip in the list, taken without a word.
+  const fs::path folder = freshFolder("labels-empty-item");
+  const fs::path input = labelMapWithLabelOne(folder);
+  const fs::path output = folder / "out.vtp";
+  std::ofstream(output) << "an earlier run's mesh";
+  for (const std::string labels : { ",,,", ",", "1,,3", "1,", ",1", "1, ,3" })
+  {
+    const RunResult r = runSliceMesh("--labels " + quoted(labels) + " " + quoted(input.string()) + " " +
+                                     quoted(output.string()));
+    EXPECT_EQ(r.exitCode, cli::BadArguments) << labels << ": " << r.err;
+    EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
+    EXPECT_NE(r.err.find("--labels: '" + labels + "' has an empty item"), std::string::npos) << r.err;
+  }
+  EXPECT_TRUE(fileText(output) == "an earlier run's mesh") << "the output was overwritten";
+  // Empty as a whole: every label, as --help says.
+  const RunResult every = runSliceMesh("--labels '' " + quoted(input.string()) + " " + quoted(output.string()));
+  EXPECT_EQ(every.exitCode, cli::Success) << every.err;
+}
+
 TEST(Executable, LabelAndLabelsTogetherAreAUsageError)
 {
   // One would be ignored without a word (the run meshed --labels and dropped --label).
