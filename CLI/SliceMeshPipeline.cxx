@@ -1,5 +1,6 @@
 #include "SliceMeshPipeline.h"
 
+#include "DistinctFiles.h"
 #include "LengthLimits.h"
 #include "MadeFolders.h"
 #include "PipelineStep.h"
@@ -239,6 +240,8 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
                            std::vector<LabelReport>* labels)
 {
   const auto began = Clock::now();
+  // A usage error, before the input is so much as opened.
+  requireDistinctFiles(settings);
   const bool fromContours = settings.contours.enabled();
   // A segmentation file (.seg.nrrd, DICOM SEG) names its structures: one mesh per segment.
   // (A DICOM file is asked of the DICOM plugin: one that cannot be loaded makes the input unreadable.)
@@ -320,6 +323,20 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
         smallestVoxelSide = std::min(smallestVoxelSide, s.mask ? s.mask->GetSpacing()[axis] : s.contours.spacing[axis]);
   if (std::isfinite(smallestVoxelSide))
     requireResolvableLengths(settings.meshing, smallestVoxelSide);
+  const fs::path output(settings.outputModel);
+  const int width = perLabel && std::any_of(structures.begin(), structures.end(),
+                                            [](const Structure& s) { return s.report.label >= 1000; })
+                      ? 0
+                      : 3;
+  const bool structureFiles = perLabel && !settings.multiLabel.outputDirectory.empty();
+  auto structureFile = [&](const Structure& s)
+  { return (fs::path(settings.multiLabel.outputDirectory) / labelFileName(s, width, output.extension().string())).string(); };
+  // The structures' files are named now: one that is the input, or another output, is refused
+  // before the meshing.
+  if (structureFiles)
+    for (const Structure& s : structures)
+      if (s.live())
+        requireDistinctStructureFile(settings, structureFile(s), who(s, noun));
   for (const Structure& s : structures)
     if (!s.report.error.empty())
     {
@@ -443,11 +460,6 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   // From here on each mesh is the finished one: what is written, pictured and reported (only the
   // Dirichlet energy stays the tiling's).
   startStage(Writing);
-  const fs::path output(settings.outputModel);
-  const int width = perLabel && std::any_of(structures.begin(), structures.end(),
-                                            [](const Structure& s) { return s.report.label >= 1000; })
-                      ? 0
-                      : 3;
   auto attributesOf = [](const Structure& s, std::size_t triangles)
   {
     MeshAttributes attributes;
@@ -476,7 +488,6 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   std::vector<LabelReport> reports;
   std::vector<MeshValidation> validations;
   std::vector<AppendedAt> appendedAt(structures.size() + 1);
-  const bool structureFiles = perLabel && !settings.multiLabel.outputDirectory.empty();
   for (std::size_t n = 0; n < structures.size(); ++n)
   {
     Structure& s = structures[n];
@@ -484,8 +495,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
     if (s.live())
     {
       if (structureFiles)
-        s.report.path = (fs::path(settings.multiLabel.outputDirectory) /
-                         labelFileName(s, width, output.extension().string())).string();
+        s.report.path = structureFile(s);
       const FinishedSurface& surface = s.meshing.surface;
       s.report.validation = surface.validation;
       s.report.quality = runQualityOf(s.meshing);

@@ -81,9 +81,10 @@ std::vector<ProgressStage> pipelineStages();
 
 /** readVolume -> segmentVolume (one mask, or one cropped mask per label) -> per structure, stage by
  *  stage: contours traced and prepared, sections, tiling, validation, finishing (meshContours'
- *  stages) -> mapToPhysicalSpace -> writeMesh. Every check that needs no input (the output folders
- *  exist and are writable, a snapshot can be rendered, the colour table reads) is made before any
- *  work, and any failure before the write throws PipelineFailure and writes nothing.
+ *  stages) -> mapToPhysicalSpace -> writeMesh. Every check that needs no input (no output is an
+ *  input or another output, the output folders exist and are writable, a snapshot can be rendered,
+ *  the colour table reads) is made before any work, and any failure before the write throws
+ *  PipelineFailure and writes nothing.
  *
  *  One mesh: the mesh written, its validation, shape, snapshot and report are the finished
  *  surface's; the Dirichlet energy is the tiling's. An invalid mesh is still written (the caller
