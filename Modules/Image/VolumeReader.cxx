@@ -5,6 +5,7 @@
 #include "DicomImagePlugin.h"
 #include "ItkErrorText.h"
 #include "MemoryBudget.h"
+#include "SilencedStandardError.h"
 
 #include "Core/SliceMeshTypes.h"
 
@@ -179,6 +180,8 @@ void checkHeader(const std::string& path, const itk::ImageIOBase* io, bool asSto
             << " components per voxel; SliceMesh needs a scalar volume";
     throw Error(message.str());
   }
+  if (io->GetComponentType() == itk::IOComponentEnum::UNKNOWNCOMPONENTTYPE)
+    throw Error(path + ": its voxel type is not one SliceMesh can read (integers or floats of 1 to 8 bytes)");
   // Memory, before a voxel is allocated: the volume as it will be held (as stored; or as float,
   // beside the file's own voxels while ITK converts them), the mask and the work on them.
   double voxels = 1.0;
@@ -562,6 +565,9 @@ itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
   if (isNiftiName(path))
     checkNiftiOrientation(path, readNifti1Header(path));
   constexpr auto reading = itk::ImageIOFactory::FileModeEnum::ReadMode;
+  // The readers ITK tries on the file, and the one that reads its header, speak on the standard
+  // error of a damaged file; ITK's exception (or SliceMesh's own message below) says it in one line.
+  const SilencedStandardError silenced;
   itk::ImageIOBase::Pointer io = itk::ImageIOFactory::CreateImageIO(path.c_str(), reading);
   const std::string unreadable = path + ": not an image file SliceMesh can read (NIfTI, NRRD, MetaImage, DICOM)";
   if (!io)
@@ -664,6 +670,7 @@ ScalarVolume::Pointer readDicomSeries(const std::string& directory, bool voxels)
   ScalarVolume::Pointer volume;
   try
   {
+    const SilencedStandardError silenced; // GDCM's trace on the files that are not DICOM
     volume = dicomImageFunctions().readSeries(directory, voxels);
   }
   catch (const itk::ExceptionObject& error)

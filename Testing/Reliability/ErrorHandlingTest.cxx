@@ -235,6 +235,27 @@ TEST(ErrorHandling, FilesThatAbortedTheReadersAreRefusedFirst)
   expectFailure(f.outputs, (f.inputs / "list.mhd").string(), cli::UnreadableInput, "names 2 files where its sizes need 4");
 }
 
+TEST(ErrorHandling, ReadersThatSpeakOnStandardErrorLeaveOneLine)
+{
+  // GDCM's trace (a preamble and "DICM", then bytes that are no data set) and the NIfTI library (a
+  // dim[0] of 8) wrote several lines before the error line; MetaIO's unknown element type came out
+  // as ITK's raw exception, with its reader's address.
+  const Folders f = foldersFor("speaking-readers");
+  std::string junk(128, '\0');
+  junk += "DICM";
+  for (int i = 0; i < 5120; ++i)
+    junk += static_cast<char>(i % 256);
+  writeText(f.inputs / "junk.dcm", junk);
+  expectFailure(f.outputs, (f.inputs / "junk.dcm").string(), cli::UnreadableInput, "not an image file");
+  const std::int16_t eightDimensions = 8;
+  expectFailure(f.outputs, niftiWithFields(f.inputs, "dim8.nii", {}, { { 40, eightDimensions } }).string(),
+                cli::UnreadableInput, "not recognized as a NIFTI file");
+  writeText(f.inputs / "foo.raw", std::string(512, '\1'));
+  writeText(f.inputs / "foo.mhd", "ObjectType = Image\nNDims = 3\nDimSize = 8 8 8\nElementSpacing = 1 1 1\n"
+                                  "ElementType = MET_FOO\nElementDataFile = foo.raw\n");
+  expectFailure(f.outputs, (f.inputs / "foo.mhd").string(), cli::UnreadableInput, "its voxel type is not one");
+}
+
 TEST(ErrorHandling, GridsOutsideWhatCanBeMeshedAreRefusedAtReading)
 {
   // Voxel sides of 1e-10 or 1e10 mm (the tiling's points coincided, or memory ran out), sides a
