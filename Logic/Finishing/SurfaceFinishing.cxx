@@ -475,11 +475,13 @@ bool laidOntoTiled(FinishedPiece& piece, const TriangleMesh& tiled, const MeshVa
   const std::vector<char> near = verticesNear(piece.mesh, places, keptRadius(options));
   const std::vector<Point3> before = piece.mesh.points;
   const ClosestPointGrid onTiled(tiled);
-  std::vector<char> fixed = heldVertices(piece.mesh, options);
+  // Vertices on drawn contours were never smoothed: they stay, and so stay held for the widening.
+  const std::vector<char> held = heldVertices(piece.mesh, options);
+  std::vector<char> fixed = held;
   fixed.resize(near.size(), 0);
   std::size_t laid = 0;
   for (std::size_t v = 0; v < near.size(); ++v)
-    if (near[v])
+    if (near[v] && !fixed[v])
     {
       Point3& p = piece.mesh.points[v];
       const ClosestPointGrid::Point q = onTiled.closestPoint(ClosestPointGrid::Point(p.x, p.y, p.z));
@@ -497,8 +499,8 @@ bool laidOntoTiled(FinishedPiece& piece, const TriangleMesh& tiled, const MeshVa
   piece.validation = validation;
   piece.unsmoothedVertices += laid;
   // Laid back, a remesh's triangles can be narrow again where the tiling bends.
-  piece.narrowTrianglesWidened += widenNarrowTriangles(piece.mesh, piece.validation, heldVertices(piece.mesh, options),
-                                                       options.remeshing.targetEdgeLength);
+  piece.narrowTrianglesWidened +=
+    widenNarrowTriangles(piece.mesh, piece.validation, held, options.remeshing.targetEdgeLength);
   return true;
 }
 

@@ -230,6 +230,13 @@ bool endsWith(const std::string& text, const std::string& suffix)
   return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+/** Where a detached header's data file `named` lies: as named if absolute, else beside the header. */
+std::filesystem::path dataFilePath(const std::string& header, const std::string& named)
+{
+  return std::filesystem::path(named).is_absolute() ? std::filesystem::path(named)
+                                                    : std::filesystem::path(header).parent_path() / named;
+}
+
 /** A MetaImage header's "ElementDataFile = LIST [kD]" names one file per k-D block, a line each after
  *  it: as many as the sizes beyond the first k (k = NDims - 1 unless given) make, each of which must
  *  exist. MetaIO reads a shorter list without complaint and leaves the rest of the volume as
@@ -281,9 +288,7 @@ void checkMetaImageList(const std::string& path, const std::vector<std::string>&
   }
   for (const std::string& name : files)
   {
-    const std::filesystem::path data = std::filesystem::path(name).is_absolute()
-                                         ? std::filesystem::path(name)
-                                         : std::filesystem::path(path).parent_path() / name;
+    const std::filesystem::path data = dataFilePath(path, name);
     if (!std::filesystem::exists(data))
       throw Error(path + ": its voxels are partly in '" + name + "', which does not exist (" + data.string() + ")");
   }
@@ -329,9 +334,7 @@ void checkDetachedDataFile(const std::string& path)
     if (named.empty() || named == "LOCAL" || named.rfind("LIST", 0) == 0 || named.find(' ') != std::string::npos ||
         named.find('%') != std::string::npos)
       return;
-    const std::filesystem::path data = std::filesystem::path(named).is_absolute()
-                                         ? std::filesystem::path(named)
-                                         : std::filesystem::path(path).parent_path() / named;
+    const std::filesystem::path data = dataFilePath(path, named);
     if (!std::filesystem::exists(data))
       throw Error(path + ": its voxels are in '" + named + "', which does not exist (" + data.string() + ")");
     return;
@@ -509,6 +512,9 @@ void checkDicomFileMeta(const std::string& path)
   const auto damaged = [&](const std::string& why) {
     return Error(path + ": a damaged DICOM file (" + why + ")");
   };
+  const auto cutOff = [&] {
+    return Error(path + ": a truncated DICOM file (" + std::to_string(fileSize) + " bytes, cut off in its File Meta Information)");
+  };
   // Value representations whose length takes 4 bytes after 2 reserved ones; the others take 2.
   static const std::set<std::string> longLength = { "OB", "OD", "OF", "OL", "OV", "OW", "SQ", "SV", "UC", "UN", "UR", "UT", "UV" };
   static const std::set<std::string> shortLength = { "AE", "AS", "AT", "CS", "DA", "DS", "DT", "FD", "FL", "IS",
@@ -519,7 +525,7 @@ void checkDicomFileMeta(const std::string& path)
     std::array<unsigned char, 12> element{};
     in.read(reinterpret_cast<char*>(element.data()), 8);
     if (in.gcount() < 8)
-      throw Error(path + ": a truncated DICOM file (" + std::to_string(fileSize) + " bytes, cut off in its File Meta Information)");
+      throw cutOff();
     if (element[0] != 0x02 || element[1] != 0x00)
       return; // the data set begins
     const std::string vr(reinterpret_cast<const char*>(element.data()) + 4, 2);
@@ -529,7 +535,7 @@ void checkDicomFileMeta(const std::string& path)
     {
       in.read(reinterpret_cast<char*>(element.data()) + 8, 4);
       if (in.gcount() < 4)
-        throw Error(path + ": a truncated DICOM file (" + std::to_string(fileSize) + " bytes, cut off in its File Meta Information)");
+        throw cutOff();
       length = static_cast<std::uint64_t>(element[8]) | static_cast<std::uint64_t>(element[9]) << 8 |
                static_cast<std::uint64_t>(element[10]) << 16 | static_cast<std::uint64_t>(element[11]) << 24;
       value = at + 12;
@@ -587,9 +593,8 @@ itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
     throw Error(unreadable);
   try
   {
-    CapturedErrorStream quiet; // MetaIO's multi-line complaints; ITK's exception says it in one line
     io->SetFileName(path);
-    io->ReadImageInformation();
+    io->ReadImageInformation(); // MetaIO's multi-line complaints go nowhere (silenced, above)
   }
   catch (const itk::ExceptionObject& error)
   {
