@@ -2,6 +2,8 @@
 // "--longflag=value", "-f value", bare booleans, positional arguments by index, "--" ends options.
 #include "CommandLine.h"
 
+#include "Core/Lowercase.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -92,9 +94,7 @@ void checkValue(const ModuleParameter& p, const std::string& value)
     if (!p.fileExtensions.empty() && p.channel == "output")
     {
       // Outputs are written by extension, so an unknown one is a usage error caught before any work.
-      std::string extension = std::filesystem::path(value).extension().string();
-      std::transform(extension.begin(), extension.end(), extension.begin(),
-                     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+      const std::string extension = lowercase(std::filesystem::path(value).extension().string());
       if (std::find(p.fileExtensions.begin(), p.fileExtensions.end(), extension) == p.fileExtensions.end())
       {
         throw ArgumentError(who + ": '" + value + "' must end in one of " + joined(p.fileExtensions, ", "));

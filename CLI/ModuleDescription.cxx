@@ -1,6 +1,7 @@
 // Reads the Slicer Execution Model XML with VTK's expat-based XML utilities.
 #include "ModuleDescription.h"
 
+#include "Core/Lowercase.h"
 #include "Core/SliceMeshTypes.h"
 
 #include <vtkSmartPointer.h>
@@ -116,10 +117,7 @@ ModuleParameter readParameter(vtkXMLDataElement* element)
     std::istringstream list(extensions);
     for (std::string extension; std::getline(list, extension, ',');)
     {
-      extension = trimmed(extension);
-      std::transform(extension.begin(), extension.end(), extension.begin(),
-                     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-      p.fileExtensions.push_back(extension);
+      p.fileExtensions.push_back(lowercase(trimmed(extension)));
     }
   }
   const auto attributeIsTrue = [element](const char* name)

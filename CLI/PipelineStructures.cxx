@@ -1,6 +1,7 @@
 #include "PipelineStructures.h"
 
 #include "ContourRepair.h"
+#include "Core/Lowercase.h"
 #include "MemoryBudget.h"
 #include "Core/PlanarGeometry.h"
 #include "PipelineStep.h"
@@ -19,12 +20,6 @@ namespace slicemesh::cli
 {
 namespace
 {
-
-std::string lowerCase(std::string text)
-{
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-  return text;
-}
 
 /** How many of `values` are `value`, within 1% of it. */
 std::size_t alikeCount(const std::vector<double>& values, double value)
@@ -177,15 +172,15 @@ std::vector<Structure> labelStructures(std::vector<LabelSource> sources, const s
     std::set<int> wanted(numbers.begin(), numbers.end());
     std::set<std::string> wantedNames;
     for (const std::string& name : names)
-      wantedNames.insert(lowerCase(name));
+      wantedNames.insert(lowercase(name));
     std::vector<LabelSource> chosen;
     std::set<std::string> foundNames; // several labels may share a name: each is picked
     for (const LabelSource& source : sources)
     {
       const bool byNumber = wanted.erase(source.number) > 0;
-      const bool byName = wantedNames.count(lowerCase(source.name)) > 0;
+      const bool byName = wantedNames.count(lowercase(source.name)) > 0;
       if (byName)
-        foundNames.insert(lowerCase(source.name));
+        foundNames.insert(lowercase(source.name));
       if (byNumber || byName)
         chosen.push_back(source);
     }
@@ -205,7 +200,7 @@ std::vector<Structure> labelStructures(std::vector<LabelSource> sources, const s
       {
         message << (segments ? ": no segment named" : ": no label named");
         for (const std::string& name : names)
-          if (wantedNames.count(lowerCase(name)))
+          if (wantedNames.count(lowercase(name)))
             message << " '" << name << "'";
       }
       if (segments || wanted.empty())

@@ -4,6 +4,7 @@
 #include "Core/SliceMeshTypes.h"
 #include "Core/Utf8.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -48,10 +49,12 @@ ColorTable ColorTable::read(const std::string& path)
     {
       for (int c = 0; c < 4 && c + 2 < static_cast<int>(words.size()); ++c)
       {
-        const long component = std::strtol(words[c + 2].c_str(), &end, 10);
-        if (*end != '\0' || component < 0 || component > 255)
-          throw Error(path + ":" + std::to_string(lineNumber) + ": colour components must be integers 0..255");
-        entry.rgba[c] = static_cast<unsigned char>(component);
+        // Slicer writes a colour node's table as each component times 255, so a colour or opacity
+        // that is no multiple of 1/255 (an opacity of 0.5) arrives as 127.5: rounded, not refused.
+        const double component = std::strtod(words[c + 2].c_str(), &end);
+        if (*end != '\0' || !(component >= -0.5 && component < 255.5))
+          throw Error(path + ":" + std::to_string(lineNumber) + ": colour components must be numbers 0..255");
+        entry.rgba[c] = static_cast<unsigned char>(std::lround(std::clamp(component, 0.0, 255.0)));
       }
       if (words.size() >= 6)
       {

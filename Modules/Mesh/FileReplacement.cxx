@@ -1,5 +1,6 @@
 #include "FileReplacement.h"
 
+#include "Core/Lowercase.h"
 #include "Core/SliceMeshTypes.h"
 
 #include <cstdio>
@@ -25,11 +26,12 @@ fs::path folderOf(const fs::path& file)
   return file.has_parent_path() ? file.parent_path() : fs::path(".");
 }
 
-/** ".<stem>.partial-<pid><extension>" beside the target. */
+/** ".<stem>.partial-<pid><extension>" beside the target, the extension in lower case: VTK's PLY
+ *  writer appends ".ply" to a name that does not end in it, and would write somewhere else. */
 std::string temporaryBeside(const fs::path& target)
 {
   return (folderOf(target) / ("." + target.stem().string() + ".partial-" + std::to_string(::getpid()) +
-                                 target.extension().string()))
+                                 lowercase(target.extension().string())))
     .string();
 }
 

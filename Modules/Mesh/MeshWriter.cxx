@@ -1,6 +1,7 @@
 // Stack frame -> physical space, and VTK writers chosen by file extension, written atomically.
 #include "MeshWriter.h"
 
+#include "Core/Lowercase.h"
 #include "DeflateCompressor.h"
 #include "FileReplacement.h"
 
@@ -61,14 +62,6 @@ const char* spaceName(CoordinateSystem system)
 std::string spaceTag(CoordinateSystem system)
 {
   return std::string("SPACE=") + spaceName(system);
-}
-
-std::string lowercaseExtension(const std::filesystem::path& path)
-{
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
 }
 
 /** The mesh as vtkPolyData, with the SPACE string array in its field data (how Slicer tags .vtp).
@@ -430,7 +423,7 @@ void writeMesh(const TriangleMesh& physicalMesh, CoordinateSystem system, const 
                 " triangles are more than a file's 32-bit indices can hold");
   const bool hasAttributes =
     !attributes.cellLabels.empty() || !attributes.cellColors.empty() || !attributes.structures.empty();
-  const std::string extension = lowercaseExtension(std::filesystem::path(path));
+  const std::string extension = lowercase(std::filesystem::path(path).extension().string());
   if (extension != ".vtp" && extension != ".vtk" && extension != ".stl" && extension != ".ply" && extension != ".obj")
   {
     throw Error("cannot write mesh '" + path + "': unknown extension '" + extension +

@@ -1,7 +1,7 @@
 // 3D Slicer's planar contour representation: a VTK polydata of closed polylines, one ROI per file,
 // XML (.vtp, read by VTK) or legacy (.vtk, read by SliceMesh's own reader).
 #include "LegacyPolyDataReader.h"
-#include "Lowercase.h"
+#include "Core/Lowercase.h"
 #include "StructureSet.h"
 
 #include <vtkCallbackCommand.h>

@@ -1,5 +1,5 @@
 #include "LegacyPolyDataReader.h"
-#include "Lowercase.h"
+#include "Core/Lowercase.h"
 
 #include "Core/SliceMeshTypes.h"
 

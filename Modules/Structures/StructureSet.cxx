@@ -1,6 +1,6 @@
 // What kind of contour file a path holds, reading by kind, and choosing ROIs.
 #include "StructureSet.h"
-#include "Lowercase.h"
+#include "Core/Lowercase.h"
 #include "RTStructureSetPlugin.h"
 
 #include "Core/Utf8.h"

@@ -393,6 +393,19 @@ TEST(ColorTables, SlicerFreeSurferAndNameLists)
   EXPECT_EQ(slicer.entry(1).name, "Liver");
   EXPECT_EQ(slicer.entry(1).rgba[0], 221);
   EXPECT_EQ(slicer.entry(2).rgba[3], 128);
+  {
+    // As 3D Slicer writes a colour node whose components are no multiples of 1/255: rounded.
+    std::ofstream fractional(folder + "fractional.ctbl");
+    fractional << "# Color table file\n7 Tumor 229.5 127.49 0 255\n8 Cyst 185.00000000000003 0 1e2 127.5\n";
+  }
+  const ColorTable fractional = ColorTable::read(folder + "fractional.ctbl");
+  EXPECT_EQ(fractional.entry(7).rgba, (std::array<unsigned char, 4>{ 230, 127, 0, 255 }));
+  EXPECT_EQ(fractional.entry(8).rgba, (std::array<unsigned char, 4>{ 185, 0, 100, 128 }));
+  {
+    std::ofstream outOfRange(folder + "out-of-range.ctbl");
+    outOfRange << "1 Liver 256 0 0\n";
+  }
+  EXPECT_THROW(ColorTable::read(folder + "out-of-range.ctbl"), Error);
   const ColorTable freesurfer = ColorTable::read(folder + "FreeSurferColorLUT.txt");
   EXPECT_EQ(freesurfer.entry(17).name, "Left-Hippocampus");
   EXPECT_EQ(freesurfer.entry(17).rgba[3], 255); // FreeSurfer's 0 is opaque

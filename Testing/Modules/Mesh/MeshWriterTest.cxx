@@ -1,6 +1,7 @@
 // writeMesh: every format round-trips through VTK's readers, carries its SPACE tag, and a failed
 // write leaves an existing file untouched.
 #include "MeshWriter.h"
+#include "Core/Lowercase.h"
 #include "TestMeshes.h"
 
 #include <gtest/gtest.h>
@@ -69,7 +70,7 @@ std::string fieldDataSpace(vtkPolyData* polyData)
 
 ReadBack readBack(const fs::path& path)
 {
-  const std::string extension = path.extension().string();
+  const std::string extension = lowercase(path.extension().string());
   ReadBack result;
   if (extension == ".vtp")
   {
@@ -281,9 +282,22 @@ TEST(MeshWriter, VTPStoresBlocksThatBarelyCompressAndStillReadsThemBackExactly)
 
 TEST(MeshWriter, ExtensionIsCaseInsensitive)
 {
-  const fs::path path = freshFolder("uppercase") / "box.STL";
-  writeMesh(testing::box(1, 1, 1), CoordinateSystem::LPS, path.string());
-  EXPECT_TRUE(fs::exists(path));
+  // Every format in upper case, each read back whole, and nothing else left in the folder: VTK's PLY
+  // writer appended ".ply" to a temporary named ".PLY", so the write "failed" and left that file.
+  const fs::path folder = freshFolder("uppercase");
+  for (const std::string extension : { ".VTP", ".VTK", ".STL", ".PLY", ".OBJ", ".Ply" })
+  {
+    const fs::path path = folder / ("box" + extension);
+    writeMesh(testing::box(1, 1, 1), CoordinateSystem::LPS, path.string());
+    EXPECT_EQ(readBack(path).polyData->GetNumberOfPolys(), 12) << extension;
+  }
+  std::size_t files = 0;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder))
+  {
+    ++files;
+    EXPECT_EQ(entry.path().filename().string().find(".partial-"), std::string::npos) << entry.path();
+  }
+  EXPECT_EQ(files, 6u);
 }
 
 TEST(MeshWriter, UnknownExtensionIsAOneLineError)

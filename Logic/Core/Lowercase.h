@@ -1,4 +1,4 @@
-// Internal to the structure readers (not installed): text compared without regard to case, as
+// Text compared without regard to case, as
 // file extensions, DICOM keywords and legacy VTK section names are.
 #ifndef Lowercase_h
 #define Lowercase_h
