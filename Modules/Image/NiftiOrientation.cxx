@@ -1,81 +1,30 @@
-// NIfTI-1 header orientation fields, read directly (ITK exposes only the one it chose).
+// The two orientations of a NIfTI-1 header as voxel -> RAS maps (ITK exposes only the one it chose).
 #include "NiftiOrientation.h"
 
-#include <zlib.h>
+#include "Nifti1Header.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <sstream>
 
 namespace slicemesh
 {
-namespace
-{
-
-template <typename T>
-T field(const unsigned char* header, std::size_t offset, bool swap)
-{
-  unsigned char bytes[sizeof(T)];
-  std::memcpy(bytes, header + offset, sizeof(T));
-  if (swap)
-    std::reverse(bytes, bytes + sizeof(T));
-  T value;
-  std::memcpy(&value, bytes, sizeof(T));
-  return value;
-}
-
-bool isNiftiName(const std::string& path)
-{
-  auto ends = [&](const char* suffix)
-  {
-    const std::size_t n = std::strlen(suffix);
-    if (path.size() < n)
-      return false;
-    std::string tail = path.substr(path.size() - n);
-    std::transform(tail.begin(), tail.end(), tail.begin(), [](unsigned char c) { return std::tolower(c); });
-    return tail == suffix;
-  };
-  return ends(".nii") || ends(".nii.gz") || ends(".hdr") || ends(".hdr.gz");
-}
-
-} // namespace
 
 std::optional<NiftiOrientation> readNiftiOrientation(const std::string& path)
 {
-  if (!isNiftiName(path))
+  const std::optional<Nifti1Header> header = readNifti1Header(path);
+  if (!header)
     return std::nullopt;
-  gzFile file = gzopen(path.c_str(), "rb"); // reads plain files too
-  if (!file)
-    return std::nullopt;
-  unsigned char header[348];
-  const int read = gzread(file, header, sizeof(header));
-  gzclose(file);
-  if (read != static_cast<int>(sizeof(header)))
-    return std::nullopt;
-  bool swap = false;
-  if (field<std::int32_t>(header, 0, false) != 348)
-  {
-    swap = true;
-    if (field<std::int32_t>(header, 0, true) != 348)
-      return std::nullopt; // NIfTI-2 or not NIfTI
-  }
   NiftiOrientation o;
-  float pixdim[8];
-  for (int i = 0; i < 8; ++i)
-    pixdim[i] = field<float>(header, 76 + 4 * i, swap);
-  o.qformCode = field<std::int16_t>(header, 252, swap);
-  o.sformCode = field<std::int16_t>(header, 254, swap);
-  double b = field<float>(header, 256, swap), c = field<float>(header, 260, swap), d = field<float>(header, 264, swap);
-  const double qx = field<float>(header, 268, swap), qy = field<float>(header, 272, swap),
-               qz = field<float>(header, 276, swap);
-  for (int row = 0; row < 3; ++row)
-    for (int column = 0; column < 4; ++column)
-      o.sform[row][column] = field<float>(header, 280 + 16 * row + 4 * column, swap);
+  o.qformCode = header->qformCode;
+  o.sformCode = header->sformCode;
+  for (std::size_t row = 0; row < 3; ++row)
+    for (std::size_t column = 0; column < 4; ++column)
+      o.sform[row][column] = header->sform[4 * row + column];
 
   // NIfTI-1 method 2: R from the quaternion (a >= 0 recovered), scaled by pixdim, qfac on the k column.
   // As nifti_quatern_to_mat44: a tiny remainder is rounding, and b, c, d are then normalized.
+  double b = header->quaternion[0], c = header->quaternion[1], d = header->quaternion[2];
   double a = 1.0 - (b * b + c * c + d * d);
   if (a < 1e-7)
   {
@@ -88,14 +37,14 @@ std::optional<NiftiOrientation> readNiftiOrientation(const std::string& path)
   const double R[3][3] = { { a * a + b * b - c * c - d * d, 2 * (b * c - a * d), 2 * (b * d + a * c) },
                            { 2 * (b * c + a * d), a * a + c * c - b * b - d * d, 2 * (c * d - a * b) },
                            { 2 * (b * d - a * c), 2 * (c * d + a * b), a * a + d * d - c * c - b * b } };
+  const std::array<float, 8>& pixdim = header->pixdim;
   const double qfac = pixdim[0] < 0 ? -1.0 : 1.0;
   const double scale[3] = { pixdim[1], pixdim[2], qfac * pixdim[3] };
-  const double offset[3] = { qx, qy, qz };
-  for (int row = 0; row < 3; ++row)
+  for (std::size_t row = 0; row < 3; ++row)
   {
-    for (int column = 0; column < 3; ++column)
+    for (std::size_t column = 0; column < 3; ++column)
       o.qform[row][column] = R[row][column] * scale[column];
-    o.qform[row][3] = offset[row];
+    o.qform[row][3] = header->quaternion[3 + row]; // qoffset_x, y, z
   }
   return o;
 }

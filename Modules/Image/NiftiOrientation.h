@@ -21,8 +21,8 @@ struct NiftiOrientation
   Affine3x4 sform{}; ///< voxel index -> RAS mm, NIfTI "method 3" (srow_x/y/z)
 };
 
-/** Reads the orientation fields of a NIfTI-1 header (.nii, .nii.gz, .hdr); nothing for other files
- *  or a header that cannot be read. */
+/** The orientations of a NIfTI-1 file's header (readNifti1Header); nothing for other files or a
+ *  header that cannot be read. */
 std::optional<NiftiOrientation> readNiftiOrientation(const std::string& path);
 
 /** When both forms are set (code > 0) and map some corner voxel more than `toleranceMm` apart, a

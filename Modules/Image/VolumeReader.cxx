@@ -5,6 +5,7 @@
 #include "DicomImagePlugin.h"
 #include "ItkErrorText.h"
 #include "MemoryBudget.h"
+#include "Nifti1Header.h"
 #include "SilencedStandardError.h"
 
 #include "Core/SliceMeshTypes.h"
@@ -294,11 +295,6 @@ void checkMetaImageList(const std::string& path, const std::vector<std::string>&
   }
 }
 
-bool isNiftiName(const std::string& path)
-{
-  return endsWith(path, ".nii") || endsWith(path, ".nii.gz") || endsWith(path, ".NII") || endsWith(path, ".NII.GZ");
-}
-
 /** A detached header's (MetaImage .mhd, NRRD .nhdr) data file, when it names one file, must exist:
  *  the readers' own message names the header as the file that "cannot be read". A MetaImage list
  *  is checked by checkMetaImageList; NRRD's lists, patterns and LOCAL data are left to the readers. */
@@ -359,66 +355,6 @@ private:
   std::ostringstream m_Text;
   std::streambuf*    m_Saved;
 };
-
-/** The fields of a NIfTI-1 header (plain or gzip) that SliceMesh checks itself, in the file's byte
- *  order; empty when the file is shorter than a header or not NIfTI-1 (ITK then says what is wrong). */
-struct Nifti1Header
-{
-  std::array<std::int16_t, 8> dim{};
-  std::int16_t bitpix = 0;   ///< bits per stored voxel, before any scl_slope / scl_inter scaling
-  std::array<float, 8> pixdim{};
-  float voxOffset = 0.0f;    ///< where the voxels start
-  std::int16_t qformCode = 0, sformCode = 0;
-  std::array<float, 6> quaternion{}; ///< quatern_b, c, d, then qoffset_x, y, z
-  std::array<float, 12> sform{};     ///< srow_x, srow_y, srow_z
-};
-
-std::optional<Nifti1Header> readNifti1Header(const std::string& path)
-{
-  gzFile file = gzopen(path.c_str(), "rb");
-  if (!file)
-    return std::nullopt;
-  unsigned char bytes[348];
-  const int read = gzread(file, bytes, sizeof bytes);
-  gzclose(file);
-  if (read != static_cast<int>(sizeof bytes))
-    return std::nullopt;
-  auto field = [&](int offset, int size, bool swap)
-  {
-    std::array<unsigned char, 4> value{};
-    for (int i = 0; i < size; ++i)
-      value[static_cast<std::size_t>(i)] = bytes[offset + (swap ? size - 1 - i : i)];
-    return value;
-  };
-  auto int32 = [&](int offset, bool swap)
-  {
-    std::int32_t v;
-    std::memcpy(&v, field(offset, 4, swap).data(), 4);
-    return v;
-  };
-  bool swap = false;
-  if (int32(0, false) != 348)
-  {
-    if (int32(0, true) != 348)
-      return std::nullopt;
-    swap = true;
-  }
-  Nifti1Header header;
-  for (int i = 0; i < 8; ++i)
-  {
-    std::memcpy(&header.dim[static_cast<std::size_t>(i)], field(40 + 2 * i, 2, swap).data(), 2);
-    std::memcpy(&header.pixdim[static_cast<std::size_t>(i)], field(76 + 4 * i, 4, swap).data(), 4);
-  }
-  std::memcpy(&header.bitpix, field(72, 2, swap).data(), 2);
-  std::memcpy(&header.voxOffset, field(108, 4, swap).data(), 4);
-  std::memcpy(&header.qformCode, field(252, 2, swap).data(), 2);
-  std::memcpy(&header.sformCode, field(254, 2, swap).data(), 2);
-  for (int i = 0; i < 6; ++i)
-    std::memcpy(&header.quaternion[static_cast<std::size_t>(i)], field(256 + 4 * i, 4, swap).data(), 4);
-  for (int i = 0; i < 12; ++i)
-    std::memcpy(&header.sform[static_cast<std::size_t>(i)], field(280 + 4 * i, 4, swap).data(), 4);
-  return header;
-}
 
 /** An uncompressed single-file NIfTI holds its voxels after a header of at least 352 bytes; ITK 5.2
  *  reads a truncated one without complaint (the missing voxels come out as zeros). For NIfTI-1 the
@@ -568,8 +504,7 @@ void checkDicomFileMeta(const std::string& path)
 itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
 {
   checkDicomFileMeta(path);
-  if (isNiftiName(path))
-    checkNiftiOrientation(path, readNifti1Header(path));
+  checkNiftiOrientation(path, readNifti1Header(path));
   constexpr auto reading = itk::ImageIOFactory::FileModeEnum::ReadMode;
   // The readers ITK tries on the file, and the one that reads its header, speak on the standard
   // error of a damaged file; ITK's exception (or SliceMesh's own message below) says it in one line.
@@ -617,7 +552,7 @@ itk::ImageIOBase::Pointer checkedImageHeader(const std::string& path, bool asSto
   itk::ImageIOBase::Pointer io = readImageHeader(path);
   checkHeader(path, io, asStored);
   // NIfTI-1 (plain or gzip): its header read once, for the two checks.
-  const std::optional<Nifti1Header> header = isNiftiName(path) ? readNifti1Header(path) : std::nullopt;
+  const std::optional<Nifti1Header> header = readNifti1Header(path);
   checkNiftiFileSize(path, io, header);
   checkNiftiSpacing(path, header);
   return io;

@@ -128,6 +128,22 @@ fs::path niftiWithSpacing(const fs::path& folder, const std::string& name, int a
   return niftiWithFields(folder, name, { { 80 + 4 * axis, spacing } }); // NIfTI-1: float pixdim[8] at byte 76
 }
 
+/** The NIfTI-1 file `single` (from niftiWithFields) as a pair, name.hdr and name.img: the same header
+ *  with the pair's magic and the voxels from the start of the .img. `single` is removed. */
+fs::path asNiftiPair(const fs::path& single, const std::string& name)
+{
+  const std::string bytes = readBytes(single);
+  fs::remove(single);
+  std::string header = bytes.substr(0, 348);
+  header.replace(344, 4, std::string("ni1\0", 4));
+  const float voxOffset = 0.0f;
+  std::memcpy(&header[108], &voxOffset, sizeof voxOffset);
+  const fs::path path = single.parent_path() / (name + ".hdr");
+  writeText(path, header);
+  writeText(single.parent_path() / (name + ".img"), bytes.substr(352));
+  return path;
+}
+
 TEST(ErrorHandling, MissingInput)
 {
   const Folders f = foldersFor("missing");
@@ -233,6 +249,24 @@ TEST(ErrorHandling, FilesThatAbortedTheReadersAreRefusedFirst)
   writeText(f.inputs / "list.mhd", "ObjectType = Image\nNDims = 3\nDimSize = 8 8 4\nElementSpacing = 1 1 1\n"
                                    "ElementType = MET_UCHAR\nElementDataFile = LIST\nslice0.raw\nslice1.raw\n");
   expectFailure(f.outputs, (f.inputs / "list.mhd").string(), cli::UnreadableInput, "names 2 files where its sizes need 4");
+}
+
+TEST(ErrorHandling, ANiftiPairsHeaderIsCheckedAsASingleFilesIs)
+{
+  // A .hdr/.img pair has the header of a .nii: an sform that is not finite aborted the process in
+  // ITK's reader there too, and a zero pixdim was meshed at a made-up 1 mm.
+  const Folders f = foldersFor("nifti-pair");
+  const float nan = std::nanf("");
+  const std::int16_t inUse = 1;
+  const fs::path sform = asNiftiPair(niftiWithFields(f.inputs, "s.nii", { { 280, nan } }, { { 254, inUse } }), "sform");
+  expectFailure(f.outputs, sform.string(), cli::UnreadableInput, "(sform) holds a value that is not a finite number");
+  const fs::path zero = asNiftiPair(niftiWithSpacing(f.inputs, "z.nii", 0, 0.0f), "zero");
+  expectFailure(f.outputs, zero.string(), cli::UnreadableInput,
+                "spacing along axis 0 is 0 in the NIfTI header; SliceMesh needs positive, finite voxel spacing");
+  // The pair as written is read.
+  const fs::path sound = asNiftiPair(niftiWithSpacing(f.inputs, "o.nii", 0, 0.8f), "sound");
+  const RunResult r = runSliceMesh(quoted(sound.string()) + " " + quoted((f.outputs / "sound.vtp").string()));
+  EXPECT_EQ(r.exitCode, cli::Success) << r.err;
 }
 
 TEST(ErrorHandling, ReadersThatSpeakOnStandardErrorLeaveOneLine)
