@@ -337,6 +337,50 @@ void checkDetachedDataFile(const std::string& path)
   }
 }
 
+/** A MetaImage's geometry fields must hold finite numbers: MetaIO refuses a "nan" or "inf" there
+ *  with "File cannot be read ... Reason: Invalid argument", as if the file could not be opened.
+ *  The header is text up to its ElementDataFile line (the voxels of a .mha follow it). */
+void checkMetaImageGeometry(const std::string& path)
+{
+  std::string lower = path;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (!endsWith(lower, ".mha") && !endsWith(lower, ".mhd"))
+    return;
+  // The fields MetaIO reads as numbers that place the voxels (Offset has two other names).
+  static const std::set<std::string> geometry = { "ElementSpacing", "ElementSize", "Offset", "Origin", "Position",
+                                                  "TransformMatrix", "Rotation", "Orientation", "CenterOfRotation" };
+  // A header is a few hundred bytes: a file that is no MetaImage is not read whole.
+  constexpr std::size_t longestHeader = 1 << 16;
+  std::ifstream in(path, std::ios::binary);
+  std::string text(longestHeader, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() == longestHeader)
+    text.erase(text.find_last_of('\n') + 1); // a line cut off would read as another value
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);)
+  {
+    const std::size_t equals = line.find('=');
+    if (equals == std::string::npos)
+      continue;
+    std::string key = line.substr(0, equals);
+    key.erase(0, key.find_first_not_of(" \t"));
+    key.erase(key.find_last_not_of(" \t") + 1);
+    if (key == "ElementDataFile")
+      return;
+    if (!geometry.count(key))
+      continue;
+    std::istringstream values(line.substr(equals + 1));
+    for (std::string value; values >> value;)
+    {
+      char* end = nullptr;
+      const double number = std::strtod(value.c_str(), &end);
+      if (end == value.c_str() || *end != '\0' || !std::isfinite(number))
+        throw Error(path + ": its " + key + " holds '" + oneLine(value) + "', which is not a finite number");
+    }
+  }
+}
+
 /** Catches what a reader writes to std::cerr while it runs: MetaIO reports a short read of the
  *  voxels there (several lines) and carries on with garbage. Restores std::cerr when it goes. */
 class CapturedErrorStream
@@ -504,6 +548,7 @@ void checkDicomFileMeta(const std::string& path)
 itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
 {
   checkDicomFileMeta(path);
+  checkMetaImageGeometry(path);
   checkNiftiOrientation(path, readNifti1Header(path));
   constexpr auto reading = itk::ImageIOFactory::FileModeEnum::ReadMode;
   // The readers ITK tries on the file, and the one that reads its header, speak on the standard

@@ -375,11 +375,40 @@ TEST(ErrorHandling, ZeroNegativeAndNonFiniteSpacing)
                 niftiWithSpacing(f.inputs, "inf.nii", 2, std::numeric_limits<float>::infinity()).string(),
                 cli::UnreadableInput, "spacing");
   expectFailure(f.outputs, niftiWithSpacing(f.inputs, "zero.nii", 0, 0.0f).string(), cli::UnreadableInput, "spacing");
-  // Text formats that cannot even parse a non-finite spacing still fail on one line.
+  // NRRD cannot even parse a non-finite spacing: it still fails on one line.
   writeNrrd(f.inputs / "nan.nrrd", "(nan,0,0) (0,1,0) (0,0,1)");
   expectFailure(f.outputs, (f.inputs / "nan.nrrd").string(), cli::UnreadableInput, "nan.nrrd");
-  writeMetaImageWith(f.inputs / "nan.mha", "NDims = 3\nDimSize = 8 8 8\nElementSpacing = 1 nan 1\n", 512);
-  expectFailure(f.outputs, (f.inputs / "nan.mha").string(), cli::UnreadableInput, "nan.mha");
+}
+
+TEST(ErrorHandling, AMetaImageWhoseSpacingOrOffsetIsNotFiniteNamesTheField)
+{
+  // MetaIO refused these with "File cannot be read ... Reason: Invalid argument", as if the file
+  // could not be opened.
+  const Folders f = foldersFor("metaimage-geometry");
+  const std::string grid = "NDims = 3\nDimSize = 8 8 8\n";
+  writeMetaImageWith(f.inputs / "nan.mha", grid + "ElementSpacing = 1 nan 1\n", 512);
+  writeMetaImageWith(f.inputs / "inf.mha", grid + "ElementSpacing = 1 1 inf\n", 512);
+  writeMetaImageWith(f.inputs / "offset.mha", grid + "ElementSpacing = 1 1 1\nOffset = 0 -inf 0\n", 512);
+  writeText(f.inputs / "origin.raw", std::string(512, '\1'));
+  writeText(f.inputs / "origin.mhd", "ObjectType = Image\n" + grid + "ElementSpacing = 1 1 1\nOrigin = nan 0 0\n"
+                                     "ElementType = MET_UCHAR\nElementDataFile = origin.raw\n");
+  const std::vector<std::pair<std::string, std::string>> cases{
+    { "nan.mha", "its ElementSpacing holds 'nan', which is not a finite number" },
+    { "inf.mha", "its ElementSpacing holds 'inf', which is not a finite number" },
+    { "offset.mha", "its Offset holds '-inf', which is not a finite number" },
+    { "origin.mhd", "its Origin holds 'nan', which is not a finite number" },
+  };
+  for (const auto& [name, message] : cases)
+  {
+    expectFailure(f.outputs, (f.inputs / name).string(), cli::UnreadableInput, (f.inputs / name).string() + ": " + message);
+    const RunResult r = runSliceMesh(quoted((f.inputs / name).string()) + " " + quoted((f.outputs / "out.vtp").string()));
+    EXPECT_EQ(r.err.find("cannot be read"), std::string::npos) << r.err;
+  }
+  // The same where the image is only read for its geometry (contours given).
+  const fs::path contours = f.inputs / "contours.json";
+  writeText(contours, R"({"rois": [{"name": "A", "slices": [{"z": 0, "polygons": [[[0, 0], [5, 0], [5, 5]]]}]}]})");
+  expectFailure(f.outputs, (f.inputs / "offset.mha").string(), cli::UnreadableInput, "its Offset holds '-inf'",
+                "--inputContours " + quoted(contours.string()));
 }
 
 TEST(ErrorHandling, SingularDirection)
