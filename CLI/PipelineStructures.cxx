@@ -122,10 +122,11 @@ Structure maskStructure(StoredVolume volume, const PipelineSettings& settings, s
   return s;
 }
 
-std::vector<LabelSource> labelMapSources(const StoredVolume& volume, const ColorTable& colors)
+std::vector<LabelSource> labelMapSources(const StoredVolume& volume, const ColorTable& colors, NegativeLabels negative)
 {
   std::vector<LabelSource> sources;
-  const auto index = [&] { return std::visit([](const auto& image) { return indexLabels(image.GetPointer()); }, volume); };
+  const auto index = [&]
+  { return std::visit([negative](const auto& image) { return indexLabels(image.GetPointer(), negative); }, volume); };
   for (const LabelExtent& e : guarded(EmptySegmentation, index))
   {
     const LabelColor entry = colors.entry(e.label);

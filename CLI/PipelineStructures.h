@@ -55,8 +55,8 @@ struct LabelSource
 };
 
 /** Every non-zero label of a label map, in increasing order, named and coloured by the table; one
- *  pass over the volume finds them all. */
-std::vector<LabelSource> labelMapSources(const StoredVolume& volume, const ColorTable& colors);
+ *  pass over the volume finds them all. `negative`: whether negative values are labels (indexLabels). */
+std::vector<LabelSource> labelMapSources(const StoredVolume& volume, const ColorTable& colors, NegativeLabels negative);
 
 /** Every segment of a segmentation file, in the file's order, named and coloured by the file; one
  *  pass over each layer finds them all. A segment without voxels keeps an empty extent. */

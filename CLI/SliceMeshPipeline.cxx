@@ -308,8 +308,13 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
                                  settings.multiLabel.labelNames, true, settings);
   }
   else if (perLabel)
-    structures = labelStructures(labelMapSources(volume, colors), settings.multiLabel.labels,
+  {
+    // A volume given as a label map has its negative values meshed as labels, as --label does.
+    const NegativeLabels negative =
+      settings.segmentation.kind == InputKind::LabelMap ? NegativeLabels::Allowed : NegativeLabels::Refused;
+    structures = labelStructures(labelMapSources(volume, colors, negative), settings.multiLabel.labels,
                                  settings.multiLabel.labelNames, false, settings);
+  }
   else
     structures.push_back(maskStructure(std::move(volume), settings, &inputKindChoice));
   // The masks are cut: the volume (or the segmentation's layers) is no longer needed.

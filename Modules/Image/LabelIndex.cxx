@@ -15,22 +15,24 @@ namespace slicemesh
 namespace
 {
 
-/** Whether a voxel value is no label: negative, fractional, not finite, or 2^31 or more. */
+/** Whether a non-zero voxel value is no label: fractional, not finite, beyond an int (2^31 or more,
+ *  under -2^31), or negative unless negative labels are allowed. */
 template <typename Pixel>
-bool notALabel(Pixel value)
+bool notALabel(Pixel value, NegativeLabels negative)
 {
+  if constexpr (std::is_signed_v<Pixel>)
+    if (value < Pixel(0) && negative == NegativeLabels::Refused)
+      return true;
   if constexpr (std::is_floating_point_v<Pixel>)
-    return !(value > 0.0f) || value >= 2147483648.0f || std::floor(value) != value;
-  else if constexpr (std::is_signed_v<Pixel>)
-    return value < 0;
+    return !(value >= -2147483648.0f && value < 2147483648.0f) || std::floor(value) != value; // NaN fails the first
   else
-    return static_cast<std::uint64_t>(value) >= 2147483648u; // four unsigned bytes may pass a label's int
+    return static_cast<std::int64_t>(value) >= 2147483648LL; // four unsigned bytes may pass a label's int
 }
 
 } // namespace
 
 template <typename TImage>
-std::vector<LabelExtent> indexLabels(const TImage* labelMap)
+std::vector<LabelExtent> indexLabels(const TImage* labelMap, NegativeLabels negative)
 {
   using Pixel = typename TImage::PixelType;
   const auto region = labelMap->GetBufferedRegion();
@@ -47,20 +49,27 @@ std::vector<LabelExtent> indexLabels(const TImage* labelMap)
         const Pixel value = *voxel;
         if (value == Pixel(0))
           continue;
-        if (notALabel(value))
+        if (notALabel(value, negative))
         {
+          const double asDouble = static_cast<double>(value);
+          const bool whole = std::isfinite(asDouble) && std::floor(asDouble) == asDouble;
           std::ostringstream message;
           message.precision(9); // a float's every digit: 1.0000001 is no label, "1" would say it is
           message << "voxel (" << i + start[0] << ", " << j + start[1] << ", " << k + start[2] << ") holds "
-                  << +value
-                  << (value > Pixel(0) && std::isfinite(static_cast<double>(value)) &&
-                          std::floor(static_cast<double>(value)) == static_cast<double>(value)
-                        ? ": a label above 2147483647, the largest SliceMesh names"
-                        : ": not a label map (labels are non-negative integers)");
+                  << +value;
+          if (whole && asDouble > 0.0)
+            message << ": a label above 2147483647, the largest SliceMesh names";
+          else if (whole && negative == NegativeLabels::Allowed)
+            message << ": a label below -2147483648, the smallest SliceMesh names";
+          else if (whole)
+            message << ": a negative value, which is a label only in a volume given with --inputKind LabelMap";
+          else
+            message << ": not a label map (labels are whole numbers)";
           throw Error(message.str());
         }
         const int label = static_cast<int>(value);
-        LabelExtent& e = label < static_cast<int>(table.size()) ? table[label] : extents[label];
+        // The common small labels in the table; negative and large ones in the map.
+        LabelExtent& e = label >= 0 && label < static_cast<int>(table.size()) ? table[label] : extents[label];
         const std::array<long, 3> index{ i + start[0], j + start[1], k + start[2] };
         if (e.voxels++ == 0)
         {
@@ -74,12 +83,16 @@ std::vector<LabelExtent> indexLabels(const TImage* labelMap)
           e.upper[a] = std::max(e.upper[a], index[a]);
         }
       }
+  // In increasing order: the map's negative labels, the table's, the map's large ones.
   std::vector<LabelExtent> labels;
+  auto beyond = extents.begin();
+  for (; beyond != extents.end() && beyond->first < 0; ++beyond)
+    labels.push_back(beyond->second);
   for (const LabelExtent& e : table)
     if (e.voxels)
       labels.push_back(e);
-  for (const auto& entry : extents)
-    labels.push_back(entry.second);
+  for (; beyond != extents.end(); ++beyond)
+    labels.push_back(beyond->second);
   return labels;
 }
 
@@ -124,7 +137,7 @@ MaskVolume::Pointer cropLabelMask(const TImage* labelMap, const LabelExtent& ext
 
 // Every image type a StoredVolume holds.
 #define SLICEMESH_LABEL_INDEX(Pixel)                                                                         \
-  template std::vector<LabelExtent> indexLabels(const itk::Image<Pixel, 3>*);                                \
+  template std::vector<LabelExtent> indexLabels(const itk::Image<Pixel, 3>*, NegativeLabels);                \
   template MaskVolume::Pointer cropLabelMask(const itk::Image<Pixel, 3>*, const LabelExtent&);
 SLICEMESH_LABEL_INDEX(float)
 SLICEMESH_LABEL_INDEX(std::uint8_t)

@@ -785,6 +785,41 @@ TEST(EndToEnd, AnAutomaticInputKindIsSaidWithItsReason)
 }
 
 } // namespace
+TEST(EndToEnd, ALabelMapsNegativeLabelsAreMeshedByLabelAndByLabels)
+{
+  // A signed label map given as one: --label -5 meshed label -5, while --labels -5 and one mesh per
+  // label refused the whole map for its negative voxels. Boxes of 4 x 4 x 4 voxels (1 mm): -5 and 3.
+  const fs::path folder = freshFolder("e2e-negative-labels");
+  const fs::path input = folder / "signed.mha";
+  writeMetaImageOf<std::int16_t>(input, { 14, 8, 8 }, { 1.0, 1.0, 1.0 }, [](int i, int j, int k) -> std::int16_t
+                                 { return j < 2 || j >= 6 || k < 2 || k >= 6 ? 0 : i >= 2 && i < 6 ? -5 : i >= 8 && i < 12 ? 3 : 0; });
+  const std::string given = "--inputKind LabelMap ";
+  const auto volumeOf = [&](const std::string& options, const std::string& name)
+  {
+    const fs::path parameters = folder / (name + ".params");
+    const RunResult r = runSliceMesh(given + options + " --returnparameterfile " + quoted(parameters.string()) + " " +
+                                     quoted(input.string()) + " " + quoted((folder / (name + ".vtp")).string()));
+    EXPECT_EQ(r.exitCode, cli::Success) << options << ": " << r.err;
+    return r.exitCode == cli::Success ? std::stod(returnParameterMap(parameters).at("volume")) : 0.0;
+  };
+  const double byLabel = volumeOf("--label -5", "label");
+  EXPECT_NEAR(byLabel, 64.0, 0.1 * 64.0);
+  EXPECT_NEAR(volumeOf("--labels -5 --outputDirectory " + quoted((folder / "one").string()), "labels"), byLabel, 0.01 * byLabel);
+  EXPECT_TRUE(fs::exists(folder / "one" / "-05_Label_-5.vtp"));
+  EXPECT_NEAR(volumeOf("--splitLabels --outputDirectory " + quoted((folder / "all").string()), "all"), 2.0 * byLabel,
+              0.02 * byLabel);
+  EXPECT_TRUE(fs::exists(folder / "all" / "-05_Label_-5.vtp"));
+  EXPECT_TRUE(fs::exists(folder / "all" / "003_Label_3.vtp"));
+
+  // Not given as a label map, a volume with negative values is none (a CT's): one mesh per label
+  // refuses it and says how to mesh them.
+  const RunResult automatic = runSliceMesh("--splitLabels " + quoted(input.string()) + " " + quoted((folder / "auto.vtp").string()));
+  EXPECT_EQ(automatic.exitCode, cli::EmptySegmentation) << automatic.err;
+  EXPECT_NE(automatic.err.find("holds -5: a negative value, which is a label only in a volume given with --inputKind LabelMap"),
+            std::string::npos)
+    << automatic.err;
+}
+
 TEST(EndToEnd, AShearedGridsReportSaysWhatItsFileHolds)
 {
   // NRRD can state axes that are not at right angles (here the second leans 0.3 mm per mm towards

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <random>
 
 namespace slicemesh
@@ -185,6 +186,57 @@ TEST_F(StoredVolumeTest, LabelsAboveOneByteGiveTheBoxesAndMasksOfFloat)
   }
   EXPECT_EQ(extents[1].lower, (std::array<long, 3>{ 6, 1, 2 }));
   EXPECT_EQ(extents[1].upper, (std::array<long, 3>{ 10, 3, 5 }));
+}
+
+TEST_F(StoredVolumeTest, NegativeLabelsAreIndexedOnlyWhenAllowed)
+{
+  // A signed label map: -5000 and -5 (below the table of small labels), 3, and 5000 (beyond it).
+  write(image<Int16Volume>(
+          [](long i, long j, long k) -> int
+          {
+            if (k >= 4)
+              return 0;
+            return i < 3 ? -5000 : i < 6 ? -5 : i < 9 ? 3 : j < 5 ? 5000 : 0;
+          })
+          .GetPointer(),
+        path("signed.nrrd"));
+  const StoredVolume stored = readStoredVolume(path("signed.nrrd"));
+  const auto* labelMap = std::get<Int16Volume::Pointer>(stored).GetPointer();
+  const ScalarVolume::Pointer asFloat = readVolume(path("signed.nrrd"));
+
+  // Refused, a negative voxel is named (a CT's values are no labels).
+  for (const auto& index : { std::function<void()>([&] { indexLabels(labelMap); }),
+                             std::function<void()>([&] { indexLabels(asFloat); }) })
+  {
+    try
+    {
+      index();
+      ADD_FAILURE() << "a negative voxel was taken for a label";
+    }
+    catch (const Error& e)
+    {
+      EXPECT_STREQ(e.what(), "voxel (0, 0, 0) holds -5000: a negative value, which is a label only in a volume given "
+                             "with --inputKind LabelMap");
+    }
+  }
+  // Allowed, they are labels in increasing order, with their boxes, from the stored or float volume.
+  const std::vector<LabelExtent> extents = indexLabels(labelMap, NegativeLabels::Allowed);
+  const std::vector<LabelExtent> floatExtents = indexLabels(asFloat, NegativeLabels::Allowed);
+  ASSERT_EQ(extents.size(), 4u);
+  ASSERT_EQ(floatExtents.size(), 4u);
+  const int expectedLabels[] = { -5000, -5, 3, 5000 };
+  const std::size_t expectedVoxels[] = { 3 * 10 * 4, 3 * 10 * 4, 3 * 10 * 4, 3 * 5 * 4 };
+  for (std::size_t n = 0; n < extents.size(); ++n)
+  {
+    SCOPED_TRACE(expectedLabels[n]);
+    EXPECT_EQ(extents[n].label, expectedLabels[n]);
+    EXPECT_EQ(extents[n].voxels, expectedVoxels[n]);
+    EXPECT_EQ(floatExtents[n].label, expectedLabels[n]);
+    EXPECT_EQ(floatExtents[n].voxels, expectedVoxels[n]);
+    EXPECT_TRUE(sameMask(cropLabelMask(labelMap, extents[n]), cropLabelMask(asFloat, floatExtents[n])));
+  }
+  EXPECT_EQ(extents[1].lower, (std::array<long, 3>{ 3, 0, 0 }));
+  EXPECT_EQ(extents[1].upper, (std::array<long, 3>{ 5, 9, 3 }));
 }
 
 TEST_F(StoredVolumeTest, SegmentationIsTheMaskOfTheFloatVolume)
