@@ -3,6 +3,7 @@
 #include "ContourRepair.h"
 #include "Core/Lowercase.h"
 #include "MemoryBudget.h"
+#include "Core/MeasureText.h"
 #include "Core/PlanarGeometry.h"
 #include "PipelineStep.h"
 #include "SmallComponentRemoval.h"
@@ -11,7 +12,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <iomanip>
 #include <iostream>
 #include <set>
 #include <sstream>
@@ -490,8 +490,8 @@ std::vector<Structure> roiStructures(const StructureSet& set, const std::optiona
     {
       const double triangles = estimatedTilingTriangles(s.contours.stack, s.contours.spacing[0]);
       std::ostringstream what;
-      what << std::fixed << std::setprecision(1) << "tiled across its largest gap between slices ("
-           << largestGap(s.contours.stack) << " mm), about " << triangles / 1e6 << " million triangles,";
+      what << "tiled across its largest gap between slices (" << measureText(largestGap(s.contours.stack), 1)
+           << " mm), about " << measureText(triangles / 1e6, 1) << " million triangles,";
       checkMemoryBudget(what.str(), tilingMemoryBytes(triangles));
     }
     catch (const Error& e)

@@ -66,16 +66,6 @@ std::string percent(double fraction)
 
 } // namespace
 
-std::string measureText(double value, int decimals)
-{
-  std::ostringstream out;
-  if (value != 0.0 && std::abs(value) < 0.5 * std::pow(10.0, -decimals))
-    out << std::setprecision(3) << value;
-  else
-    out << std::fixed << std::setprecision(decimals) << value;
-  return out.str();
-}
-
 std::string finishSummary(const RunQuality& q)
 {
   const std::array<std::size_t, 3>& pieces = q.piecesByFinish;
@@ -216,10 +206,10 @@ std::string qualitySummary(const MeshValidation& v, const RunQuality& q, bool ea
   else
     line << "undefined";
   line << std::fixed << std::setprecision(1) << ", min angle " << q.shape.minAngleDegrees << " deg, <30 deg "
-       << percent(q.shape.fractionBelow30) << ", <10 deg " << percent(q.shape.fractionBelow10) << std::setprecision(2)
-       << ", aspect ratio mean " << q.shape.meanAspectRatio << " max " << q.shape.maxAspectRatio << std::setprecision(1)
-       << ", area " << measureText(v.area, 1) << " mm^2, point/slice spacing " << std::setprecision(2)
-       << (q.sliceSpacing > 0.0 ? q.pointSpacing / q.sliceSpacing : 0.0)
+       << percent(q.shape.fractionBelow30) << ", <10 deg " << percent(q.shape.fractionBelow10)
+       << ", aspect ratio mean " << measureText(q.shape.meanAspectRatio, 2) << " max "
+       << measureText(q.shape.maxAspectRatio, 2) << ", area " << measureText(v.area, 1)
+       << " mm^2, point/slice spacing " << measureText(q.sliceSpacing > 0.0 ? q.pointSpacing / q.sliceSpacing : 0.0, 2)
        << ", Dirichlet energy of the tiling " << measureText(q.dirichlet.energy, 1) << " mm^2";
   if (!q.stageSeconds.empty())
   {

@@ -6,6 +6,7 @@
 #include "Measures/DirichletEnergy.h"
 #include "Measures/MeshQuality.h"
 #include "Measures/MeshValidation.h"
+#include "Core/MeasureText.h"
 #include "Core/SliceMeshTypes.h"
 
 #include <chrono>
@@ -72,9 +73,6 @@ struct RunQuality
   std::vector<std::pair<std::string, double>> stageSeconds;
 };
 
-/** `value` with `decimals` decimals, as the summary prints a measure; in three significant digits
- *  where that would round a non-zero value to 0 (a structure on a micrometre grid). */
-std::string measureText(double value, int decimals);
 
 /** The finishing part of the summary: "finish Remeshed (target edge 1.14 mm)"; when some pieces got
  *  less than asked, "finish Remeshed (target edge 1.14 mm; 3 of 2149 pieces 2 smoothed only, 1 left

@@ -3,6 +3,7 @@
 #include "Core/AreaNormal.h"
 #include "Core/ParallelFor.h"
 #include "Core/DisjointSets.h"
+#include "Core/MeasureText.h"
 #include "Measures/ComponentOrientation.h"
 #include "Measures/EdgeUses.h"
 #include "Measures/SelfIntersections.h"
@@ -11,7 +12,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iomanip>
 #include <numeric>
 #include <sstream>
 
@@ -43,8 +43,8 @@ std::string MeshValidation::summary() const
   if (misorientedComponents > 0)
     out << ", " << misorientedComponents << (misorientedComponents == 1 ? " component" : " components")
         << " facing the wrong way";
-  out << ", " << components << (components == 1 ? " component" : " components") << ", volume " << std::fixed
-      << std::setprecision(1) << volume << " mm^3";
+  out << ", " << components << (components == 1 ? " component" : " components") << ", volume "
+      << measureText(volume, 1) << " mm^3";
   return out.str();
 }
 

@@ -2,6 +2,7 @@
 // per check (cheap: a few small files).
 #include "MemoryBudget.h"
 
+#include "Core/MeasureText.h"
 #include "Core/SliceMeshTypes.h"
 
 #include <algorithm>
@@ -68,7 +69,7 @@ std::string gibibytes(double bytes)
   if (bytes < 1024.0 * mebibyte)
     text << std::fixed << std::setprecision(0) << std::ceil(bytes / mebibyte) << " MiB";
   else
-    text << std::fixed << std::setprecision(1) << bytes / (1024.0 * mebibyte) << " GiB";
+    text << measureText(bytes / (1024.0 * mebibyte), 1) << " GiB";
   return text.str();
 }
 

@@ -3,6 +3,8 @@
 
 #include "Nifti1Header.h"
 
+#include "Core/MeasureText.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -108,9 +110,8 @@ std::optional<std::string> niftiOrientationWarning(const std::string& path, cons
                      : fromQform <= toleranceMm ? "the qform"
                                                 : "neither exactly (ITK made the sform orthonormal)";
   std::ostringstream message;
-  message.precision(3);
   message << path << ": the NIfTI qform (code " << o->qformCode << ") and sform (code " << o->sformCode
-          << ") disagree by up to " << std::fixed << disagreement << " mm at the volume's corners; using " << used
+          << ") disagree by up to " << measureText(disagreement, 3) << " mm at the volume's corners; using " << used
           << ", as ITK's NIfTI reader (and so 3D Slicer) does";
   return message.str();
 }

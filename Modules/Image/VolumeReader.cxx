@@ -8,6 +8,7 @@
 #include "Nifti1Header.h"
 #include "SilencedStandardError.h"
 
+#include "Core/MeasureText.h"
 #include "Core/SliceMeshTypes.h"
 
 #include "itkImageFileReader.h"
@@ -25,7 +26,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
 #include <iostream>
 #include <optional>
 #include <set>
@@ -284,7 +284,7 @@ void checkMetaImageList(const std::string& path, const std::vector<std::string>&
   {
     std::ostringstream message;
     message << path << ": its ElementDataFile LIST names " << files.size() << " files where its sizes need "
-            << std::fixed << std::setprecision(0) << expected;
+            << measureText(expected, 0);
     throw Error(message.str());
   }
   for (const std::string& name : files)
@@ -427,7 +427,7 @@ void checkNiftiFileSize(const std::string& path, const itk::ImageIOBase* io, con
   {
     std::ostringstream message; // `needed` may be beyond any integer type (a damaged header): printed as a double
     message << path << ": a truncated NIfTI file (" << fileSize << " bytes; its header promises at least "
-            << std::fixed << std::setprecision(0) << needed << ")";
+            << measureText(needed, 0) << ")";
     throw Error(message.str());
   }
 }

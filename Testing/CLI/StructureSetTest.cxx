@@ -20,6 +20,7 @@
 
 #include <fstream>
 #include <iterator>
+#include <regex>
 
 namespace fs = std::filesystem;
 
@@ -298,6 +299,27 @@ TEST(StructureSet, AnROIWhoseSlicesAreAKilometreApartIsRefusedBeforeItIsTiled)
                                       quoted((folder / "near.vtp").string()));
   EXPECT_EQ(meshed.exitCode, 0) << meshed.err;
   expectValid(folder / "near.vtp");
+}
+
+TEST(StructureSet, ACoordinateOf1e300IsPrintedCompactlyInItsMessages)
+{
+  // A JSON slice at z = 1e300 (a value far past any anatomy, yet a finite double): the gap it makes
+  // and the volume of a slab drawn there (in the summary and its warnings) were printed with all
+  // their three hundred digits.
+  const fs::path folder = freshFolder("StructureSetHugeCoordinate");
+  const std::string triangle = R"("polygons": [[[0, 0], [5, 0], [5, 5]]])";
+  std::ofstream(folder / "gap.json") << R"({"rois": [{"name": "Gap", "slices": [{"z": 0, )" << triangle << R"(}, {"z": 1, )"
+                                     << triangle << R"(}, {"z": 1e300, )" << triangle << "}]}]}";
+  std::ofstream(folder / "far.json") << R"({"rois": [{"name": "Near", "slices": [{"z": 0, )" << triangle << R"(}, {"z": 1, )"
+                                     << triangle << R"(}]}, {"name": "Far", "slices": [{"z": 1e300, )" << triangle << "}]}]}";
+  const RunResult gap = runSliceMesh(quoted((folder / "gap.json").string()) + " " + quoted((folder / "gap.vtp").string()));
+  EXPECT_EQ(gap.exitCode, cli::MeshingFailed) << gap.err;
+  EXPECT_TRUE(hasLine(gap.err, "ROI 1 (Gap): tiled across its largest gap between slices (1e+300 mm), about ")) << gap.err;
+  const RunResult far = runSliceMesh(quoted((folder / "far.json").string()) + " " + quoted((folder / "far.vtp").string()));
+  EXPECT_NE((far.out + far.err).find("ROI 2 (Far): volume "), std::string::npos) << far.out << far.err;
+  const std::regex longNumber("[0-9]{20,}");
+  for (const RunResult& r : { gap, far })
+    EXPECT_FALSE(std::regex_search(r.out + r.err, longNumber)) << "a number of 20 digits or more in: " << r.err;
 }
 
 TEST(StructureSet, EmptyAndSingleSliceROIsAreReportedAndTheOthersWritten)
