@@ -2,6 +2,8 @@
 // and exposes only the orientation it chose.
 #include "Nifti1Header.h"
 
+#include "Core/Lowercase.h"
+
 #include <zlib.h>
 
 #include <algorithm>
@@ -15,8 +17,7 @@ namespace
 
 bool isNiftiName(const std::string& path)
 {
-  std::string lower = path;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string lower = lowercase(path);
   const auto endsWith = [&](const std::string& suffix)
   { return lower.size() >= suffix.size() && lower.compare(lower.size() - suffix.size(), suffix.size(), suffix) == 0; };
   return endsWith(".nii") || endsWith(".nii.gz") || endsWith(".hdr") || endsWith(".hdr.gz");
@@ -66,6 +67,7 @@ std::optional<Nifti1Header> readNifti1Header(const std::string& path)
   }
   header.bitpix = field<std::int16_t>(bytes, 72, swap);
   header.voxOffset = field<float>(bytes, 108, swap);
+  header.xyztUnits = bytes[123];
   header.qformCode = field<std::int16_t>(bytes, 252, swap);
   header.sformCode = field<std::int16_t>(bytes, 254, swap);
   for (std::size_t i = 0; i < header.quaternion.size(); ++i)

@@ -18,6 +18,7 @@ struct Nifti1Header
   std::int16_t bitpix = 0;   ///< bits per stored voxel, before any scl_slope / scl_inter scaling
   std::array<float, 8> pixdim{}; ///< pixdim[0] is qfac, pixdim[1..3] the spacing
   float voxOffset = 0.0f;    ///< where the voxels start
+  std::uint8_t xyztUnits = 0; ///< the spatial unit in its low three bits: 1 metre, 2 mm, 3 micron (0 unknown)
   std::int16_t qformCode = 0, sformCode = 0;
   std::array<float, 6> quaternion{}; ///< quatern_b, c, d, then qoffset_x, y, z
   std::array<float, 12> sform{};     ///< srow_x, srow_y, srow_z

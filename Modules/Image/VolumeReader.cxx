@@ -6,8 +6,10 @@
 #include "ItkErrorText.h"
 #include "MemoryBudget.h"
 #include "Nifti1Header.h"
+#include "ReaderSpaceCorrection.h"
 #include "SilencedStandardError.h"
 
+#include "Core/Lowercase.h"
 #include "Core/MeasureText.h"
 #include "Core/SliceMeshTypes.h"
 
@@ -300,8 +302,7 @@ void checkMetaImageList(const std::string& path, const std::vector<std::string>&
  *  is checked by checkMetaImageList; NRRD's lists, patterns and LOCAL data are left to the readers. */
 void checkDetachedDataFile(const std::string& path)
 {
-  std::string lower = path;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string lower = lowercase(path);
   const bool meta = endsWith(lower, ".mhd"), nrrd = endsWith(lower, ".nhdr");
   if (!meta && !nrrd)
     return;
@@ -342,8 +343,7 @@ void checkDetachedDataFile(const std::string& path)
  *  The header is text up to its ElementDataFile line (the voxels of a .mha follow it). */
 void checkMetaImageGeometry(const std::string& path)
 {
-  std::string lower = path;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string lower = lowercase(path);
   if (!endsWith(lower, ".mha") && !endsWith(lower, ".mhd"))
     return;
   // The fields MetaIO reads as numbers that place the voxels (Offset has two other names).
@@ -544,6 +544,49 @@ void checkDicomFileMeta(const std::string& path)
   }
 }
 
+/** The header's origin and directions as the file states them (readerSpaceCorrection). */
+void correctHeaderSpace(itk::ImageIOBase* io, const ReaderSpaceCorrection& correction)
+{
+  if (!correction.needed())
+    return;
+  const unsigned int axes = std::min(io->GetNumberOfDimensions(), 3u);
+  std::array<double, 3> origin{ 0.0, 0.0, 0.0 };
+  for (unsigned int axis = 0; axis < axes; ++axis)
+    origin[axis] = io->GetOrigin(axis);
+  origin = correction.applied(origin, true);
+  for (unsigned int axis = 0; axis < axes; ++axis)
+  {
+    io->SetOrigin(axis, origin[axis]);
+    std::vector<double> column = io->GetDirection(axis);
+    std::array<double, 3> direction{ 0.0, 0.0, 0.0 };
+    for (unsigned int row = 0; row < std::min<std::size_t>(column.size(), 3); ++row)
+      direction[row] = column[row];
+    direction = correction.applied(direction, false);
+    for (unsigned int row = 0; row < std::min<std::size_t>(column.size(), 3); ++row)
+      column[row] = direction[row];
+    io->SetDirection(axis, column);
+  }
+}
+
+/** The volume's origin and directions as its file states them (readerSpaceCorrection). */
+void correctVolumeSpace(itk::ImageBase<3>* volume, const ReaderSpaceCorrection& correction)
+{
+  if (!correction.needed())
+    return;
+  const itk::Point<double, 3> before = volume->GetOrigin();
+  const std::array<double, 3> origin = correction.applied({ before[0], before[1], before[2] }, true);
+  itk::ImageBase<3>::DirectionType direction = volume->GetDirection();
+  for (unsigned int axis = 0; axis < 3; ++axis)
+  {
+    const std::array<double, 3> column =
+      correction.applied({ direction[0][axis], direction[1][axis], direction[2][axis] }, false);
+    for (unsigned int row = 0; row < 3; ++row)
+      direction[row][axis] = column[row];
+  }
+  volume->SetOrigin(itk::Point<double, 3>(origin.data()));
+  volume->SetDirection(direction);
+}
+
 /** The header of an image file through the ImageIO ITK picks for it. */
 itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
 {
@@ -580,6 +623,7 @@ itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
   {
     throw Error(path + ": cannot read the image header: " + itkErrorText(error));
   }
+  correctHeaderSpace(io, readerSpaceCorrection(path));
   // GDCM gives a DICOM file of one frame as a volume of one slice 1 mm thick, a thickness it makes
   // up: a slice of a series given instead of its folder would be meshed as a 1 mm slab.
   if (std::string(io->GetNameOfClass()) == "GDCMImageIO" && io->GetNumberOfDimensions() == 3 && io->GetDimensions(2) == 1)
@@ -640,6 +684,8 @@ typename TImage::Pointer readImageFileAs(const std::string& path, itk::ImageIOBa
     }
     volume->SetDirection(direction);
   }
+  // The reader read the header again, as ITK has it.
+  correctVolumeSpace(volume.GetPointer(), readerSpaceCorrection(path));
   checkVolumeGeometry(path, volume);
   return volume;
 }

@@ -9,10 +9,12 @@
 
 #include "itkMetaDataObject.h"
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <random>
 #include <sstream>
+#include <tuple>
 
 namespace slicemesh
 {
@@ -116,6 +118,79 @@ TEST_F(VolumeReaderTest, RoundTripKeepsGeometryAndVoxels)
       for (unsigned int column = 0; column < 3; ++column)
         EXPECT_NEAR(geometry.direction[row][column], written->GetDirection()[row][column], 1e-5);
     }
+  }
+}
+
+/** Expects the read volume, and the geometry of its header alone, where `written` is. */
+void expectSameGeometry(const ScalarVolume* read, const VolumeGeometry& header, const ScalarVolume* written)
+{
+  for (unsigned int row = 0; row < 3; ++row)
+  {
+    EXPECT_NEAR(read->GetOrigin()[row], written->GetOrigin()[row], 1e-4) << row;
+    EXPECT_NEAR(header.origin[row], written->GetOrigin()[row], 1e-4) << row;
+    EXPECT_NEAR(read->GetSpacing()[row], written->GetSpacing()[row], 1e-6) << row;
+    for (unsigned int column = 0; column < 3; ++column)
+    {
+      EXPECT_NEAR(read->GetDirection()[row][column], written->GetDirection()[row][column], 1e-5) << row << column;
+      EXPECT_NEAR(header.direction[row][column], written->GetDirection()[row][column], 1e-5) << row << column;
+    }
+  }
+}
+
+TEST_F(VolumeReaderTest, ANrrdInLeftAnteriorSuperiorSpaceLiesWhereItsHeaderSays)
+{
+  // ITK 5.2 turned LAS into LPS by negating x instead of y: the volume came out mirrored left-right
+  // and front-back, where 3D Slicer reads it right.
+  const ScalarVolume::Pointer written = obliqueVolume();
+  std::ostringstream header;
+  header << "NRRD0004\ntype: float\ndimension: 3\nspace: left-anterior-superior\nsizes: 5 4 3\n"
+         << "space directions:";
+  for (unsigned int axis = 0; axis < 3; ++axis)
+  {
+    const double side = written->GetSpacing()[axis];
+    const auto& d = written->GetDirection();
+    header << " (" << d[0][axis] * side << "," << -d[1][axis] * side << "," << d[2][axis] * side << ")";
+  }
+  header.precision(17);
+  header << "\nspace origin: (" << written->GetOrigin()[0] << "," << -written->GetOrigin()[1] << ","
+         << written->GetOrigin()[2] << ")\nendian: little\nencoding: raw\n\n";
+  std::string bytes(reinterpret_cast<const char*>(written->GetBufferPointer()), 60 * sizeof(float));
+  const std::string file = writeText("las.nrrd", header.str() + bytes);
+  const ScalarVolume::Pointer read = readVolume(file);
+  expectSameGeometry(read, readVolumeGeometry(file), written);
+  EXPECT_TRUE(std::equal(read->GetBufferPointer(), read->GetBufferPointer() + 60, written->GetBufferPointer()));
+}
+
+TEST_F(VolumeReaderTest, ANiftiInMetresOrMicronsLiesWhereItsHeaderSays)
+{
+  // ITK 5.2 converted the spacing of such a file to millimetres but left its origin in metres or
+  // microns: the volume landed near the origin, metres turned into millimetres.
+  const ScalarVolume::Pointer written = obliqueVolume();
+  write(written.GetPointer(), path("mm.nii"));
+  std::string bytes;
+  {
+    std::ifstream in(path("mm.nii"), std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const auto scaleFloat = [](std::string& header, std::size_t offset, double factor)
+  {
+    float value;
+    std::memcpy(&value, header.data() + offset, sizeof value);
+    value = static_cast<float>(value * factor);
+    std::memcpy(header.data() + offset, &value, sizeof value);
+  };
+  for (const auto& [name, unit, factor] : { std::tuple{ "metres.nii", 1, 0.001 }, std::tuple{ "microns.nii", 3, 1000.0 } })
+  {
+    SCOPED_TRACE(name);
+    std::string file = bytes;
+    for (std::size_t offset : { 80, 84, 88 }) // pixdim[1..3]
+      scaleFloat(file, offset, factor);
+    for (std::size_t offset = 268; offset < 328; offset += 4) // qoffset_x, y, z, then the sform's three rows
+      scaleFloat(file, offset, factor);
+    file[123] = static_cast<char>((file[123] & ~0x07) | unit); // xyzt_units: the spatial unit
+    std::ofstream(path(name), std::ios::binary) << file;
+    const ScalarVolume::Pointer read = readVolume(path(name));
+    expectSameGeometry(read, readVolumeGeometry(path(name)), written);
   }
 }
 
