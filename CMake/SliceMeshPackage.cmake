@@ -15,7 +15,7 @@ install(TARGETS SliceMeshLogic EXPORT SliceMeshTargets
 # The stages' public headers, by stage (CGAL stays inside the .cxx files). Headers internal to a
 # stage (its helpers and data structures) are not installed; no public header includes one.
 set(SLICEMESH_INTERNAL_HEADERS
-  Core/DisjointSets.h Core/SpatialHash.h Core/NearestSegment.h
+  Core/DisjointSets.h Core/SpatialHash.h Core/NearestSegment.h Core/ArcLengthWalk.h
   Contours/ContourCrossings.h
   Correspondence/PolygonProximity.h Correspondence/MutualIntersections.h
   Finishing/RemeshingRegions.h Finishing/PieceTargetVolumes.h Finishing/PieceRejection.h Finishing/PutBackVertices.h

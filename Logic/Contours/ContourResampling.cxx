@@ -2,6 +2,7 @@
 
 #include "Contours/ContourCrossings.h"
 #include "Contours/ContourSmoothing.h"
+#include "Core/ArcLengthWalk.h"
 #include "Core/PlanarGeometry.h"
 
 #include <algorithm>
@@ -19,23 +20,12 @@ namespace
 void appendEvenSteps(const Polygon2& contour, std::size_t from, std::size_t edges, double step, std::size_t count,
                      Polygon2& out)
 {
-  const std::size_t n = contour.size();
-  std::size_t edge = 0;   // current edge: contour[from + edge] -> contour[from + edge + 1]
-  double edgeStart = 0.0; // arc length at its start
-  double edgeLength = distance(contour[from], contour[(from + 1) % n]);
+  ArcLengthWalk walk(contour, from, edges);
   for (std::size_t k = 1; k < count; ++k)
   {
     const double s = static_cast<double>(k) * step;
-    while (edgeStart + edgeLength < s && edge + 1 < edges)
-    {
-      edgeStart += edgeLength;
-      ++edge;
-      edgeLength = distance(contour[(from + edge) % n], contour[(from + edge + 1) % n]);
-    }
-    const Point2& a = contour[(from + edge) % n];
-    const Point2& b = contour[(from + edge + 1) % n];
-    const double t = edgeLength > 0.0 ? std::clamp((s - edgeStart) / edgeLength, 0.0, 1.0) : 0.0;
-    out.push_back({ a.x + t * (b.x - a.x), a.y + t * (b.y - a.y) });
+    walk.reach(s); // s past the stretch's end (by rounding) gives its end
+    out.push_back(walk.onEdgeAt(s));
   }
 }
 
@@ -117,9 +107,7 @@ Polygon2 resampleContourKeepingCorners(const Polygon2& contour, double spacing)
     // The stretch from this corner to the next (round to the first), as an open polyline.
     const std::size_t from = corners[k], to = corners[(k + 1) % corners.size()];
     const std::size_t points = (to + n - from) % n == 0 ? n : (to + n - from) % n;
-    double length = 0.0;
-    for (std::size_t i = 0; i < points; ++i)
-      length += distance(contour[(from + i) % n], contour[(from + i + 1) % n]);
+    const double length = arcLength(contour, from, points);
     const std::size_t steps = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(length / spacing)));
     const double step = length / static_cast<double>(steps);
     resampled.push_back(contour[from]);

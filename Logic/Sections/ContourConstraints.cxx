@@ -1,6 +1,7 @@
 #include "Sections/ContourConstraints.h"
 
 #include "Contours/ContourNesting.h"
+#include "Core/ArcLengthWalk.h"
 #include "Core/PlanarGeometry.h"
 #include "Correspondence/PolygonProximity.h"
 
@@ -20,20 +21,11 @@ std::vector<Point2> resampleEvenly(const Polygon2& polygon, std::size_t count)
   const double step = perimeter(polygon) / static_cast<double>(count);
   std::vector<Point2> samples;
   samples.reserve(count);
-  double target = 0.0, walked = 0.0;
-  for (std::size_t i = 0; i < polygon.size() && samples.size() < count; ++i)
-  {
-    const Point2& a = polygon[i];
-    const Point2& b = polygon[(i + 1) % polygon.size()];
-    const double length = distance(a, b);
-    while (samples.size() < count && target <= walked + length)
-    {
-      const double t = length > 0.0 ? (target - walked) / length : 0.0;
-      samples.push_back({ a.x + t * (b.x - a.x), a.y + t * (b.y - a.y) });
-      target += step;
-    }
-    walked += length;
-  }
+  // A running sum of the step (the contour resampling multiplies it: their last bits differ); a
+  // target past the end by rounding gives no sample.
+  ArcLengthWalk walk(polygon);
+  for (double target = 0.0; samples.size() < count && walk.reach(target); target += step)
+    samples.push_back(walk.at(target));
   return samples;
 }
 
