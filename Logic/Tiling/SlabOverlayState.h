@@ -124,8 +124,6 @@ std::vector<CDT::Edge> finiteEdgesAround(const CDT& cdt, const std::vector<Verte
 /** The finite faces around `around`, each once, in an order that depends only on the triangulation. */
 std::vector<FaceHandle> finiteFacesAround(const CDT& cdt, const std::vector<VertexHandle>& around);
 
-class SpacingGrid; // SteinerPlacement.cxx: points placed so far, to keep new Steiner points apart
-
 } // namespace slab
 
 struct SlabOverlay::Impl
@@ -235,12 +233,11 @@ struct SlabOverlay::Impl
   std::size_t liftFlatChords(MeshBuilder& mesh);
   std::size_t addRows(MeshBuilder& mesh, double edgeLength);
   std::size_t addCapRows(MeshBuilder& mesh, double edgeLength);
-  /** The lifted corners of the difference faces: new Steiner points keep their distance from them. */
-  void addLiftedCorners(slab::SpacingGrid& placed, const MeshBuilder& mesh) const;
-  /** Inserts each candidate (point, height) whose face `accepts` takes, with the optional clearance;
-   *  classifies the faces again if any went in. */
-  std::size_t insertCandidates(const std::vector<std::pair<Point2, double>>& candidates, MeshBuilder& mesh,
-                               const std::function<bool(slab::FaceHandle)>& accepts);
+  /** Inserts the row points (point, height), in order, each that keeps 0.6 edge lengths (in 3D) from
+   *  the lifted corners of the difference faces and from the row points kept before it, and whose face
+   *  `accepts` takes, with the optional clearance; forgets the corner levels if any went in. */
+  std::size_t insertRowPoints(const std::vector<std::pair<Point2, double>>& rowPoints, MeshBuilder& mesh,
+                              double edgeLength, const std::function<bool(slab::FaceHandle)>& accepts);
   std::size_t refineBadTriangles(MeshBuilder& mesh, double minAngle, double edgeLength, std::size_t budget);
 
   // SurfaceMetricFlips.cxx: Lawson flips judged on the lifted triangles.

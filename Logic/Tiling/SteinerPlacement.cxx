@@ -16,8 +16,11 @@ namespace slicemesh
 
 using namespace slab;
 
+namespace
+{
+
 /** Points already placed, to keep new Steiner points a minimum 3D distance apart. */
-class slab::SpacingGrid
+class SpacingGrid
 {
 public:
   explicit SpacingGrid(double cell)
@@ -50,9 +53,6 @@ private:
   SpatialHash m_Cells;
   std::vector<Point3> m_Points;
 };
-
-namespace
-{
 
 Point3 circumcenter(const Point3& a, const Point3& b, const Point3& c)
 {
@@ -207,8 +207,6 @@ std::size_t SlabOverlay::Impl::addRows(MeshBuilder& mesh, double edgeLength)
   // points at the spacing of the edge length let its triangles be about as tall as they are wide
   // in 3D (a 1 mm contour spacing under 3 mm slices would otherwise give slivers only).
   const double dz = z1 - z0;
-  SpacingGrid placed(edgeLength);
-  addLiftedCorners(placed, mesh);
   // Columns start from the contour vertices of one slice only, the one with more of them, so the
   // rows line up: the planar Delaunay triangulation of aligned rows is well shaped in 3D even where
   // the slope compresses the rows in projection; staggered rows from both sides are not.
@@ -227,7 +225,7 @@ std::size_t SlabOverlay::Impl::addRows(MeshBuilder& mesh, double edgeLength)
       starts[level].push_back(v);
   }
   const Level level = starts[LowerLevel].size() >= starts[UpperLevel].size() ? LowerLevel : UpperLevel;
-  std::vector<std::pair<Point2, double>> candidates;
+  std::vector<std::pair<Point2, double>> rowPoints;
   for (VertexHandle v : starts[level])
   {
     const OverlayVertex& ov = vertices[v->info()];
@@ -241,21 +239,17 @@ std::size_t SlabOverlay::Impl::addRows(MeshBuilder& mesh, double edgeLength)
     {
       const double t = static_cast<double>(r) / m;
       const Point2 p{ ov.p.x + t * (target.x - ov.p.x), ov.p.y + t * (target.y - ov.p.y) };
-      const double z = interpolatedHeight(p);
-      if (placed.addIfApart({ p.x, p.y, z }, 0.6 * edgeLength))
-        candidates.emplace_back(p, z);
+      rowPoints.emplace_back(p, interpolatedHeight(p));
     }
   }
-  return insertCandidates(candidates, mesh, [&](FaceHandle f) { return inMixed(f); });
+  return insertRowPoints(rowPoints, mesh, edgeLength, [&](FaceHandle f) { return inMixed(f); });
 }
 
 std::size_t SlabOverlay::Impl::addCapRows(MeshBuilder& mesh, double edgeLength)
 {
   // Rows of Steiner points parallel to each domed cap's contour, an edge length apart in 3D, so the
   // dome's rounded rim is tiled by well-shaped triangles; the flat top is filled by refinement.
-  SpacingGrid placed(edgeLength);
-  addLiftedCorners(placed, mesh);
-  std::vector<std::pair<Point2, double>> candidates;
+  std::vector<std::pair<Point2, double>> rowPoints;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
   {
     if (vertices[v->info()].isSteiner())
@@ -297,28 +291,28 @@ std::size_t SlabOverlay::Impl::addCapRows(MeshBuilder& mesh, double edgeLength)
       const FaceHandle f = faceFor(p);
       if (!isCapFace(f) || f->info().component != component)
         continue;
-      const double z = domeHeight(component, p);
-      if (placed.addIfApart({ p.x, p.y, z }, 0.6 * edgeLength))
-        candidates.emplace_back(p, z);
+      rowPoints.emplace_back(p, domeHeight(component, p));
     }
   }
-  return insertCandidates(candidates, mesh, [&](FaceHandle f) { return isCapFace(f); });
+  return insertRowPoints(rowPoints, mesh, edgeLength, [&](FaceHandle f) { return isCapFace(f); });
 }
 
-void SlabOverlay::Impl::addLiftedCorners(SpacingGrid& placed, const MeshBuilder& mesh) const
+std::size_t SlabOverlay::Impl::insertRowPoints(const std::vector<std::pair<Point2, double>>& rowPoints,
+                                               MeshBuilder& mesh, double edgeLength,
+                                               const std::function<bool(FaceHandle)>& accepts)
 {
+  // Rows from neighbouring starts converge (on one nearest point of the other contour, towards a
+  // dome's top): a point too close to one kept before it, or to a corner, would only make slivers.
+  SpacingGrid placed(edgeLength);
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
     if (isDifference(f))
       for (int i = 0; i < 3; ++i)
         placed.add(approximateLift(f, i, mesh));
-}
-
-std::size_t SlabOverlay::Impl::insertCandidates(const std::vector<std::pair<Point2, double>>& candidates,
-                                                MeshBuilder& mesh, const std::function<bool(FaceHandle)>& accepts)
-{
   std::size_t inserted = 0;
-  for (const auto& [p, z] : candidates)
+  for (const auto& [p, z] : rowPoints)
   {
+    if (!placed.addIfApart({ p.x, p.y, z }, 0.6 * edgeLength))
+      continue;
     const FaceHandle f = faceFor(p);
     if (!cdt.is_infinite(f) && accepts(f))
       inserted += insertSteiner(p, z, mesh, optionalClearance());
