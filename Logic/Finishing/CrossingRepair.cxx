@@ -436,13 +436,7 @@ private:
     Operation merged;
     merged.collapse = true;
     merged.removed = { left->first, right->first };
-    for (std::size_t t : fan(u))
-      if (t != left->first && t != right->first)
-      {
-        Triangle moved = m_Mesh.triangles[t];
-        std::replace(moved.begin(), moved.end(), u, v);
-        merged.rewritten.emplace_back(t, moved);
-      }
+    replaceInFan(u, v, merged);
     return merged;
   }
 
@@ -472,13 +466,21 @@ private:
       return std::nullopt;
     Operation operation;
     operation.move = true;
-    for (std::size_t t : fan(u))
-    {
-      Triangle corners = m_Mesh.triangles[t];
-      std::replace(corners.begin(), corners.end(), u, moved);
-      operation.rewritten.emplace_back(t, corners);
-    }
+    replaceInFan(u, moved, operation);
     return operation;
+  }
+
+  /** Rewrites u's triangles that the operation keeps with w for u: a collapse into w and a move to the
+   *  new point w differ only in which triangles go and where w is. */
+  void replaceInFan(std::int32_t u, std::int32_t w, Operation& operation) const
+  {
+    for (std::size_t t : fan(u))
+      if (std::find(operation.removed.begin(), operation.removed.end(), t) == operation.removed.end())
+      {
+        Triangle corners = m_Mesh.triangles[t];
+        std::replace(corners.begin(), corners.end(), u, w);
+        operation.rewritten.emplace_back(t, corners);
+      }
   }
 
   static void count(const Operation& operation, CrossingRepair& done)
