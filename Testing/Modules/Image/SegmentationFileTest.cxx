@@ -5,6 +5,7 @@
 #include "SegmentationFileWriters.h"
 
 #include "Core/SliceMeshTypes.h"
+#include "TemporaryFolderTest.h"
 #include "TestVolumes.h"
 
 #include "itkImageFileWriter.h"
@@ -14,7 +15,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <random>
 
 namespace slicemesh
 {
@@ -25,20 +25,13 @@ namespace fs = std::filesystem;
 using testing::ImageGrid;
 using testing::PhysicalPoint;
 
-class SegmentationFileTest : public ::testing::Test
+class SegmentationFileTest : public testing::TemporaryFolderTest
 {
 protected:
-  void SetUp() override
+  SegmentationFileTest()
+    : TemporaryFolderTest("slicemesh-segfile-")
   {
-    std::random_device seed;
-    m_Directory = fs::temp_directory_path() / ("slicemesh-segfile-" + std::to_string(seed()));
-    fs::create_directories(m_Directory);
   }
-  void TearDown() override { fs::remove_all(m_Directory); }
-  std::string path(const std::string& name) const { return (m_Directory / name).string(); }
-
-private:
-  fs::path m_Directory;
 };
 
 double distance(const PhysicalPoint& a, const PhysicalPoint& b)

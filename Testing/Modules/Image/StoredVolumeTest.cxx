@@ -3,6 +3,7 @@
 #include "Core/SliceMeshTypes.h"
 #include "LabelIndex.h"
 #include "StoredVolume.h"
+#include "TemporaryFolderTest.h"
 #include "TestVolumes.h"
 #include "VolumeReader.h"
 #include "VolumeSegmentation.h"
@@ -16,7 +17,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
-#include <random>
 
 namespace slicemesh
 {
@@ -29,18 +29,13 @@ using Uint8Volume = itk::Image<std::uint8_t, 3>;
 using Int16Volume = itk::Image<std::int16_t, 3>;
 using Uint16Volume = itk::Image<std::uint16_t, 3>;
 
-class StoredVolumeTest : public ::testing::Test
+class StoredVolumeTest : public testing::TemporaryFolderTest
 {
 protected:
-  void SetUp() override
+  StoredVolumeTest()
+    : TemporaryFolderTest("slicemesh-stored-")
   {
-    std::random_device seed;
-    m_Directory = fs::temp_directory_path() / ("slicemesh-stored-" + std::to_string(seed()));
-    fs::create_directories(m_Directory);
   }
-  void TearDown() override { fs::remove_all(m_Directory); }
-
-  std::string path(const std::string& name) const { return (m_Directory / name).string(); }
 
   template <typename TImage>
   static void write(const TImage* image, const std::string& file, itk::ImageIOBase* io = nullptr)
@@ -87,8 +82,6 @@ protected:
         return 0;
       });
   }
-
-  fs::path m_Directory;
 };
 
 template <typename TImage>

@@ -1,5 +1,6 @@
 #include "Core/SliceMeshTypes.h"
 #include "DicomSeriesWriter.h"
+#include "TemporaryFolderTest.h"
 #include "TestVolumes.h"
 #include "VolumeReader.h"
 
@@ -23,19 +24,13 @@ namespace
 
 namespace fs = std::filesystem;
 
-/** A fresh directory under the system's temporary directory, removed with the fixture. */
-class VolumeReaderTest : public ::testing::Test
+class VolumeReaderTest : public testing::TemporaryFolderTest
 {
 protected:
-  void SetUp() override
+  VolumeReaderTest()
+    : TemporaryFolderTest("slicemesh-reader-")
   {
-    std::random_device seed;
-    m_Directory = fs::temp_directory_path() / ("slicemesh-reader-" + std::to_string(seed()));
-    fs::create_directories(m_Directory);
   }
-  void TearDown() override { fs::remove_all(m_Directory); }
-
-  std::string path(const std::string& name) const { return (m_Directory / name).string(); }
 
   std::string writeText(const std::string& name, const std::string& text) const
   {
@@ -71,8 +66,6 @@ protected:
     writer->SetFileName(file);
     writer->Update();
   }
-
-  fs::path m_Directory;
 };
 
 /** Runs the call and returns the Error's message; fails the test if nothing is thrown. */
@@ -380,7 +373,7 @@ TEST_F(VolumeReaderTest, DicomSeriesDirectoryRoundTrip)
   for (long n = 0; n < 120; ++n)
     volume->GetBufferPointer()[n] = static_cast<short>(n * 3);
 
-  const fs::path dicom = m_Directory / "series";
+  const fs::path dicom = folder() / "series";
   testing::writeCTSeries(volume, dicom);
 
   const ScalarVolume::Pointer read = readVolume(dicom.string());
@@ -410,7 +403,7 @@ TEST_F(VolumeReaderTest, DicomSeriesWithAMissingSliceIsAnError)
   // every slice after the gap would be put half a spacing or more from where it was scanned.
   using ShortVolume = itk::Image<short, 3>;
   auto volume = testing::makeImage<ShortVolume>({ 4, 4, 6 }, { 0.8, 0.8, 2.5 });
-  const fs::path dicom = m_Directory / "series";
+  const fs::path dicom = folder() / "series";
   testing::writeCTSeries(volume, dicom);
   ASSERT_TRUE(fs::remove(dicom / "slice005.dcm")); // the last: still evenly spaced, one slice fewer
   EXPECT_EQ(readVolume(dicom.string())->GetLargestPossibleRegion().GetSize()[2], 5u);
@@ -446,7 +439,7 @@ TEST_F(VolumeReaderTest, GantryTiltedDicomSeriesKeepsEachSliceWhereItWasScanned)
   volume->SetDirection(sheared);
   for (long n = 0; n < 240; ++n)
     volume->GetBufferPointer()[n] = static_cast<short>(n);
-  const fs::path dicom = m_Directory / "tilted";
+  const fs::path dicom = folder() / "tilted";
   testing::writeCTSeries(volume, dicom);
 
   const ScalarVolume::Pointer read = readVolume(dicom.string());
@@ -475,7 +468,7 @@ TEST_F(VolumeReaderTest, AFolderOfTwoSeriesSaysWhichWasRead)
   // volume's metadata says which (the command line prints it); one series alone says nothing.
   using ShortVolume = itk::Image<short, 3>;
   auto volume = testing::makeImage<ShortVolume>({ 4, 4, 5 }, { 0.8, 0.8, 2.5 });
-  const fs::path dicom = m_Directory / "series", other = m_Directory / "other";
+  const fs::path dicom = folder() / "series", other = folder() / "other";
   testing::writeCTSeries(volume, dicom);
   std::string choice;
   EXPECT_FALSE(itk::ExposeMetaData<std::string>(readVolume(dicom.string())->GetMetaDataDictionary(), seriesChoiceKey, choice));
@@ -508,7 +501,7 @@ TEST_F(VolumeReaderTest, DicomSeriesOfSlicesInTwoOrientationsIsAnError)
   turned[0][0] = std::cos(turn), turned[0][1] = -std::sin(turn);
   turned[1][0] = std::sin(turn), turned[1][1] = std::cos(turn);
   upper->SetDirection(turned);
-  const fs::path dicom = m_Directory / "series", other = m_Directory / "upper";
+  const fs::path dicom = folder() / "series", other = folder() / "upper";
   const std::string series = "1.2.826.0.1.3680043.2.1125.1.7";
   testing::writeCTSeries(lower, dicom, series);
   testing::writeCTSeries(upper, other, series); // moved in as slices 3 to 5
@@ -526,14 +519,14 @@ TEST_F(VolumeReaderTest, OneDicomSliceIsAnErrorButOneMultiFrameFileIsAVolume)
   // series given instead of its folder was meshed as a 1 mm slab.
   using ShortVolume = itk::Image<short, 3>;
   auto volume = testing::makeImage<ShortVolume>({ 4, 4, 5 }, { 0.8, 0.8, 2.5 });
-  const fs::path dicom = m_Directory / "series";
+  const fs::path dicom = folder() / "series";
   testing::writeCTSeries(volume, dicom);
   const std::string message = errorMessageOf([&] { readVolume((dicom / "slice002.dcm").string()); });
   EXPECT_NE(message.find("slice002.dcm: a single DICOM slice (a 2-D image)"), std::string::npos) << message;
   EXPECT_NE(message.find("give the folder of its series"), std::string::npos) << message;
 
   // A folder holding one file of five frames (an enhanced CT) is that volume, not "a single slice".
-  const fs::path multiFrame = m_Directory / "enhanced";
+  const fs::path multiFrame = folder() / "enhanced";
   fs::create_directories(multiFrame);
   testing::writeMultiFrameFile(volume, multiFrame / "volume.dcm");
   EXPECT_EQ(readVolume(multiFrame.string())->GetLargestPossibleRegion().GetSize()[2], 5u);
@@ -542,7 +535,7 @@ TEST_F(VolumeReaderTest, OneDicomSliceIsAnErrorButOneMultiFrameFileIsAVolume)
 TEST_F(VolumeReaderTest, DirectoryWithoutDicomIsAnError)
 {
   writeText("readme.txt", "no images here\n");
-  const std::string message = errorMessageOf([&] { readVolume(m_Directory.string()); });
+  const std::string message = errorMessageOf([&] { readVolume(folder().string()); });
   EXPECT_NE(message.find("DICOM"), std::string::npos) << message;
 }
 
