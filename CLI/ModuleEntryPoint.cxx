@@ -123,7 +123,8 @@ PipelineSettings settingsFrom(const ParsedArguments& arguments)
   {
     settings.segmentation.threshold = arguments.number("threshold");
   }
-  else if (arguments.given("threshold") && arguments.number("threshold") != 0.0)
+  else if (arguments.given("threshold") && arguments.number("threshold") != 0.0 &&
+           settings.segmentation.kind != InputKind::LabelMap)
   {
     // Slicer passes every scalar (the default 0 included), so this cannot be an error; when a user
     // set a threshold, say why it has no effect.

@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cstdlib>
+#include <iostream>
 #include <limits>
 #include <sstream>
 
@@ -48,6 +49,32 @@ double toNumber(const std::string& text, const std::string& who)
   if (end == text.c_str() || *end != '\0')
     throw ArgumentError(who + ": '" + text + "' is not a number");
   return value;
+}
+
+/** Options of one input kind given with the other are refused, or (beside an explicit label map,
+ *  where the grayscale options are plainly unused) said to have no effect: each was ignored without
+ *  a word, and an MR meshed as a label map of its intensities. */
+void checkInputKindOptions(const PipelineSettings& settings)
+{
+  const SegmentationOptions& segmentation = settings.segmentation;
+  const std::string request = grayscaleRequest(segmentation);
+  if (segmentation.label && segmentation.kind == InputKind::Grayscale)
+    throw ArgumentError("--label picks a label of a label map, and --inputKind Grayscale thresholds the volume "
+                        "instead: give one of them");
+  if (request.empty())
+    return;
+  if (segmentation.kind == InputKind::LabelMap)
+  {
+    std::cerr << "SliceMesh: warning: " << request
+              << " is for a grayscale volume; --inputKind LabelMap meshes the labels, so it has no effect" << std::endl;
+    return;
+  }
+  if (segmentation.kind == InputKind::Automatic && segmentation.label)
+    throw ArgumentError("--label picks a label of a label map, and " + request +
+                        " is an option for a grayscale volume: give one of them (--inputKind says which the volume is)");
+  if (segmentation.kind == InputKind::Automatic && settings.multiLabel.enabled)
+    throw ArgumentError("one mesh per label (--splitLabels, --labels, --outputDirectory) needs a label map, and " +
+                        request + " is an option for a grayscale volume: give one of them");
 }
 
 void readArguments(const ParsedArguments& arguments, PipelineSettings& settings)
@@ -130,7 +157,9 @@ void readArguments(const ParsedArguments& arguments, PipelineSettings& settings)
                         (arguments.flag("splitLabels") ? "--splitLabels" : "--outputDirectory") +
                         " meshes every label, each in its own file: give one of them (--labels " +
                         std::to_string(*settings.segmentation.label) + " for that label alone, in its own file)");
+  checkInputKindOptions(settings);
 }
+
 
 } // namespace
 

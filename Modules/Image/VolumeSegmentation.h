@@ -34,6 +34,12 @@ struct SegmentationOptions
   MaskRefinementOptions refinement;
 };
 
+/** The option that asks for a grayscale segmentation ("--thresholdMethod Manual", "--gaussianSigma"),
+ *  empty when none does. With InputKind::Automatic such a request makes the volume grayscale
+ *  whatever its voxels (an MR's whole non-negative intensities look like labels); beside
+ *  InputKind::LabelMap it has no effect. */
+std::string grayscaleRequest(const SegmentationOptions& options);
+
 /** Throws slicemesh::Error when the mask would be empty (naming the labels that do occur). With
  *  InputKind::Automatic, `automaticChoice` (when given) receives one line saying which kind was
  *  chosen from the voxels and why ("input kind Grayscale, chosen from the voxels: a voxel is

@@ -784,6 +784,62 @@ TEST(EndToEnd, AnAutomaticInputKindIsSaidWithItsReason)
                                      "values, 0 to 2 (--inputKind Grayscale thresholds it instead)");
 }
 
+TEST(EndToEnd, AnMRIOfWholeValuesIsGrayscaleAndGrayscaleOptionsChooseGrayscale)
+{
+  // An MR stored as whole non-negative numbers (any 8- or 16-bit scan) was taken for a label map of
+  // its intensities: the default run meshed the whole field of view, and a threshold or a smoothing
+  // asked for was ignored without a word. A sphere of radius 7 mm at about 1000 in a background of
+  // about 200, each voxel off by up to 50 (1 mm voxels, 24^3).
+  const fs::path folder = freshFolder("e2e-mri-kind");
+  const double sphere = 4.0 / 3.0 * 3.14159265358979 * 7.0 * 7.0 * 7.0;
+  const auto inSphere = [](int i, int j, int k)
+  { return (i - 11.5) * (i - 11.5) + (j - 11.5) * (j - 11.5) + (k - 11.5) * (k - 11.5) <= 49.0; };
+  const fs::path mri = folder / "mri.mha";
+  writeMetaImageOf<std::uint16_t>(mri, { 24, 24, 24 }, { 1.0, 1.0, 1.0 }, [&](int i, int j, int k) -> std::uint16_t
+  {
+    const unsigned noise = (static_cast<unsigned>(i) * 73856093u ^ static_cast<unsigned>(j) * 19349663u ^
+                            static_cast<unsigned>(k) * 83492791u) % 101u;
+    return static_cast<std::uint16_t>((inSphere(i, j, k) ? 1000 : 200) + static_cast<int>(noise) - 50);
+  });
+  const fs::path output = folder / "out.vtp", parameters = folder / "out.params";
+  const auto run = [&](const fs::path& input, const std::string& options)
+  { return runSliceMesh(options + " --returnparameterfile " + quoted(parameters.string()) + " " + quoted(input.string()) +
+                        " " + quoted(output.string())); };
+  RunResult r = run(mri, "");
+  ASSERT_EQ(r.exitCode, cli::Success) << r.err;
+  EXPECT_NE(r.out.find("input kind Grayscale, chosen from the voxels: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("neighbouring voxels differ in"), std::string::npos) << r.out;
+  EXPECT_NEAR(std::stod(returnParameterMap(parameters).at("volume")), sphere, 0.1 * sphere);
+
+  // Three values only (a label map by its voxels): a threshold asked for makes it grayscale.
+  const fs::path plain = folder / "plain.mha";
+  writeMetaImageOf<std::uint16_t>(plain, { 24, 24, 24 }, { 1.0, 1.0, 1.0 }, [&](int i, int j, int k) -> std::uint16_t
+                                  { return inSphere(i, j, k) ? 1000 : i > 1 && i < 22 ? 200 : 0; });
+  r = run(plain, "--thresholdMethod Manual --threshold 600");
+  ASSERT_EQ(r.exitCode, cli::Success) << r.err;
+  EXPECT_NE(r.out.find("input kind Grayscale, chosen from the options: --thresholdMethod Manual"), std::string::npos)
+    << r.out;
+  EXPECT_NEAR(std::stod(returnParameterMap(parameters).at("volume")), sphere, 0.1 * sphere);
+  r = run(plain, "--gaussianSigma 0.5");
+  ASSERT_EQ(r.exitCode, cli::Success) << r.err;
+  EXPECT_NE(r.out.find("chosen from the options: --gaussianSigma"), std::string::npos) << r.out;
+  // Told it is a label map, the grayscale option is said to do nothing, and the labels are meshed.
+  r = run(plain, "--inputKind LabelMap --gaussianSigma 0.5");
+  ASSERT_EQ(r.exitCode, cli::Success) << r.err;
+  EXPECT_NE(r.err.find("warning: --gaussianSigma is for a grayscale volume"), std::string::npos) << r.err;
+  EXPECT_NEAR(std::stod(returnParameterMap(parameters).at("volume")), 20.0 * 24 * 24, 0.02 * 20.0 * 24 * 24);
+
+  // A label picked beside a grayscale kind or option is refused; on a volume taken as grayscale too.
+  r = run(plain, "--label 1000 --gaussianSigma 0.5");
+  EXPECT_EQ(r.exitCode, cli::BadArguments) << r.err;
+  EXPECT_NE(r.err.find("--label picks a label of a label map, and --gaussianSigma"), std::string::npos) << r.err;
+  r = run(plain, "--inputKind Grayscale --label 1000");
+  EXPECT_EQ(r.exitCode, cli::BadArguments) << r.err;
+  r = run(mri, "--label 1000");
+  EXPECT_NE(r.exitCode, cli::Success) << r.err;
+  EXPECT_NE(r.err.find("give --inputKind LabelMap to mesh its voxels of value 1000"), std::string::npos) << r.err;
+}
+
 } // namespace
 TEST(EndToEnd, ALabelMapsNegativeLabelsAreMeshedByLabelAndByLabels)
 {

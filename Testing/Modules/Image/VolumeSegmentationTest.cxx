@@ -105,9 +105,11 @@ TEST(VolumeSegmentation, MissingLabelListsTheLabelsPresent)
 
 TEST(VolumeSegmentation, LongLabelListIsCut)
 {
-  auto volume = makeVolume({ 30, 1, 1 });
-  for (long i = 0; i < 30; ++i)
-    volume->SetPixel({ { i, 0, 0 } }, static_cast<float>(i + 1));
+  // Labels 1 to 30, two voxels each (a label map's neighbours are mostly equal: one voxel each reads
+  // as an image's intensities).
+  auto volume = makeVolume({ 60, 1, 1 });
+  for (long i = 0; i < 60; ++i)
+    volume->SetPixel({ { i, 0, 0 } }, static_cast<float>(i / 2 + 1));
   SegmentationOptions options;
   options.label = 99;
   const std::string message = errorMessageOf(volume, options);
@@ -266,6 +268,41 @@ TEST(VolumeSegmentation, NegativeIntegersAreGrayscale)
         volume->SetPixel({ { i, j, k } }, i < 4 ? -1000.0f : 40.0f);
   const MaskVolume::Pointer mask = segmentVolume(volume, SegmentationOptions{});
   EXPECT_EQ(countInside(mask), 600u);
+}
+
+TEST(VolumeSegmentation, WholeNonNegativeIntensitiesAreGrayscale)
+{
+  // An MR stored as whole numbers: the noisy volume rounded and kept positive. Its voxels were taken
+  // for a label map of about 30 labels, and every non-zero voxel meshed; Otsu now finds the cube.
+  auto volume = grayscaleVolume();
+  for (float* voxel = volume->GetBufferPointer(); voxel != volume->GetBufferPointer() + 8000; ++voxel)
+    *voxel = std::max(1.0f, std::round(*voxel));
+  std::string choice;
+  const MaskVolume::Pointer mask = segmentVolume(volume, SegmentationOptions{}, &choice);
+  EXPECT_EQ(countInside(mask), 1000u);
+  EXPECT_EQ(choice.rfind("input kind Grayscale, chosen from the voxels: ", 0), 0u) << choice;
+  EXPECT_NE(choice.find("neighbouring voxels differ in"), std::string::npos) << choice;
+  // The same values in blocks (a label map of as many labels, each a slab of voxels) stay labels.
+  auto blocks = makeVolume({ 20, 20, 20 });
+  for (long k = 0; k < 20; ++k)
+    for (long j = 0; j < 20; ++j)
+      for (long i = 0; i < 20; ++i)
+        blocks->SetPixel({ { i, j, k } }, static_cast<float>(1 + k + 20 * (j / 10)));
+  segmentVolume(blocks, SegmentationOptions{}, &choice);
+  EXPECT_EQ(choice.rfind("input kind LabelMap, chosen from the voxels: 40 whole", 0), 0u) << choice;
+}
+
+TEST(VolumeSegmentation, AGrayscaleOptionChoosesGrayscale)
+{
+  // A label map by its voxels (three values), thresholded because a threshold was asked for.
+  const auto volume = labelVolume();
+  SegmentationOptions options;
+  options.threshold = 2.0;
+  std::string choice;
+  const MaskVolume::Pointer mask = segmentVolume(volume, options, &choice);
+  EXPECT_EQ(countInside(mask), 27u + 1u);
+  EXPECT_EQ(choice.rfind("input kind Grayscale, chosen from the options: --thresholdMethod Manual", 0), 0u) << choice;
+  EXPECT_EQ(grayscaleRequest(SegmentationOptions{}), "");
 }
 
 TEST(VolumeSegmentation, ThresholdAboveEveryVoxelIsAnError)
