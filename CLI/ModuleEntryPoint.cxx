@@ -38,6 +38,26 @@ int fail(ExitCode code, const std::string& message)
   return code;
 }
 
+/** A DICOM folder of an image series and a segmentation (SEG) drawn on it: the segmentation is
+ *  what is meant, as a structure set is. It was passed over, and the image thresholded. */
+void useSegmentationOfFolder(PipelineSettings& settings, const DicomFolderContents& folder)
+{
+  if (folder.segmentations.empty())
+    return;
+  auto name = [](const std::string& path) { return std::filesystem::path(path).filename().string(); };
+  if (folder.segmentations.size() > 1)
+  {
+    std::string names;
+    for (const std::string& path : folder.segmentations)
+      names += (names.empty() ? "" : ", ") + name(path);
+    throw PipelineFailure(UnreadableInput, settings.inputVolume + " holds " + std::to_string(folder.segmentations.size()) +
+                                             " segmentations (" + names + "): give the one to mesh as the input");
+  }
+  std::cerr << "SliceMesh: " << settings.inputVolume << " holds a segmentation, " << name(folder.segmentations.front())
+            << ": its segments are meshed (to mesh the image series itself, give a folder without it)" << std::endl;
+  settings.inputVolume = folder.segmentations.front();
+}
+
 /** A DICOM folder given as the input that holds a structure set, as a planning system exports a
  *  plan (the CT slices and the RTSTRUCT side by side): its ROIs are what is meant, stacked on the
  *  folder's image series. Two or more structure sets: which one is for the user to say. */
@@ -47,9 +67,12 @@ void useStructureSetOfFolder(PipelineSettings& settings)
   if (!std::filesystem::is_directory(settings.inputVolume, ignored))
     return;
   const DicomFolderContents folder = dicomFolderContents(settings.inputVolume);
-  if (folder.structureSets.empty())
-    return;
   auto name = [](const std::string& path) { return std::filesystem::path(path).filename().string(); };
+  if (folder.structureSets.empty())
+  {
+    useSegmentationOfFolder(settings, folder);
+    return;
+  }
   if (folder.structureSets.size() > 1)
   {
     std::string names;

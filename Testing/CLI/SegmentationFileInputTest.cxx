@@ -5,6 +5,7 @@
 // shape's volume and centred where the shape is; bad files are refused in one line with nothing
 // written.
 #include "CLITestSupport.h"
+#include "DicomSeriesWriter.h"
 #include "ExitCodes.h"
 #include "MeshReader.h"
 #include "Measures/MeshValidation.h"
@@ -437,6 +438,45 @@ TEST(SegmentationFileInput, DicomSegFractionalInRasLandsWhereTheShapesAre)
                                    " " + quoted(input.string()) + " " + quoted((folder / "all.vtp").string()));
   ASSERT_EQ(r.exitCode, cli::Success) << r.err;
   expectDicomMeshes(folder / "meshes", true);
+}
+
+TEST(SegmentationFileInput, AFolderOfAnImageSeriesAndItsSegmentationMeshesTheSegments)
+{
+  // An export of the CT slices and the SEG drawn on them, given as a folder: the series was read and
+  // thresholded, the segmentation passed over without a word. Its segments are meshed now, as a
+  // structure set beside its series is.
+  const fs::path folder = freshFolder("segfile-dicom-folder") / "export";
+  fs::create_directories(folder);
+  const ImageGrid grid = dicomGrid();
+  auto ct = testing::CTVolume::New();
+  ct->SetRegions({ { 0, 0, 0 }, { std::size_t(grid.size[0]), std::size_t(grid.size[1]), std::size_t(grid.size[2]) } });
+  ct->Allocate();
+  ct->FillBuffer(40);
+  testing::CTVolume::SpacingType spacing;
+  testing::CTVolume::PointType origin;
+  testing::CTVolume::DirectionType direction;
+  for (int row = 0; row < 3; ++row)
+  {
+    spacing[row] = grid.spacing[row];
+    origin[row] = grid.origin[row];
+    for (int axis = 0; axis < 3; ++axis)
+      direction[row][axis] = grid.axes[axis][row];
+  }
+  ct->SetSpacing(spacing);
+  ct->SetOrigin(origin);
+  ct->SetDirection(direction);
+  testing::writeCTSeries(ct, folder);
+  dicomFile(folder, "SEG.dcm", 0);
+  const RunResult r = runSliceMesh("--outputDirectory " + quoted((folder.parent_path() / "meshes").string()) + " " +
+                                   quoted(folder.string()) + " " + quoted((folder.parent_path() / "all.vtp").string()));
+  ASSERT_EQ(r.exitCode, cli::Success) << r.err;
+  EXPECT_NE(r.err.find("holds a segmentation, SEG.dcm: its segments are meshed"), std::string::npos) << r.err;
+  expectDicomMeshes(folder.parent_path() / "meshes", false);
+  // Two segmentations: which one is for the user to say.
+  fs::copy_file(folder / "SEG.dcm", folder / "SEG2.dcm");
+  const RunResult two = runSliceMesh(quoted(folder.string()) + " " + quoted((folder.parent_path() / "two.vtp").string()));
+  EXPECT_EQ(two.exitCode, cli::UnreadableInput) << two.err;
+  EXPECT_NE(two.err.find("holds 2 segmentations (SEG.dcm, SEG2.dcm)"), std::string::npos) << two.err;
 }
 
 /** A bad input: exit `code`, one line on stderr naming the file, nothing written. */
