@@ -19,7 +19,6 @@
 #include "dcmtk/dcmiod/cielabutil.h"
 #include "dcmtk/dcmseg/segdoc.h"
 #include "dcmtk/dcmseg/segment.h"
-#include "dcmtk/dcmseg/segutils.h"
 #include "dcmtk/oflog/oflog.h"
 
 #include <Eigen/Geometry>
@@ -29,6 +28,7 @@
 #include <map>
 #include <memory>
 #include <sstream>
+#include <vector>
 
 namespace slicemesh
 {
@@ -192,6 +192,44 @@ ScalarVolume::Pointer layerOf(const SliceGrid& grid, long columns, long rows, lo
   return volume;
 }
 
+/** The Pixel Data of a BINARY segmentation, one bit a pixel: its frames are one bit stream (frame n
+ *  starts at bit n * rows * columns), read here rather than through DCMTK, whose frame extraction
+ *  (3.6.7) misaligns the frames that start mid-byte. Enough bytes for every frame, else an error. */
+const Uint8* binaryPixelData(const std::string& path, DcmDataset& dataset, std::size_t frames, Uint16 rows, Uint16 columns)
+{
+  const Uint8* bytes = nullptr;
+  unsigned long length = 0;
+  const bool read = dataset.findAndGetUint8Array(DCM_PixelData, bytes, &length).good() && bytes;
+  const std::size_t needed = (frames * rows * columns + 7) / 8;
+  if (!read || length < needed)
+    throw Error(path + ": the pixel data has " + std::to_string(read ? length : 0) + " bytes; " +
+                std::to_string(frames) + " frames of " + std::to_string(rows) + " x " + std::to_string(columns) +
+                " pixels need " + std::to_string(needed));
+  return bytes;
+}
+
+/** Pixel p of frame n (0 or 1 in `out`) is bit n * pixels + p of the stream; bit i of the stream is
+ *  bit i % 8 of byte i / 8 (the least significant bit first). */
+void unpackBinaryFrame(const Uint8* stream, std::size_t frame, std::size_t pixels, std::vector<Uint8>& out)
+{
+  out.resize(pixels);
+  const std::size_t first = frame * pixels;
+  for (std::size_t p = 0; p < pixels; ++p)
+  {
+    const std::size_t bit = first + p;
+    out[p] = (stream[bit / 8] >> (bit % 8)) & 1u;
+  }
+}
+
+/** A FRACTIONAL frame: one byte a pixel, as DCMTK extracts it. */
+const Uint8* fractionalFrame(const std::string& path, DcmSegmentation& segmentation, std::size_t frame, std::size_t pixels)
+{
+  const DcmIODTypes::Frame* pixelData = segmentation.getFrame(frame);
+  if (!pixelData || !pixelData->pixData || pixelData->length < pixels)
+    throw Error(path + ": frame " + std::to_string(frame + 1) + " has no pixel data or too little of it");
+  return pixelData->pixData;
+}
+
 } // namespace
 
 bool isDicomSegmentation(const std::string& path)
@@ -306,23 +344,24 @@ SegmentationFile readDicomSegmentationFile(const std::string& path)
   }
 
   const std::size_t pixels = static_cast<std::size_t>(rows) * columns;
+  const Uint8* bitStream = binary && !frames.empty() ? binaryPixelData(path, dataset, frames.size(), rows, columns) : nullptr;
+  std::vector<Uint8> unpacked;
   for (std::size_t n = 0; n < frames.size(); ++n)
   {
-    const DcmIODTypes::Frame* frame = segmentation->getFrame(n);
-    std::unique_ptr<DcmIODTypes::Frame> unpacked;
-    if (frame && binary)
+    const Uint8* values = nullptr;
+    if (binary)
     {
-      unpacked.reset(DcmSegUtils::unpackBinaryFrame(frame, rows, columns));
-      frame = unpacked.get();
+      unpackBinaryFrame(bitStream, n, pixels, unpacked);
+      values = unpacked.data();
     }
-    if (!frame || !frame->pixData || frame->length < pixels)
-      throw Error(path + ": frame " + std::to_string(n + 1) + " has no pixel data or too little of it");
+    else
+      values = fractionalFrame(path, *segmentation, n, pixels);
     ScalarVolume* layer = file.layers[frames[n].segment - 1];
     const long slice = grid.sliceOfFrame[n] - layer->GetBufferedRegion().GetIndex()[2];
     float* out = layer->GetBufferPointer() + static_cast<std::size_t>(slice) * pixels;
     for (std::size_t p = 0; p < pixels; ++p)
     {
-      const unsigned int value = frame->pixData[p];
+      const unsigned int value = values[p];
       // Several frames of one segment on one slice add up.
       if (binary ? value != 0 : 2u * value >= maximumFraction)
         out[p] = 1.0f;

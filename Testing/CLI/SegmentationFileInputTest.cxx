@@ -369,12 +369,13 @@ TEST(SegmentationFileInput, SlicerFractionalGivesOneNamedColouredMeshPerSegmentA
   EXPECT_EQ(all.names, (std::vector<std::string>{ "Sphere", "Lesion" }));
 }
 
-/** The DICOM SEGs of the tests: an oblique 40 x 36 x 24 grid of 0.7 x 0.9 x 1.25 mm pixels; a ball
- *  of radius 6 mm and an ellipsoid (semi-axes 8, 4, 4 mm along L, P, S) overlapping it. */
+/** The DICOM SEGs of the tests: an oblique 41 x 37 x 24 grid of 0.7 x 0.9 x 1.25 mm pixels (1517
+ *  pixels a frame, so most frames of the binary file start mid-byte); a ball of radius 6 mm and an
+ *  ellipsoid (semi-axes 8, 4, 4 mm along L, P, S) overlapping it. */
 ImageGrid dicomGrid()
 {
   ImageGrid grid;
-  grid.size = { 40, 36, 24 };
+  grid.size = { 41, 37, 24 };
   grid.spacing = { 0.7, 0.9, 1.25 };
   grid.origin = { -20.0, 15.0, -40.0 };
   const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6), ct = std::cos(M_PI / 9), st = std::sin(M_PI / 9);

@@ -390,6 +390,71 @@ TEST_F(SegmentationFileTest, DicomSegFramesLandWhereTheyWereWrittenOnAnObliqueGr
   EXPECT_EQ(file.layers[2]->GetBufferPointer()[0], 0.0f);
 }
 
+/** Whether pixel (i, j, k) is in the pattern of the test of frames that start mid-byte: a ball off
+ *  the centre and a scatter of lone pixels that moves from slice to slice, so that a bit read from
+ *  another place of the frame, or from the next one, shows. */
+bool lopsidedPattern(int i, int j, int k)
+{
+  const bool ball = std::hypot(i - 3.0, j - 7.0, k - 4.5) <= 4.0;
+  return ball || (7 * i + 3 * j + 5 * k) % 11 == 0;
+}
+
+TEST_F(SegmentationFileTest, DicomSegBinaryFramesThatStartMidByteAreReadBitForBit)
+{
+  // 13 x 11 pixels: 143 bits a frame. The frames of a BINARY file are one bit stream, so frame k
+  // starts at bit 143 k: at every bit position of a byte (0, 7, 6, ..., 1) over the first eight.
+  ImageGrid grid;
+  grid.size = { 13, 11, 10 };
+  auto index = [](double x) { return static_cast<int>(std::lround(x)); };
+  testing::writeDicomSegmentation(path("odd.dcm"), grid,
+                                  { { "Pattern", { 1, 0, 0 }, [&](const PhysicalPoint& p)
+                                      { return lopsidedPattern(index(p[0]), index(p[1]), index(p[2])) ? 1.0 : 0.0; } } });
+  const SegmentationFile file = readDicomSegmentation(path("odd.dcm"));
+  ASSERT_EQ(file.layers.size(), 1u);
+  std::size_t wrong = 0;
+  for (int k = 0; k < grid.size[2]; ++k)
+    for (int j = 0; j < grid.size[1]; ++j)
+      for (int i = 0; i < grid.size[0]; ++i)
+      {
+        const bool expected = lopsidedPattern(i, j, k);
+        const float value = valueAt(file.layers[0], grid.point(i, j, k));
+        if ((value == 1.0f) != expected && wrong++ < 10)
+          ADD_FAILURE() << "voxel " << i << " " << j << " " << k << " is " << value << ", written " << expected;
+      }
+  EXPECT_EQ(wrong, 0u) << "voxels read wrong of " << grid.size[0] * grid.size[1] * grid.size[2];
+}
+
+TEST_F(SegmentationFileTest, DicomSegBinaryPixelDataShorterThanItsFramesIsAnError)
+{
+  // 10 frames of 13 x 11 bits need 179 bytes (1430 bits); 9 frames 161.
+  ImageGrid grid;
+  grid.size = { 13, 11, 10 };
+  auto message = [&](const std::string& name, std::size_t bytes, long numberOfFrames)
+  {
+    testing::writeDicomSegmentation(path(name), grid, { { "Slab", { 1, 0, 0 }, [](const PhysicalPoint&) { return 1.0; } } });
+    testing::cutDicomFrames(path(name), bytes, numberOfFrames);
+    try
+    {
+      readDicomSegmentation(path(name));
+    }
+    catch (const Error& e)
+    {
+      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+      return std::string(e.what());
+    }
+    return std::string("read without an error");
+  };
+  EXPECT_EQ(message("whole.dcm", 179, -1), "read without an error");
+  // Number of Frames says 9 and the pixel data holds 9 frames (DCMTK checks no more; it pads the
+  // 161 bytes to an even 162), but the functional groups describe 10.
+  EXPECT_EQ(message("nine.dcm", 161, 9),
+            path("nine.dcm") + ": the pixel data has 162 bytes; 10 frames of 11 x 13 pixels need 179");
+  // A byte short of Number of Frames: DCMTK refuses it as it loads the file.
+  const std::string text = message("short.dcm", 178, -1);
+  EXPECT_EQ(text.rfind(path("short.dcm") + ": ", 0), 0u) << text;
+  EXPECT_NE(text.find("Pixel Data"), std::string::npos) << text;
+}
+
 TEST_F(SegmentationFileTest, DicomSegFractionalCountsFromHalfTheMaximum)
 {
   ImageGrid grid;

@@ -2,6 +2,7 @@
 
 #include "dcmtk/config/osconfig.h"
 #include "dcmtk/dcmdata/dcdeftag.h"
+#include "dcmtk/dcmdata/dcfilefo.h"
 #include "dcmtk/dcmfg/fgpixmsr.h"
 #include "dcmtk/dcmfg/fgplanor.h"
 #include "dcmtk/dcmfg/fgplanpo.h"
@@ -173,6 +174,25 @@ void check(const OFCondition& status, const std::string& what)
     throw std::runtime_error("writing the DICOM SEG: " + what + ": " + status.text());
 }
 
+/** 0/1 pixels packed as DICOM packs 1-bit data: one bit stream across all frames, pixel n in bit
+ *  n % 8 of byte n / 8 (the least significant bit first). dcmseg (3.6.7) packs the frames that
+ *  start mid-byte otherwise, so its reader alone would not see its own misreading. */
+std::vector<Uint8> packedBits(const std::vector<Uint8>& pixels)
+{
+  std::vector<Uint8> bytes((pixels.size() + 7) / 8, 0);
+  for (std::size_t n = 0; n < pixels.size(); ++n)
+    if (pixels[n])
+      bytes[n / 8] = static_cast<Uint8>(bytes[n / 8] | (1u << (n % 8)));
+  return bytes;
+}
+
+/** Saves the file with `pixelData` as its Pixel Data (OB; DCMTK pads an odd length). */
+void saveWithPixelData(const std::filesystem::path& path, DcmFileFormat& file, const std::vector<Uint8>& pixelData)
+{
+  check(file.getDataset()->putAndInsertUint8Array(DCM_PixelData, pixelData.data(), pixelData.size()), "pixel data");
+  check(file.saveFile(path.c_str(), EXS_LittleEndianExplicit), "save");
+}
+
 } // namespace
 
 void writeDicomSegmentation(const std::filesystem::path& path, const ImageGrid& grid,
@@ -217,6 +237,7 @@ void writeDicomSegmentation(const std::filesystem::path& path, const ImageGrid& 
   check(measures.setSpacingBetweenSlices(decimal(grid.spacing[2])), "slice spacing");
   check(segmentation->addForAllFrames(measures), "pixel measures");
 
+  std::vector<Uint8> framePixels; // every frame's pixels, frame after frame
   for (const DicomSegmentSpec& spec : segments)
   {
     DcmSegment* segment = nullptr;
@@ -252,9 +273,28 @@ void writeDicomSegmentation(const std::filesystem::path& path, const ImageGrid& 
       OFVector<FGBase*> perFrame;
       perFrame.push_back(position);
       check(segmentation->addFrame(pixels.data(), number, perFrame), "frame");
+      framePixels.insert(framePixels.end(), pixels.begin(), pixels.end());
     }
   }
-  check(segmentation->saveFile(path.c_str()), "save");
+  DcmFileFormat file;
+  check(segmentation->writeDataset(*file.getDataset()), "dataset");
+  if (maxFraction == 0)
+    saveWithPixelData(path, file, packedBits(framePixels));
+  else
+    check(file.saveFile(path.c_str(), EXS_LittleEndianExplicit), "save");
+}
+
+void cutDicomFrames(const std::filesystem::path& path, std::size_t pixelDataBytes, long numberOfFrames)
+{
+  DcmFileFormat file;
+  check(file.loadFile(path.c_str()), "load");
+  const Uint8* pixelData = nullptr;
+  unsigned long length = 0;
+  check(file.getDataset()->findAndGetUint8Array(DCM_PixelData, pixelData, &length), "pixel data");
+  if (numberOfFrames >= 0)
+    check(file.getDataset()->putAndInsertString(DCM_NumberOfFrames, std::to_string(numberOfFrames).c_str()),
+          "number of frames");
+  saveWithPixelData(path, file, std::vector<Uint8>(pixelData, pixelData + std::min<std::size_t>(pixelDataBytes, length)));
 }
 
 } // namespace slicemesh::testing

@@ -1,10 +1,12 @@
 // Segmentation files made by the tests: a 3D Slicer .seg.nrrd (written as Slicer writes it, header
-// and raw voxels) and a DICOM SEG (written with DCMTK's dcmseg), of shapes given as functions of the
-// physical (LPS) point, so meshes can be compared with the analytic shapes.
+// and raw voxels) and a DICOM SEG (written with DCMTK's dcmseg; a binary one's bits are packed
+// here), of shapes given as functions of the physical (LPS) point, so meshes can be compared with
+// the analytic shapes.
 #ifndef SegmentationFileWriters_h
 #define SegmentationFileWriters_h
 
 #include <array>
+#include <cstddef>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -75,10 +77,17 @@ struct DicomSegmentSpec
  *  frame per segment and slice where the segment has a pixel (as SEG writers leave empty frames
  *  out), in segment order. Binary when maxFraction is 0, else fractional (probability) with that
  *  Maximum Fractional Value. `framePosition`, when given, replaces the Image Position (Patient)
- *  written for slice k (to make files whose frames are off the grid). */
+ *  written for slice k (to make files whose frames are off the grid). A binary file's frames are
+ *  packed here, as one bit stream as the standard says (a frame starts at bit n * rows * columns,
+ *  mid-byte when rows * columns is not a multiple of 8), not by dcmseg, which packs those otherwise. */
 void writeDicomSegmentation(const std::filesystem::path& path, const ImageGrid& grid,
                             const std::vector<DicomSegmentSpec>& segments, unsigned int maxFraction = 0,
                             const std::function<PhysicalPoint(int k)>& framePosition = {});
+
+/** Rewrites the DICOM file with only the first `pixelDataBytes` bytes of its Pixel Data and, when
+ *  numberOfFrames is not negative, that Number of Frames (the per-frame functional groups stay): a
+ *  well-formed file whose frames lack pixels. */
+void cutDicomFrames(const std::filesystem::path& path, std::size_t pixelDataBytes, long numberOfFrames = -1);
 
 } // namespace slicemesh::testing
 
