@@ -39,6 +39,20 @@ T field(const unsigned char* bytes, std::size_t offset, bool swap)
 
 } // namespace
 
+bool isNifti2(const std::string& path)
+{
+  if (!isNiftiName(path))
+    return false;
+  gzFile file = gzopen(path.c_str(), "rb");
+  if (!file)
+    return false;
+  unsigned char bytes[4];
+  const int read = gzread(file, bytes, sizeof bytes);
+  gzclose(file);
+  return read == static_cast<int>(sizeof bytes) &&
+         (field<std::int32_t>(bytes, 0, false) == 540 || field<std::int32_t>(bytes, 0, true) == 540);
+}
+
 std::optional<Nifti1Header> readNifti1Header(const std::string& path)
 {
   if (!isNiftiName(path))

@@ -29,6 +29,9 @@ struct Nifti1Header
  *  ITK then reads it, or says what is wrong with it. */
 std::optional<Nifti1Header> readNifti1Header(const std::string& path);
 
+/** Whether the file, named as NIfTI, is NIfTI-2 (a header of 540 bytes), which ITK 5.2 does not read. */
+bool isNifti2(const std::string& path);
+
 } // namespace slicemesh
 
 #endif

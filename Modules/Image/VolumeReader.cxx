@@ -14,6 +14,7 @@
 #include "Core/SliceMeshTypes.h"
 
 #include "itkImageFileReader.h"
+#include "itkMetaImageIO.h"
 #include "itkImageIOFactory.h"
 #include "itkMetaDataObject.h"
 
@@ -612,6 +613,11 @@ itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
     }
     io = itk::ImageIOFactory::CreateImageIO(path.c_str(), reading);
   }
+  // ITK's MetaImage factory knows ".mha" and ".mhd" in lower case only; NIfTI's and NRRD's any case.
+  if (!io && (endsWith(lowercase(path), ".mha") || endsWith(lowercase(path), ".mhd")))
+    io = itk::MetaImageIO::New();
+  if (!io && isNifti2(path))
+    throw Error(path + ": a NIfTI-2 file, which SliceMesh does not read; save it as NIfTI-1 (.nii)");
   if (!io)
     throw Error(unreadable);
   try

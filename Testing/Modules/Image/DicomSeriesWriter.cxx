@@ -93,4 +93,14 @@ void writeMultiFrameFile(const CTVolume* volume, const std::filesystem::path& fi
     throw std::runtime_error("cannot write " + file.string());
 }
 
+void rewriteDicomString(const std::filesystem::path& file, unsigned short group, unsigned short element,
+                        const std::string& value)
+{
+  DcmFileFormat format;
+  if (format.loadFile(file.string().c_str()).bad() ||
+      format.getDataset()->putAndInsertString(DcmTagKey(group, element), value.c_str()).bad() ||
+      format.saveFile(file.string().c_str()).bad())
+    throw std::runtime_error("cannot rewrite " + file.string());
+}
+
 } // namespace slicemesh::testing

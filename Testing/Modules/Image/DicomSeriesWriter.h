@@ -22,6 +22,11 @@ void writeCTSeries(const CTVolume* volume, const std::filesystem::path& folder, 
  *  per slice, as an enhanced CT or MR keeps a whole series in one file. */
 void writeMultiFrameFile(const CTVolume* volume, const std::filesystem::path& file);
 
+/** Rewrites one string attribute (group, element) of a DICOM file as `value`, to make a header
+ *  that no writer would (GDCM's normalises the orientation it writes). */
+void rewriteDicomString(const std::filesystem::path& file, unsigned short group, unsigned short element,
+                        const std::string& value);
+
 } // namespace slicemesh::testing
 
 #endif

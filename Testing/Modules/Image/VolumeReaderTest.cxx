@@ -187,6 +187,29 @@ TEST_F(VolumeReaderTest, ANiftiInMetresOrMicronsLiesWhereItsHeaderSays)
   }
 }
 
+TEST_F(VolumeReaderTest, AnUpperCaseMetaImageNameIsRead)
+{
+  // ITK's MetaImage factory knows lower-case names only: "VOLUME.MHA" was "not an image file".
+  const ScalarVolume::Pointer written = obliqueVolume();
+  write(written.GetPointer(), path("volume.mha"));
+  fs::rename(path("volume.mha"), path("VOLUME.MHA"));
+  const ScalarVolume::Pointer read = readVolume(path("VOLUME.MHA"));
+  expectSameGeometry(read, readVolumeGeometry(path("VOLUME.MHA")), written);
+  EXPECT_TRUE(std::equal(read->GetBufferPointer(), read->GetBufferPointer() + 60, written->GetBufferPointer()));
+}
+
+TEST_F(VolumeReaderTest, ANifti2FileIsNamedAsSuch)
+{
+  // ITK 5.2 reads NIfTI-1 only: a NIfTI-2 file was "not an image file SliceMesh can read".
+  std::string header(540 + 4 + 64, '\0');
+  const std::int32_t size = 540;
+  std::memcpy(header.data(), &size, sizeof size);
+  std::memcpy(header.data() + 4, "n+2\0\r\n\032\n", 8);
+  const std::string message = errorMessageOf([&] { readVolume(writeText("v2.nii", header)); });
+  EXPECT_NE(message.find("v2.nii: a NIfTI-2 file, which SliceMesh does not read; save it as NIfTI-1"), std::string::npos)
+    << message;
+}
+
 TEST_F(VolumeReaderTest, SampleVolumeIsReadable)
 {
   const ScalarVolume::Pointer sample = readVolume(SLICEMESH_DATA_DIR "/sample-labelmap.nii.gz");
@@ -511,6 +534,36 @@ TEST_F(VolumeReaderTest, DicomSeriesOfSlicesInTwoOrientationsIsAnError)
   EXPECT_NE(message.find("not all of one orientation: slice003.dcm is turned 5 degrees from slice000.dcm"), std::string::npos)
     << message;
   EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+TEST_F(VolumeReaderTest, DicomSeriesOfTwoEchoesIsRefusedAsImagesSharingPositions)
+{
+  // Two echoes of one MR, one series: each position holds two images. Refused (right) as a slice
+  // missing; the message now says what the files are.
+  using ShortVolume = itk::Image<short, 3>;
+  auto volume = testing::makeImage<ShortVolume>({ 4, 4, 4 }, { 0.8, 0.8, 2.5 });
+  const fs::path dicom = folder() / "series", other = folder() / "echo2";
+  const std::string series = "1.2.826.0.1.3680043.2.1125.1.8";
+  testing::writeCTSeries(volume, dicom, series);
+  testing::writeCTSeries(volume, other, series);
+  for (int k = 0; k < 4; ++k)
+    fs::rename(other / ("slice00" + std::to_string(k) + ".dcm"), dicom / ("echo00" + std::to_string(k) + ".dcm"));
+  const std::string message = errorMessageOf([&] { readVolume(dicom.string()); });
+  EXPECT_NE(message.find("are at one position (echoes, phases or repeats of one scan?)"), std::string::npos) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+TEST_F(VolumeReaderTest, DicomSeriesWhoseOrientationIsNotTwoUnitVectorsIsAnError)
+{
+  // A column direction of length 0.8 was read as it is: a grid stretched by a quarter, exit 0.
+  using ShortVolume = itk::Image<short, 3>;
+  auto volume = testing::makeImage<ShortVolume>({ 4, 4, 4 }, { 0.8, 0.8, 2.5 });
+  const fs::path dicom = folder() / "series";
+  testing::writeCTSeries(volume, dicom);
+  for (int k = 0; k < 4; ++k)
+    testing::rewriteDicomString(dicom / ("slice00" + std::to_string(k) + ".dcm"), 0x0020, 0x0037, "1\\0\\0\\0\\0.8\\0");
+  const std::string message = errorMessageOf([&] { readVolume(dicom.string()); });
+  EXPECT_NE(message.find("is not two perpendicular unit vectors (lengths 1 and 0.8"), std::string::npos) << message;
 }
 
 TEST_F(VolumeReaderTest, OneDicomSliceIsAnErrorButOneMultiFrameFileIsAVolume)
