@@ -105,11 +105,11 @@ TEST(VolumeSegmentation, MissingLabelListsTheLabelsPresent)
 
 TEST(VolumeSegmentation, LongLabelListIsCut)
 {
-  // Labels 1 to 30, two voxels each (a label map's neighbours are mostly equal: one voxel each reads
-  // as an image's intensities).
-  auto volume = makeVolume({ 60, 1, 1 });
-  for (long i = 0; i < 60; ++i)
-    volume->SetPixel({ { i, 0, 0 } }, static_cast<float>(i / 2 + 1));
+  // Labels 1 to 30, three voxels each in a row (a label map's neighbours are mostly equal: one voxel
+  // each, touching, reads as an image's intensities).
+  auto volume = makeVolume({ 90, 1, 1 });
+  for (long i = 0; i < 90; ++i)
+    volume->SetPixel({ { i, 0, 0 } }, static_cast<float>(i / 3 + 1));
   SegmentationOptions options;
   options.label = 99;
   const std::string message = errorMessageOf(volume, options);
@@ -281,7 +281,7 @@ TEST(VolumeSegmentation, WholeNonNegativeIntensitiesAreGrayscale)
   const MaskVolume::Pointer mask = segmentVolume(volume, SegmentationOptions{}, &choice);
   EXPECT_EQ(countInside(mask), 1000u);
   EXPECT_EQ(choice.rfind("input kind Grayscale, chosen from the voxels: ", 0), 0u) << choice;
-  EXPECT_NE(choice.find("neighbouring voxels differ in"), std::string::npos) << choice;
+  EXPECT_NE(choice.find("neighbouring non-zero voxels differ in"), std::string::npos) << choice;
   // The same values in blocks (a label map of as many labels, each a slab of voxels) stay labels.
   auto blocks = makeVolume({ 20, 20, 20 });
   for (long k = 0; k < 20; ++k)
@@ -290,6 +290,16 @@ TEST(VolumeSegmentation, WholeNonNegativeIntensitiesAreGrayscale)
         blocks->SetPixel({ { i, j, k } }, static_cast<float>(1 + k + 20 * (j / 10)));
   segmentVolume(blocks, SegmentationOptions{}, &choice);
   EXPECT_EQ(choice.rfind("input kind LabelMap, chosen from the voxels: 40 whole", 0), 0u) << choice;
+  // Nor a map of 50 separate lesions of two voxels each: their pairs with the background do not count.
+  auto lesions = makeVolume({ 20, 20, 20 });
+  for (long n = 0; n < 50; ++n)
+  {
+    const long i = 1 + 4 * (n % 5), j = 1 + 4 * ((n / 5) % 5), k = 1 + 8 * (n / 25);
+    lesions->SetPixel({ { i, j, k } }, static_cast<float>(n + 1));
+    lesions->SetPixel({ { i, j, k + 1 } }, static_cast<float>(n + 1));
+  }
+  segmentVolume(lesions, SegmentationOptions{}, &choice);
+  EXPECT_EQ(choice.rfind("input kind LabelMap, chosen from the voxels: 51 whole", 0), 0u) << choice;
 }
 
 TEST(VolumeSegmentation, AGrayscaleOptionChoosesGrayscale)
