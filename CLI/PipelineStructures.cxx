@@ -316,6 +316,34 @@ std::optional<std::string> speckNoiseWarning(const FinishedSurface& surface)
   return text.str();
 }
 
+bool volumeShortfall(const LabelReport& report)
+{
+  const double target = report.quality.targetVolume;
+  return target > 0.0 && std::abs(report.validation.volume - target) > 0.05 * target;
+}
+
+std::string volumeShortfallWarning(const std::vector<Structure>& structures, const std::vector<std::size_t>& shortOfVolume,
+                                   const std::string& noun)
+{
+  const Structure& first = structures[shortOfVolume.front()];
+  const double enclosed = first.report.validation.volume, target = first.report.quality.targetVolume;
+  std::ostringstream text;
+  if (structures.size() > 1)
+    text << shortOfVolume.size() << " of the " << structures.size() << " meshes enclose more than 5% "
+         << "more or less than their voxels; the first, " << noun << " " << first.report.label << " ("
+         << first.report.name << "), ";
+  else
+    text << "the mesh ";
+  text << "encloses " << measureText(enclosed, 1) << " mm^3, " << measureText(100.0 * std::abs(enclosed - target) / target, 0)
+       << "% " << (enclosed < target ? "less" : "more") << " than the " << measureText(target, 1)
+       << " mm^3 of its voxels";
+  if (first.report.quality.trianglesKeptTiled > 0)
+    text << " (" << first.report.quality.trianglesKeptTiled
+         << " triangles kept in their tiled shape where finished pieces crossed: structures thinner or closer than "
+            "the target edge)";
+  return text.str();
+}
+
 std::optional<std::string> frameOfReferenceWarning(const StructureSet& set, const VolumeGeometry& reference,
                                                    const ContourInputSettings& contours)
 {

@@ -84,6 +84,17 @@ std::optional<std::string> speckNoiseWarning(const FinishedSurface& surface);
 /** How many specks make speckNoiseWarning speak. */
 constexpr std::size_t speckNoiseCount = 1000;
 
+/** Whether a finished structure encloses more than 5% less (or more) than the volume it was given
+ *  (its voxels'; RunQuality::targetVolume): where its pieces crossed once finished they keep their
+ *  tiled shape, which lies inside, and a speck follows its voxels only half way. Volumetry is a main
+ *  use: such a shortfall is said, not left to the report. */
+bool volumeShortfall(const LabelReport& report);
+
+/** The one warning for the structures `shortOfVolume` (indices into `structures`, volumeShortfall):
+ *  how many, and the first's volumes. */
+std::string volumeShortfallWarning(const std::vector<Structure>& structures, const std::vector<std::size_t>& shortOfVolume,
+                                   const std::string& noun);
+
 /** One structure per ROI asked for (every ROI by default), in the file's order: its contours as a
  *  stack along the reference image's slice direction and spacing when they lie on its slices (else
  *  along their own normal, with one warning for the set), crossings and keyholes repaired.

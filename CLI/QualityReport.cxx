@@ -165,6 +165,7 @@ RunQuality combinedQuality(const std::vector<LabelReport>& labels, const MeshVal
       combined.piecesByFinish[f] += q.piecesByFinish[f];
     combined.unsmoothedVertices += q.unsmoothedVertices;
     combined.trianglesKeptTiled += q.trianglesKeptTiled;
+    combined.targetVolume += q.targetVolume;
     combined.crossingRepairOperations += q.crossingRepairOperations;
     combined.narrowTrianglesWidened += q.narrowTrianglesWidened;
     if (!q.fallback.empty())
@@ -259,6 +260,7 @@ void writeMeshBlocks(std::ostream& json, const std::string& indent, const MeshVa
        << q.piecesByFinish[1] << ", \"leftTiled\": " << q.piecesByFinish[2] << " },\n";
   number("verticesLeftUnsmoothed", static_cast<double>(q.unsmoothedVertices));
   number("trianglesKeptTiledAtCrossings", static_cast<double>(q.trianglesKeptTiled));
+  json << indent << "  \"targetVolumeMm3\": " << (q.targetVolume > 0.0 ? jsonNumber(q.targetVolume) : "null") << ",\n";
   number("crossingRepairOperations", static_cast<double>(q.crossingRepairOperations));
   number("narrowTrianglesWidened", static_cast<double>(q.narrowTrianglesWidened));
   json << indent << "  \"fallback\": " << (q.fallback.empty() ? "null" : jsonString(q.fallback)) << "\n";

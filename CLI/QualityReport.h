@@ -49,6 +49,9 @@ struct RunQuality
   std::size_t unsmoothedVertices = 0; ///< where smoothing made triangles cross, or a piece crossed another (FinishedSurface)
   /** Of remeshed pieces, kept as tiled where their remesh crossed itself or another piece. */
   std::size_t trianglesKeptTiled = 0;
+  /** The volume the finished surface was given (mm^3): its voxels', or its contours' areas times
+   *  the slice spacing; 0 where it keeps the tiling's (caps at the slice, intermediate sections). */
+  double targetVolume = 0.0;
   /** Flips, collapses and vertex moves that undid a remesh's few crossings without a second remesh
    *  (FinishedSurface::crossingRepairOperations). */
   std::size_t crossingRepairOperations = 0;

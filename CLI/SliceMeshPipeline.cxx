@@ -169,6 +169,8 @@ RunQuality runQualityOf(const MeshedContours& m)
   quality.smallPiecesAsTiled = m.surface.smallPiecesAsTiled;
   quality.unsmoothedVertices = m.surface.unsmoothedVertices;
   quality.trianglesKeptTiled = m.surface.trianglesKeptTiled;
+  if (m.sections.sectionsInserted == 0 && m.options.finishing.finish != SurfaceFinish::Tiled)
+    quality.targetVolume = m.targetVolume;
   quality.crossingRepairOperations = m.surface.crossingRepairOperations;
   quality.narrowTrianglesWidened = m.surface.narrowTrianglesWidened;
   quality.piecesByFinish = m.surface.piecesByFinish;
@@ -493,6 +495,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   std::vector<LabelReport> reports;
   std::vector<MeshValidation> validations;
   std::vector<AppendedAt> appendedAt(structures.size() + 1);
+  std::vector<std::size_t> shortOfVolume; // structures whose surface holds less than it was given (volumeShortfall)
   for (std::size_t n = 0; n < structures.size(); ++n)
   {
     Structure& s = structures[n];
@@ -512,6 +515,8 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
                   << std::endl;
       if (const auto specks = perLabel ? std::nullopt : speckNoiseWarning(surface))
         std::cerr << "SliceMesh: warning: " << *specks << std::endl;
+      if (volumeShortfall(s.report))
+        shortOfVolume.push_back(n);
       validations.push_back(s.report.validation);
       if (perLabel)
       {
@@ -531,6 +536,8 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
     reports.push_back(s.report);
   }
   appendedAt[structures.size()] = { merged.points.size(), merged.triangles.size() };
+  if (!shortOfVolume.empty())
+    std::cerr << "SliceMesh: warning: " << volumeShortfallWarning(structures, shortOfVolume, noun) << std::endl;
   if (merged.triangles.empty() && failures.empty())
   {
     std::ostringstream message;
