@@ -371,6 +371,20 @@ int ModuleEntryPoint(int argc, char* argv[])
     {
       if (!finished)
         progress.finish(false);
+      // Some structures written, others failed: Slicer still gets the values of what was written.
+      if (e.written() && !arguments.returnParameterFile.empty())
+      {
+        const std::size_t written = static_cast<std::size_t>(
+          std::count_if(structures.begin(), structures.end(), [](const LabelReport& s) { return s.meshed(); }));
+        try
+        {
+          writeReturnParameters(arguments.returnParameterFile, returnValues(*e.written(), written));
+        }
+        catch (const Error& error)
+        {
+          std::cerr << "SliceMesh: error: " << oneLine(error.what()) << std::endl;
+        }
+      }
       return fail(e.code(), e.what());
     }
 

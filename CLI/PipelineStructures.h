@@ -87,10 +87,10 @@ constexpr std::size_t speckNoiseCount = 1000;
 /** Whether a finished structure encloses more than 5% less (or more) than the volume it was given
  *  (its voxels'; RunQuality::targetVolume): where its pieces crossed once finished they keep their
  *  tiled shape, which lies inside, and a speck follows its voxels only half way. Volumetry is a main
- *  use: such a shortfall is said, not left to the report. */
+ *  use: such a shortfall is said (on stdout, a note), not left to the report. */
 bool volumeShortfall(const LabelReport& report);
 
-/** The one warning for the structures `shortOfVolume` (indices into `structures`, volumeShortfall):
+/** The one line for the structures `shortOfVolume` (indices into `structures`, volumeShortfall):
  *  how many, and the first's volumes. */
 std::string volumeShortfallWarning(const std::vector<Structure>& structures, const std::vector<std::size_t>& shortOfVolume,
                                    const std::string& noun);

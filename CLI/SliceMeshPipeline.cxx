@@ -536,8 +536,10 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
     reports.push_back(s.report);
   }
   appendedAt[structures.size()] = { merged.points.size(), merged.triangles.size() };
+  // On stdout: specks make most of these, as asked, and 3D Slicer marks a run that writes to
+  // stderr as failing.
   if (!shortOfVolume.empty())
-    std::cerr << "SliceMesh: warning: " << volumeShortfallWarning(structures, shortOfVolume, noun) << std::endl;
+    std::cout << "SliceMesh: " << volumeShortfallWarning(structures, shortOfVolume, noun) << std::endl;
   if (merged.triangles.empty() && failures.empty())
   {
     std::ostringstream message;
@@ -651,7 +653,9 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
     std::ostringstream message;
     message << failures.size() << " of " << structures.size() << " " << noun << "s failed; "
             << (merged.triangles.empty() ? "nothing was written" : "the others were written");
-    throw PipelineFailure(MeshingFailed, message.str());
+    if (merged.triangles.empty())
+      throw PipelineFailure(MeshingFailed, message.str());
+    throw PipelineFailure(MeshingFailed, message.str(), result);
   }
   madeFolders.keep();
   return result;

@@ -14,6 +14,7 @@
 #include "QualityReport.h"
 #include "VolumeSegmentation.h"
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -67,10 +68,20 @@ public:
     , Code(code)
   {
   }
+  /** A run that wrote some structures before others failed: what it wrote, for the return values. */
+  PipelineFailure(ExitCode code, const std::string& message, const PipelineResult& written)
+    : std::runtime_error(message)
+    , Code(code)
+    , Written(std::make_shared<const PipelineResult>(written))
+  {
+  }
   ExitCode code() const { return this->Code; }
+  /** What was written, when some structures were (else null). */
+  const PipelineResult* written() const { return this->Written.get(); }
 
 private:
   ExitCode Code;
+  std::shared_ptr<const PipelineResult> Written;
 };
 
 /** The text on one line: errors and warnings are one line on stderr (Slicer logs each line on its own). */

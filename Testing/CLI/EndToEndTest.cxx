@@ -747,9 +747,7 @@ TEST(EndToEnd, ContourSimplificationKeepsAOneVoxelThinBarASolid)
     const RunResult r = runSliceMesh("--contourSimplification " + tolerance + " " + quoted(input.string()) + " " +
                                      quoted((folder / "bar.vtp").string()));
     EXPECT_EQ(r.exitCode, cli::Success) << tolerance << ": " << r.err;
-    // Nothing but the speck's volume, which it follows only half way.
-    for (const std::string& line : linesOf(r.err))
-      EXPECT_NE(line.find("less than the 1.5 mm^3 of its voxels"), std::string::npos) << tolerance << ": " << line;
+    EXPECT_EQ(r.err, "") << tolerance;
   }
 }
 
@@ -799,22 +797,23 @@ TEST(EndToEnd, AMeshThatEnclosesLessThanItsVoxelsSaysSo)
   RunResult r = runSliceMesh("--splitLabels --report " + quoted(report.string()) + " " + quoted(specks.string()) + " " +
                              quoted((folder / "specks.vtp").string()));
   ASSERT_EQ(r.exitCode, cli::Success) << r.err;
-  EXPECT_NE(r.err.find("warning: 10 of the 10 meshes enclose more than 5% more or less than their voxels; the first, "
-                       "label 1 (Label_1), encloses 0."),
+  EXPECT_NE(r.out.find("SliceMesh: 10 of the 10 meshes enclose more than 5% more or less than their voxels; the "
+                       "first, label 1 (Label_1), encloses 0."),
             std::string::npos)
-    << r.err;
+    << r.out;
   EXPECT_NE(fileText(report).find("\"targetVolumeMm3\": 10"), std::string::npos) << fileText(report);
   // One mesh of one voxel says it of itself.
   const fs::path one = folder / "one.mha";
   writeMetaImage(one, { 5, 5, 5 }, { 1.0, 1.0, 1.0 }, [](int i, int j, int k) -> unsigned char { return i == 2 && j == 2 && k == 2; });
   r = runSliceMesh(quoted(one.string()) + " " + quoted((folder / "one.vtp").string()));
   ASSERT_EQ(r.exitCode, cli::Success) << r.err;
-  EXPECT_NE(r.err.find("warning: the mesh encloses 0."), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("less than the 1.0 mm^3 of its voxels"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("SliceMesh: the mesh encloses 0."), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("less than the 1.0 mm^3 of its voxels"), std::string::npos) << r.out;
+  EXPECT_EQ(r.err, "") << "a note, not a warning: Slicer marks a run that writes to stderr as failing";
   // Boxes get their voxels' volume: nothing to say.
   r = runSliceMesh(quoted(twoBoxesLabelMap(folder).string()) + " " + quoted((folder / "boxes.vtp").string()));
   ASSERT_EQ(r.exitCode, cli::Success) << r.err;
-  EXPECT_EQ(r.err.find("of its voxels"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("of its voxels"), std::string::npos) << r.out;
 }
 
 TEST(EndToEnd, AnMRIOfWholeValuesIsGrayscaleAndGrayscaleOptionsChooseGrayscale)
