@@ -19,6 +19,7 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <unordered_set>
 
 namespace slicemesh
 {
@@ -82,6 +83,25 @@ std::string structureName(const PolyDataGeometry& geometry, const std::string& p
 
 } // namespace
 
+/** Whether two polygon cells share an edge (by their point ids): the cells of a surface mesh do,
+ *  contours drawn in planes never. A surface given as contours was read triangle by triangle, each
+ *  a tilted "contour" skipped or a speck meshed, into a mesh of a tenth of its volume (exit 0). */
+bool polygonsShareAnEdge(const std::vector<std::vector<std::int64_t>>& polygons)
+{
+  std::unordered_set<std::uint64_t> edges;
+  for (const std::vector<std::int64_t>& ids : polygons)
+    for (std::size_t i = 0; i < ids.size(); ++i)
+    {
+      const std::int64_t a = ids[i], b = ids[(i + 1) % ids.size()];
+      if (a == b)
+        continue;
+      const std::uint64_t key = (static_cast<std::uint64_t>(std::min(a, b)) << 32) ^ static_cast<std::uint64_t>(std::max(a, b));
+      if (!edges.insert(key).second)
+        return true;
+    }
+  return false;
+}
+
 StructureSet readContourPolyData(const std::string& path)
 {
   if (!std::filesystem::is_regular_file(path))
@@ -93,6 +113,9 @@ StructureSet readContourPolyData(const std::string& path)
   const bool ras = (space != geometry.fieldStrings.end() && lowercase(space->second) == "ras") ||
                    lowercase(geometry.title).find("space=ras") != std::string::npos;
 
+  if (polygonsShareAnEdge(geometry.polygons))
+    throw Error("'" + path + "' holds a surface mesh (" + std::to_string(geometry.polygons.size()) +
+                " polygons joined at their edges), not contours drawn in planes: SliceMesh meshes contours or a label map");
   PlanarStructure roi;
   roi.number = 1;
   roi.name = structureName(geometry, path);

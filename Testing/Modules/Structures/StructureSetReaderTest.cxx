@@ -764,6 +764,40 @@ TEST(StructureSetReader, ReadsSlicerPlanarContoursFromLegacyAndXmlPolyData)
   }
 }
 
+TEST(StructureSetReader, ASurfaceMeshGivenAsContoursIsRefused)
+{
+  // A closed surface (a tetrahedron, and a mesh SliceMesh wrote) read as contours: each triangle
+  // was a "contour", tilted ones skipped, into a mesh of a tenth of the volume with exit 0.
+  const fs::path dir = folder("surfaceAsContours");
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(10, 0, 0);
+  points->InsertNextPoint(0, 10, 0);
+  points->InsertNextPoint(0, 0, 10);
+  vtkNew<vtkCellArray> triangles;
+  for (const std::array<vtkIdType, 3>& t : { std::array<vtkIdType, 3>{ 0, 2, 1 }, std::array<vtkIdType, 3>{ 0, 1, 3 },
+                                             std::array<vtkIdType, 3>{ 1, 2, 3 }, std::array<vtkIdType, 3>{ 0, 3, 2 } })
+    triangles->InsertNextCell(3, t.data());
+  vtkNew<vtkPolyData> surface;
+  surface->SetPoints(points);
+  surface->SetPolys(triangles);
+  vtkNew<vtkXMLPolyDataWriter> xml;
+  xml->SetFileName((dir / "Liver.vtp").c_str());
+  xml->SetInputData(surface);
+  ASSERT_EQ(xml->Write(), 1);
+  try
+  {
+    readStructureSet((dir / "Liver.vtp").string());
+    ADD_FAILURE() << "a surface read as contours";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("holds a surface mesh (4 polygons joined at their edges), not contours"),
+              std::string::npos)
+      << e.what();
+  }
+}
+
 TEST(StructureSetReader, ReadsLegacyPolyDataAsVtkWritesItInEitherFormatAsciiOrBinary)
 {
   const fs::path dir = folder("legacyFormats");
