@@ -142,6 +142,10 @@ StructureSet readDocument(const std::string& path)
     }
     try
     {
+      // A misspelt key ("Slices") left the ROI without contours, said only as "no closed contour".
+      for (const auto& item : roi.items())
+        if (item.key() != "number" && item.key() != "name" && item.key() != "color" && item.key() != "slices")
+          throw ContourDataFault{ at, "unknown key \"" + item.key() + "\" (an ROI has number, name, color and slices)" };
       readSlices(roi, at, sign, structure);
     }
     catch (const ContourDataFault& fault)

@@ -670,6 +670,19 @@ TEST(StructureSetReader, AJsonROIWithContourDataThatIsNoNumberIsUnusableAlone)
   }
 }
 
+TEST(StructureSetReader, AJsonROIWithAnUnknownKeyIsUnusableAlone)
+{
+  // "Slices" for "slices": the ROI had no contours and was said only to have no closed contour.
+  const fs::path path = folder("json-unknown-key") / "contours.json";
+  writeText(path, R"({ "rois": [ { "name": "Good", "slices": [ { "z": 0, "polygons": [ [[0, 0], [4, 0], [4, 4]] ] } ] },
+                                 { "name": "Typo", "Slices": [ { "z": 0, "polygons": [ [[0, 0], [4, 0], [4, 4]] ] } ] } ] })");
+  const StructureSet set = readStructureSet(path.string());
+  ASSERT_EQ(set.structures.size(), 2u);
+  EXPECT_TRUE(set.structures[0].unusableBecause.empty()) << set.structures[0].unusableBecause;
+  EXPECT_NE(set.structures[1].unusableBecause.find("rois[1]: unknown key \"Slices\""), std::string::npos)
+    << set.structures[1].unusableBecause;
+}
+
 TEST(StructureSetReader, JsonROIsThatShareANumberAreNeitherMeshedWithOneNote)
 {
   // The number names an ROI's mesh (its file, its Label, what --rois picks): two ROIs given one
