@@ -230,6 +230,18 @@ const Uint8* fractionalFrame(const std::string& path, DcmSegmentation& segmentat
   return pixelData->pixData;
 }
 
+/** The Segment Number the file gives the segment at `position` (1, 2, ...) of its Segment Sequence;
+ *  the position itself where it gives none. (DCMTK numbers segments by position.) */
+std::size_t storedSegmentNumber(DcmDataset& dataset, std::size_t position)
+{
+  DcmItem* item = nullptr;
+  Uint16 number = 0;
+  if (dataset.findAndGetSequenceItem(DCM_SegmentSequence, item, static_cast<signed long>(position - 1)).good() && item &&
+      item->findAndGetUint16(DCM_SegmentNumber, number).good() && number > 0)
+    return number;
+  return position;
+}
+
 } // namespace
 
 bool isDicomSegmentation(const std::string& path)
@@ -278,11 +290,17 @@ SegmentationFile readDicomSegmentationFile(const std::string& path)
 
   SegmentationFile file;
   file.format = "DICOM SEG";
-  for (std::size_t number = 1; number <= segmentation->getNumberOfSegments(); ++number)
+  // The standard numbers segments 1, 2, ... in their order; some writers number them otherwise (3
+  // and 7), and the frames refer to those numbers: each segment keeps the number it was given.
+  std::map<std::size_t, std::size_t> positionOfNumber;
+  for (std::size_t position = 1; position <= segmentation->getNumberOfSegments(); ++position)
   {
-    DcmSegment* dicomSegment = segmentation->getSegment(number);
+    DcmSegment* dicomSegment = segmentation->getSegment(position);
     if (!dicomSegment)
-      throw Error(path + ": segment " + std::to_string(number) + " is missing (segments are numbered from 1 up)");
+      throw Error(path + ": segment " + std::to_string(position) + " is missing (segments are numbered from 1 up)");
+    const std::size_t number = storedSegmentNumber(dataset, position);
+    if (!positionOfNumber.emplace(number, position).second)
+      throw Error(path + ": two segments are numbered " + std::to_string(number));
     SegmentationFile::Segment segment;
     segment.number = static_cast<int>(number);
     segment.id = std::to_string(number);
@@ -299,7 +317,7 @@ SegmentationFile readDicomSegmentationFile(const std::string& path)
     }
     else
       segment.rgba = ColorTable::generatedColor(segment.number);
-    segment.layer = number - 1;
+    segment.layer = position - 1;
     segment.labelValue = 1;
     file.segments.push_back(segment);
   }
@@ -310,9 +328,11 @@ SegmentationFile readDicomSegmentationFile(const std::string& path)
   for (std::size_t n = 0; n < frameCount; ++n)
   {
     frames.push_back(frameGeometry(path, segmentation->getFunctionalGroups(), static_cast<Uint32>(n)));
-    if (frames.back().segment < 1 || frames.back().segment > file.segments.size())
+    const auto listed = positionOfNumber.find(frames.back().segment);
+    if (listed == positionOfNumber.end())
       throw Error(path + ": frame " + std::to_string(n + 1) + " refers to segment " +
-                  std::to_string(frames.back().segment) + ", which does not exist");
+                  std::to_string(frames.back().segment) + ", which the file does not list");
+    frames.back().segment = static_cast<Uint16>(listed->second); // from here on, the segment's position
   }
 
   // Each segment's slices: its label map covers them only.

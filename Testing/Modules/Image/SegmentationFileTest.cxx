@@ -390,6 +390,33 @@ TEST_F(SegmentationFileTest, DicomSegFramesLandWhereTheyWereWrittenOnAnObliqueGr
   EXPECT_EQ(file.layers[2]->GetBufferPointer()[0], 0.0f);
 }
 
+TEST_F(SegmentationFileTest, DicomSegSegmentsNumberedOtherwiseThanFromOneKeepTheirNumbers)
+{
+  // Segments numbered 3 and 7 (the standard numbers them 1, 2, ...; DCMTK counts them by position):
+  // refused as "frame 1 refers to segment 3, which does not exist". Each keeps its number now.
+  const ImageGrid grid = obliqueGrid();
+  const PhysicalPoint centreA = grid.point(5, 5, 4), centreB = grid.point(8, 6, 5);
+  testing::writeDicomSegmentation(path("seg.dcm"), grid,
+                                  { { "Prostate", { 0.8, 0.3, 0.2 }, ball(centreA, 3.0) },
+                                    { "Lesion", { 0.1, 0.7, 0.2 }, ball(centreB, 2.5) } });
+  testing::renumberDicomSegments(path("seg.dcm"), { 3, 7 });
+  const SegmentationFile file = readSegmentationFile(path("seg.dcm"));
+  ASSERT_EQ(file.segments.size(), 2u);
+  EXPECT_EQ(file.segments[0].number, 3);
+  EXPECT_EQ(file.segments[1].number, 7);
+  EXPECT_EQ(file.segments[1].name, "Lesion");
+  // Each segment's frames in its own layer, voxel by voxel.
+  for (int s = 0; s < 2; ++s)
+    for (int k = 0; k < grid.size[2]; ++k)
+      for (int j = 0; j < grid.size[1]; ++j)
+        for (int i = 0; i < grid.size[0]; ++i)
+        {
+          const PhysicalPoint p = grid.point(i, j, k);
+          const bool expected = s == 0 ? distance(p, centreA) <= 3.0 : distance(p, centreB) <= 2.5;
+          EXPECT_EQ(valueAt(file.layers[s], p) == 1.0f, expected) << "segment " << s << " voxel " << i << " " << j << " " << k;
+        }
+}
+
 /** Whether pixel (i, j, k) is in the pattern of the test of frames that start mid-byte: a ball off
  *  the centre and a scatter of lone pixels that moves from slice to slice, so that a bit read from
  *  another place of the frame, or from the next one, shows. */

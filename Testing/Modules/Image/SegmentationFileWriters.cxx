@@ -297,4 +297,28 @@ void cutDicomFrames(const std::filesystem::path& path, std::size_t pixelDataByte
   saveWithPixelData(path, file, std::vector<Uint8>(pixelData, pixelData + std::min<std::size_t>(pixelDataBytes, length)));
 }
 
+void renumberDicomSegments(const std::filesystem::path& path, const std::vector<unsigned short>& numbers)
+{
+  DcmFileFormat file;
+  check(file.loadFile(path.c_str()), "load");
+  DcmDataset* data = file.getDataset();
+  for (std::size_t s = 0; s < numbers.size(); ++s)
+  {
+    DcmItem* segment = nullptr;
+    check(data->findAndGetSequenceItem(DCM_SegmentSequence, segment, static_cast<signed long>(s)), "segment");
+    check(segment->putAndInsertUint16(DCM_SegmentNumber, numbers[s]), "segment number");
+  }
+  DcmSequenceOfItems* frames = nullptr;
+  check(data->findAndGetSequence(DCM_PerFrameFunctionalGroupsSequence, frames), "per-frame groups");
+  for (unsigned long f = 0; f < frames->card(); ++f)
+  {
+    DcmItem* reference = nullptr;
+    check(frames->getItem(f)->findAndGetSequenceItem(DCM_SegmentIdentificationSequence, reference), "segment identification");
+    Uint16 number = 0;
+    check(reference->findAndGetUint16(DCM_ReferencedSegmentNumber, number), "referenced segment number");
+    check(reference->putAndInsertUint16(DCM_ReferencedSegmentNumber, numbers[number - 1]), "referenced segment number");
+  }
+  check(file.saveFile(path.c_str(), EXS_LittleEndianExplicit), "save");
+}
+
 } // namespace slicemesh::testing

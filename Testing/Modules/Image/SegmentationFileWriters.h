@@ -89,6 +89,11 @@ void writeDicomSegmentation(const std::filesystem::path& path, const ImageGrid& 
  *  well-formed file whose frames lack pixels. */
 void cutDicomFrames(const std::filesystem::path& path, std::size_t pixelDataBytes, long numberOfFrames = -1);
 
+/** Rewrites the DICOM SEG's segment numbers, 1, 2, ... becoming numbers[0], numbers[1], ... in its
+ *  Segment Sequence and in every frame's Referenced Segment Number: a file of a writer that does not
+ *  number its segments from 1 up. */
+void renumberDicomSegments(const std::filesystem::path& path, const std::vector<unsigned short>& numbers);
+
 } // namespace slicemesh::testing
 
 #endif
