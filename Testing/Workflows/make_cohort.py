@@ -6,7 +6,11 @@ only (a minimal NIfTI-1 writer: no numpy or nibabel on a bare Debian):
   sub-03/anat/sub-03_T1w.nii            grayscale (float32): a bright ball with a soft edge
   sub-04/anat/sub-04_dseg.nii.gz        a label map cut off half way (unreadable)
 and expected.json: every mesh's voxel volume in mL, which its mesh's volume should be close to.
-Usage: make_cohort.py FOLDER"""
+With --reruns, inputs whose data lie in more than one file, for the rerun test:
+  p01/                  a DICOM series folder (8 slices of a ball, label 1; explicit VR little endian)
+  p02.nhdr              a detached NRRD header, its voxels in voxels-p02.raw (a box, label 1)
+  p03.mhd               a detached MetaImage header, its voxels in voxels-p03.raw (a box, label 1)
+Usage: make_cohort.py [--reruns] FOLDER"""
 import gzip
 import json
 import math
@@ -81,5 +85,70 @@ def main(root):
         json.dump(expected, out, indent=2)
 
 
+def dicom_element(group, element, vr, value):
+    """One explicit VR little endian element; value: bytes, str or an int for US/UL."""
+    if isinstance(value, int):
+        value = struct.pack("<H" if vr == "US" else "<I", value)
+    elif isinstance(value, str):
+        value = value.encode()
+    if len(value) % 2:
+        value += b"\0" if vr in ("UI", "OB") else b" "
+    if vr in ("OB", "OW", "UN", "SQ", "UT"):
+        return struct.pack("<HH2sHI", group, element, vr.encode(), 0, len(value)) + value
+    return struct.pack("<HH2sH", group, element, vr.encode(), len(value)) + value
+
+
+def dicom_slice(k, rows, columns, spacing, thickness, pixels):
+    """A CT image storage file of slice k (uint16 pixels, row by row), in a series of its own UIDs."""
+    root, ct = "1.2.826.0.1.3680043.2.1143.7", "1.2.840.10008.5.1.4.1.1.2"
+    instance = f"{root}.3.{k + 1}"
+    meta = (dicom_element(0x0002, 0x0001, "OB", b"\0\1") + dicom_element(0x0002, 0x0002, "UI", ct)
+            + dicom_element(0x0002, 0x0003, "UI", instance)
+            + dicom_element(0x0002, 0x0010, "UI", "1.2.840.10008.1.2.1")
+            + dicom_element(0x0002, 0x0012, "UI", root + ".9"))
+    elements = [
+        (0x0008, 0x0016, "UI", ct), (0x0008, 0x0018, "UI", instance), (0x0008, 0x0060, "CS", "CT"),
+        (0x0010, 0x0010, "PN", "Cohort^Test"), (0x0010, 0x0020, "LO", "p01"),
+        (0x0018, 0x0050, "DS", f"{thickness:g}"),
+        (0x0020, 0x000D, "UI", root + ".1"), (0x0020, 0x000E, "UI", root + ".2"),
+        (0x0020, 0x0011, "IS", "1"), (0x0020, 0x0013, "IS", str(k + 1)),
+        (0x0020, 0x0032, "DS", f"0\\0\\{k * thickness:g}"), (0x0020, 0x0037, "DS", "1\\0\\0\\0\\1\\0"),
+        (0x0020, 0x0052, "UI", root + ".4"),
+        (0x0028, 0x0002, "US", 1), (0x0028, 0x0004, "CS", "MONOCHROME2"),
+        (0x0028, 0x0010, "US", rows), (0x0028, 0x0011, "US", columns),
+        (0x0028, 0x0030, "DS", f"{spacing:g}\\{spacing:g}"),
+        (0x0028, 0x0100, "US", 16), (0x0028, 0x0101, "US", 16), (0x0028, 0x0102, "US", 15),
+        (0x0028, 0x0103, "US", 0),
+        (0x0028, 0x1052, "DS", "0"), (0x0028, 0x1053, "DS", "1"),
+        (0x7FE0, 0x0010, "OW", struct.pack("<%dH" % len(pixels), *pixels)),
+    ]
+    data = b"".join(dicom_element(*e) for e in elements)
+    return b"\0" * 128 + b"DICM" + dicom_element(0x0002, 0x0000, "UL", len(meta)) + meta + data
+
+
+def detached(root, name, header, voxels):
+    os.makedirs(root, exist_ok=True)
+    with open(f"{root}/{name}", "w") as out:
+        out.write(header)
+    with open(f"{root}/voxels-{os.path.splitext(name)[0]}.raw", "wb") as out:
+        out.write(bytes(voxels))
+
+
+def reruns(root):
+    size, spacing, thickness, slices = 24, 1.0, 2.0, 8
+    for k in range(slices):
+        pixels = [1 if (i - 11.5) ** 2 + (j - 11.5) ** 2 + ((k - 3.5) * thickness) ** 2 <= 7.5 ** 2 else 0
+                  for j in range(size) for i in range(size)]
+        write(f"{root}/p01/IM{k + 1:04d}.dcm", dicom_slice(k, size, size, spacing, thickness, pixels), False)
+    box = grid((20, 20, 20), (1, 1, 1), lambda x, y, z: 1 if 5 <= min(x, y, z) and max(x, y, z) <= 14 else 0)
+    detached(root, "p02.nhdr", "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 20 20 20\n"
+             "spacings: 1 1 1\nencoding: raw\ndata file: voxels-p02.raw\n", box)
+    detached(root, "p03.mhd", "ObjectType = Image\nNDims = 3\nDimSize = 20 20 20\n"
+             "ElementSpacing = 1 1 1\nElementType = MET_UCHAR\nElementDataFile = voxels-p03.raw\n", box)
+
+
 if __name__ == "__main__":
-    main(sys.argv[1])
+    if sys.argv[1] == "--reruns":
+        reruns(sys.argv[2])
+    else:
+        main(sys.argv[1])

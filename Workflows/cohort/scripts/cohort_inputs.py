@@ -3,6 +3,7 @@
 find_inputs(config) returns {unit: entry}: unit is the results path of the input without
 extension ("sub-01/ses-1/sub-01_ses-1_desc-aseg_dseg"); the entry holds path, subject ("sub-01",
 or the glob's match), session ("ses-1" or "") and name (the file name without extension).
+data_files(path) lists the files SliceMesh reads for one input, which the mesh rule depends on.
 """
 import glob
 import os
@@ -13,6 +14,64 @@ EXTENSIONS = (".nii.gz", ".nii", ".nrrd", ".nhdr", ".mha", ".mhd")
 
 class InputError(Exception):
     pass
+
+
+def header_lines(path, limit=1 << 16):
+    """The text lines of a header: a NRRD's up to its blank line, a MetaImage's up to its
+    ElementDataFile line's list (a .mha's or .nrrd's voxels follow)."""
+    try:
+        with open(path, "rb") as f:
+            text = f.read(limit)
+    except OSError:
+        return []
+    return text.decode("latin-1").splitlines()
+
+
+def named_data_files(path):
+    """The data files a detached header names (NRRD "data file:", MetaImage "ElementDataFile ="):
+    one file, a LIST of files on the lines after it, or a pattern "name%03d.raw first last step";
+    relative names lie beside the header. Empty for data in the file itself (LOCAL, attached)."""
+    lower = path.lower()
+    nrrd, meta = lower.endswith((".nhdr", ".nrrd")), lower.endswith((".mhd", ".mha"))
+    if not nrrd and not meta:
+        return []
+    lines = header_lines(path)
+    for at, line in enumerate(lines):
+        if nrrd and not line.strip():
+            break  # a NRRD's header ends at its first blank line
+        if nrrd and line.startswith(("data file:", "datafile:")):
+            named = line.split(":", 1)[1].strip()
+        elif meta and line.startswith("ElementDataFile") and "=" in line:
+            named = line.split("=", 1)[1].strip()
+        else:
+            continue
+        words = named.split()
+        if not words or named == "LOCAL":
+            return []
+        if words[0] == "LIST":
+            names = [n.strip() for n in lines[at + 1:] if n.strip()]
+        elif "%" in words[0] and len(words) >= 4:
+            try:
+                first, last, step = int(words[1]), int(words[2]), int(words[3])
+                names = [words[0] % i for i in range(first, last + (1 if step > 0 else -1), step)] if step else []
+            except (ValueError, TypeError):
+                names = [named]
+        else:
+            names = [named]
+        return [os.path.join(os.path.dirname(path), n) for n in names]
+    return []
+
+
+def data_files(path):
+    """The files SliceMesh reads for an input: a folder's files (not its subfolders'), a detached
+    header and the data files it names, or the file itself. Files that do not exist are left out:
+    SliceMesh's run says what is missing, and the other inputs go on."""
+    if os.path.isdir(path):
+        with os.scandir(path) as entries:
+            files = [e.path for e in entries if e.is_file()]  # is_file follows links, as SliceMesh does
+    else:
+        files = [path] + named_data_files(path)
+    return sorted(f for f in dict.fromkeys(files) if os.path.isfile(f))
 
 
 def strip_extension(name):

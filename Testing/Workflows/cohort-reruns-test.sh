@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# ctest CohortWorkflowReruns: what meshes an input again, on make_cohort.py --reruns's inputs, whose
+# voxels lie in files other than the one the glob names (a DICOM folder, a detached NRRD and MetaImage
+# header), with spaces in the input and output paths. After a complete run: touching every file
+# meshes nothing (small files are compared by content); a slice rewritten in place in the DICOM
+# folder meshes that input again, as do new voxels behind each detached header.
+# Usage: cohort-reruns-test.sh SLICEMESH WORKFLOW_DIR WORK_DIR
+set -euo pipefail
+slicemesh=$(realpath "$1") workflow=$(realpath "$2") work=$3
+here=$(dirname "$(realpath "$0")")
+rm -rf "$work" && mkdir -p "$work" && cd "$work"
+fail() { echo "CohortWorkflowReruns: $*" >&2; exit 1; }
+
+python3 "$here/make_cohort.py" --reruns "in data"
+study() { # format snapshot
+  cat > study.yaml <<CONF
+glob: "in data/p0*"
+output: mesh results
+slicemesh: $slicemesh
+format: $1
+snapshot: $2
+CONF
+}
+study vtp false
+smk() { snakemake -s "$workflow/Snakefile" --configfile study.yaml --cores 2 "$@"; }
+# run LOG [ARGS]: a run that must succeed.
+run() { local log=$1; shift; smk "$@" >"$log" 2>&1 || { cat "$log"; fail "$log: snakemake failed"; }; }
+# meshed LOG: the subjects the run meshed, sorted, on one line.
+meshed() { { grep -o 'output: mesh results/p0[0-9]/p0[0-9]_status.json' "$1" || true; } | cut -d/ -f2 | sort -u | tr '\n' ' ' | sed 's/ $//'; }
+# expect LOG SUBJECTS WHAT: the run meshed exactly SUBJECTS ("" for none).
+expect() {
+  local got; got=$(meshed "$1")
+  [ "$got" = "$2" ] || { cat "$1"; fail "$3: meshed '${got:-nothing}', expected '${2:-nothing}'"; }
+  [ -n "$2" ] || grep -q "Nothing to be done" "$1" || { cat "$1"; fail "$3: not 'Nothing to be done'"; }
+}
+column() { # SUBJECT COLUMN: the value in cohort.tsv
+  python3 -c 'import csv, sys
+rows = [r for r in csv.DictReader(open("mesh results/cohort.tsv"), delimiter="\t") if r["subject"] == sys.argv[1]]
+print(rows[0][sys.argv[2]] if len(rows) == 1 else f"{len(rows)} rows")' "$1" "$2"
+}
+
+run run1.log
+expect run1.log "p01 p02 p03" "run 1"
+for s in p01 p02 p03; do [ "$(column $s status)" = ok ] || { cat run1.log; fail "run 1: $s not meshed"; }; done
+
+touch "in data"/p01/* "in data"/*
+run touched.log
+expect touched.log "" "every input file touched"
+
+# A slice re-exported in place: the same name and size, other voxels (the last 400 bytes of pixel data).
+python3 -c 'import sys
+with open(sys.argv[1], "r+b") as f:
+    f.seek(-400, 2)
+    f.write(bytes(400))' "in data/p01/IM0005.dcm"
+run dicom.log
+expect dicom.log "p01" "a DICOM slice rewritten"
+
+# New voxels behind the detached headers: a 12 mm cube (1.728 mL) in place of the 10 mm one.
+python3 -c 'import sys
+cube = bytes(1 if 4 <= min(x, y, z) and max(x, y, z) <= 15 else 0 for z in range(20) for y in range(20) for x in range(20))
+for name in sys.argv[1:]:
+    open(name, "wb").write(cube)' "in data/voxels-p02.raw" "in data/voxels-p03.raw"
+run raw.log
+expect raw.log "p02 p03" "the data files of the .nhdr and .mhd rewritten"
+for s in p02 p03; do
+  [ "$(column $s volume_ml)" = 1.7280 ] || fail "$s: volume $(column $s volume_ml) mL in cohort.tsv, its new voxels 1.728"
+done
+
+echo "CohortWorkflowReruns: a DICOM slice and the detached data files re-mesh their input, touch does not"
