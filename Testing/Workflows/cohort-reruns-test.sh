@@ -3,7 +3,8 @@
 # voxels lie in files other than the one the glob names (a DICOM folder, a detached NRRD and MetaImage
 # header), with spaces in the input and output paths. After a complete run: touching every file
 # meshes nothing (small files are compared by content); a slice rewritten in place in the DICOM
-# folder meshes that input again, as do new voxels behind each detached header.
+# folder meshes that input again, as do new voxels behind each detached header; threads mesh
+# nothing again, another format or snapshot setting everything.
 # Usage: cohort-reruns-test.sh SLICEMESH WORKFLOW_DIR WORK_DIR
 set -euo pipefail
 slicemesh=$(realpath "$1") workflow=$(realpath "$2") work=$3
@@ -66,4 +67,17 @@ for s in p02 p03; do
   [ "$(column $s volume_ml)" = 1.7280 ] || fail "$s: volume $(column $s volume_ml) mL in cohort.tsv, its new voxels 1.728"
 done
 
-echo "CohortWorkflowReruns: a DICOM slice and the detached data files re-mesh their input, touch does not"
+run threads.log --config threads=2
+expect threads.log "" "threads changed"
+
+study stl false
+run format.log
+expect format.log "p01 p02 p03" "format changed to stl"
+[ -f "mesh results/p02/p02.stl" ] || fail "format stl: no p02.stl"
+[ -z "$(find "mesh results" -name '*.vtp' -not -path '*_labels/*')" ] || fail "format stl: the .vtp meshes are still there"
+
+study stl auto
+run snapshot.log
+expect snapshot.log "p01 p02 p03" "snapshot changed from false to auto"
+
+echo "CohortWorkflowReruns: a DICOM slice and the detached data files re-mesh their input, touch and threads do not, format and snapshot re-mesh all"

@@ -10,6 +10,8 @@ import time
 
 import slicemesh_options
 
+MESH_FORMATS = ("vtp", "vtk", "stl", "ply", "obj")  # config.yaml's format
+
 
 def is_progress_tag(line):
     """Slicer's progress tags (<filter-...>, </filter-...>) on stdout: left out of the log."""
@@ -82,13 +84,14 @@ def main(snakemake):
     status_path = snakemake.output.status
     base = status_path[: -len("_status.json")]
     files = {
-        "model": f"{base}.{config.get('format', 'vtp')}",
+        "model": f"{base}.{snakemake.params.format}",
         "report": f"{base}_report.json",
         "snapshot": f"{base}_snapshot.png",
         "labels": f"{base}_labels" if slicemesh_options.splits_labels(options) else None,
         "log": f"{base}.log",
     }
-    remove_previous(p for p in files.values() if p)
+    # A mesh of another format is an earlier run's too.
+    remove_previous([p for p in files.values() if p] + [f"{base}.{ext}" for ext in MESH_FORMATS])
     os.makedirs(os.path.dirname(base), exist_ok=True)
 
     executable = config.get("slicemesh", "SliceMesh")
@@ -99,7 +102,7 @@ def main(snakemake):
     command += ["--report", files["report"]]
     if files["labels"]:
         command += ["--outputDirectory", files["labels"]]
-    snapshot, private_display = snapshot_display(config.get("snapshot", "auto"))
+    snapshot, private_display = snapshot_display(snakemake.params.snapshot)
     if snapshot:
         command += ["--snapshot", files["snapshot"]]
     command = command + [entry["path"], files["model"]]
