@@ -4,7 +4,8 @@
 # header), with spaces in the input and output paths. After a complete run: touching every file
 # meshes nothing (small files are compared by content); a slice rewritten in place in the DICOM
 # folder meshes that input again, as do new voxels behind each detached header; threads mesh
-# nothing again, another format or snapshot setting everything.
+# nothing again, another format or snapshot setting everything. An input whose SliceMesh dies of a
+# signal has "killed by signal 11 (SIGSEGV)" as its error.
 # Usage: cohort-reruns-test.sh SLICEMESH WORKFLOW_DIR WORK_DIR
 set -euo pipefail
 slicemesh=$(realpath "$1") workflow=$(realpath "$2") work=$3
@@ -80,4 +81,16 @@ study stl auto
 run snapshot.log
 expect snapshot.log "p01 p02 p03" "snapshot changed from false to auto"
 
-echo "CohortWorkflowReruns: a DICOM slice and the detached data files re-mesh their input, touch and threads do not, format and snapshot re-mesh all"
+# SliceMesh dies of SIGSEGV on p03 after a warning.
+cat > crashing-slicemesh <<SH
+#!/bin/sh
+case "\$*" in *--help*) ;; *p03*) echo "SliceMesh: warning: something harmless" >&2; ulimit -c 0; kill -SEGV \$\$ ;; esac
+exec "$slicemesh" "\$@"
+SH
+chmod +x crashing-slicemesh
+run crash.log --config slicemesh="$work/crashing-slicemesh" --forcerun "mesh results/p03/p03_status.json"
+expect crash.log "p03" "p03 forced"
+[ "$(column p03 error)" = "killed by signal 11 (SIGSEGV)" ] || fail "p03 crashed: error '$(column p03 error)'"
+[ "$(column p03 exit_code)" = -11 ] || fail "p03 crashed: exit code $(column p03 exit_code)"
+
+echo "CohortWorkflowReruns: a DICOM slice and the detached data files re-mesh their input, touch and threads do not, format and snapshot re-mesh all; a signal is named"

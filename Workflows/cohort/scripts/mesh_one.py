@@ -5,6 +5,7 @@ import json
 import os
 import shlex
 import shutil
+import signal
 import subprocess
 import time
 
@@ -18,8 +19,15 @@ def is_progress_tag(line):
     return line.startswith(("<filter-", "</filter-"))
 
 
-def error_line(stderr):
-    """SliceMesh's error is one line on stderr; warnings are lines of their own."""
+def error_line(code, stderr):
+    """SliceMesh's error is one line on stderr; warnings are lines of their own. A run ended by a
+    signal (a negative code: a crash, or killed for memory) has not written one: the signal is named."""
+    if code < 0:
+        try:
+            name = f" ({signal.Signals(-code).name})"
+        except ValueError:
+            name = ""
+        return f"killed by signal {-code}{name}"
     lines = [line.strip() for line in stderr.splitlines() if line.strip()]
     errors = [line for line in lines if not line.startswith("SliceMesh: warning:")]
     return (errors or lines or [""])[-1]
@@ -131,7 +139,7 @@ def main(snakemake):
     status = dict(entry)
     status.update(
         exit_code=code,
-        error=error_line(stderr) if code != 0 else "",
+        error=error_line(code, stderr) if code != 0 else "",
         seconds=round(seconds, 3),
         options=options,
         threads=snakemake.threads,
