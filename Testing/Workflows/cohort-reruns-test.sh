@@ -5,7 +5,8 @@
 # meshes nothing (small files are compared by content); a slice rewritten in place in the DICOM
 # folder meshes that input again, as do new voxels behind each detached header; threads mesh
 # nothing again, another format or snapshot setting everything. An input whose SliceMesh dies of a
-# signal has "killed by signal 11 (SIGSEGV)" as its error.
+# signal has "killed by signal 11 (SIGSEGV)" as its error, the end message counts it once, and the
+# documented recovery over failed.txt (with spaces in its paths) meshes it alone.
 # Usage: cohort-reruns-test.sh SLICEMESH WORKFLOW_DIR WORK_DIR
 set -euo pipefail
 slicemesh=$(realpath "$1") workflow=$(realpath "$2") work=$3
@@ -92,5 +93,12 @@ run crash.log --config slicemesh="$work/crashing-slicemesh" --forcerun "mesh res
 expect crash.log "p03" "p03 forced"
 [ "$(column p03 error)" = "killed by signal 11 (SIGSEGV)" ] || fail "p03 crashed: error '$(column p03 error)'"
 [ "$(column p03 exit_code)" = -11 ] || fail "p03 crashed: exit code $(column p03 exit_code)"
+grep -q "SliceMesh cohort: 1 of 3 inputs not meshed" crash.log || { cat crash.log; fail "the end message does not count one failed input"; }
 
-echo "CohortWorkflowReruns: a DICOM slice and the detached data files re-mesh their input, touch and threads do not, format and snapshot re-mesh all; a signal is named"
+# The recovery Cohort.md gives, with spaces in failed.txt's paths.
+xargs -r -d '\n' -a "mesh results/failed.txt" \
+  snakemake -s "$workflow/Snakefile" --configfile study.yaml --cores 2 --forcerun >recover.log 2>&1 ||
+  { cat recover.log; fail "the recovery over failed.txt failed"; }
+expect recover.log "p03" "recovery over failed.txt"
+[ "$(column p03 status)" = ok ] && [ ! -s "mesh results/failed.txt" ] || fail "p03 not meshed by the recovery"
+echo "CohortWorkflowReruns: DICOM slice and detached data files re-mesh their input, touch and threads do not, format and snapshot re-mesh all; a signal is named, counted once and recovered over failed.txt"

@@ -1,7 +1,7 @@
 """The table rule: every input's status file and SliceMesh report -> cohort.tsv (one row per mesh:
 per label when labels are meshed separately; one row for an input that failed before meshing)
-and failed.txt (the status files of inputs SliceMesh did not finish with exit code 0, for
-`snakemake --forcerun $(cat failed.txt)`)."""
+and failed.txt (the status files of inputs SliceMesh did not finish with exit code 0, one a line,
+for `xargs -r -d '\n' -a failed.txt snakemake ... --forcerun`)."""
 import csv
 import json
 import os
