@@ -15,6 +15,11 @@ rm -rf "$work" && mkdir -p "$work" && cd "$work"
 fail() { echo "CohortWorkflowReruns: $*" >&2; exit 1; }
 
 python3 "$here/make_cohort.py" --reruns "in data"
+# A structure set, a contour file or a segmentation file is named without its extension, as an image
+# is (a glob over them gave results "p03 rt.dcm/p03 rt.dcm_report.json").
+python3 -c 'import sys; sys.path.insert(0, sys.argv[1]); import cohort_inputs as c
+names = [c.strip_extension(n) for n in ("p03 rt.dcm", "roi.json", "liver.seg.nrrd", "body.vtp", "ct.nii.gz")]
+sys.exit(names != ["p03 rt", "roi", "liver", "body", "ct"])' "$workflow/scripts" || fail "input names keep their extensions"
 study() { # format snapshot
   cat > study.yaml <<CONF
 glob: "in data/p0*"

@@ -9,7 +9,9 @@ import glob
 import os
 import re
 
-EXTENSIONS = (".nii.gz", ".nii", ".nrrd", ".nhdr", ".mha", ".mhd")
+# The extensions of the inputs SliceMesh reads, dropped from an input's name (longest first where
+# one ends another): images, segmentation files, structure sets and contour files.
+EXTENSIONS = (".seg.nrrd", ".nii.gz", ".nii", ".nrrd", ".nhdr", ".mha", ".mhd", ".dcm", ".json", ".vtp", ".vtk")
 
 
 class InputError(Exception):
