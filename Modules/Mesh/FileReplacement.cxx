@@ -27,10 +27,21 @@ fs::path folderOf(const fs::path& file)
 }
 
 /** ".<stem>.partial-<pid><extension>" beside the target, the extension in lower case: VTK's PLY
- *  writer appends ".ply" to a name that does not end in it, and would write somewhere else. */
+ *  writer appends ".ply" to a name that does not end in it, and would write somewhere else. The
+ *  stem is cut to 200 bytes: a name of 241 to 255 bytes is a valid target, but its temporary went
+ *  past the file system's 255 and failed once the meshing was done. */
 std::string temporaryBeside(const fs::path& target)
 {
-  return (folderOf(target) / ("." + target.stem().string() + ".partial-" + std::to_string(::getpid()) +
+  constexpr std::size_t longestStem = 200;
+  std::string stem = target.stem().string();
+  if (stem.size() > longestStem)
+  {
+    std::size_t cut = longestStem;
+    while (cut > 0 && (static_cast<unsigned char>(stem[cut]) & 0xC0) == 0x80) // not inside a UTF-8 character
+      --cut;
+    stem.resize(cut);
+  }
+  return (folderOf(target) / ("." + stem + ".partial-" + std::to_string(::getpid()) +
                                  lowercase(target.extension().string())))
     .string();
 }
@@ -73,6 +84,11 @@ fs::path writablePlace(const std::string& path, const std::string& what)
     throw Error(failure + ": folder '" + folder.string() + "' does not exist");
   if (fs::is_directory(target, ec))
     throw Error(failure + ": it is a folder");
+  // Said before any work: the write at the end would fail on it.
+  constexpr std::size_t longestName = 255; // bytes, as Linux file systems allow
+  if (target.filename().string().size() > longestName)
+    throw Error(failure + ": its name is " + std::to_string(target.filename().string().size()) +
+                " bytes long; the file system allows " + std::to_string(longestName));
   return target;
 }
 

@@ -584,5 +584,28 @@ TEST(ErrorHandling, VolumeLargerThanTheMemoryAvailableIsAClearError)
   EXPECT_EQ(fileText(out), precious);
 }
 
+TEST(ErrorHandling, EdgesFoundIn3DAreCheckedAgainstTheMemoryAvailable)
+{
+  // A 100^3 byte volume: its reading needs about 73 MiB, edges found in 3D about 84 (they peaked at
+  // twice the reading's estimate and passed its check). Under 78 MiB the run stops before them.
+  const Folders f = foldersFor("memory-edges");
+  writeMetaImage(f.inputs / "ball.mha", { 100, 100, 100 }, { 1, 1, 1 }, [](int i, int j, int k) -> unsigned char
+                 { return (i - 50) * (i - 50) + (j - 50) * (j - 50) + (k - 50) * (k - 50) < 900 ? 200 : 20; });
+  const fs::path out = f.outputs / "out.vtp";
+  std::ofstream(out) << precious;
+  const std::string run = quoted(SLICEMESH_EXECUTABLE) + " --inputKind Grayscale --regionMode Edges --processing Volume " +
+                          quoted((f.inputs / "ball.mha").string()) + " " + quoted(out.string());
+  const RunResult r = runCommand("SLICEMESH_MEMORY_LIMIT_MB=78 " + run);
+  EXPECT_EQ(r.exitCode, cli::UnreadableInput) << r.err;
+  ASSERT_EQ(linesOf(r.err).size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("edges found in 3D needs about 84 MiB of memory"), std::string::npos) << r.err;
+  EXPECT_EQ(fileText(out), precious);
+  // Per slice, the same volume fits.
+  const RunResult perSlice = runCommand("SLICEMESH_MEMORY_LIMIT_MB=78 " + quoted(SLICEMESH_EXECUTABLE) +
+                                        " --inputKind Grayscale --regionMode Edges " +
+                                        quoted((f.inputs / "ball.mha").string()) + " " + quoted(out.string()));
+  EXPECT_EQ(perSlice.exitCode, cli::Success) << perSlice.err;
+}
+
 } // namespace
 } // namespace slicemesh::testing

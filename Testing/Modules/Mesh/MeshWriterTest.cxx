@@ -1,5 +1,6 @@
 // writeMesh: every format round-trips through VTK's readers, carries its SPACE tag, and a failed
 // write leaves an existing file untouched.
+#include "FileReplacement.h"
 #include "MeshWriter.h"
 #include "Core/Lowercase.h"
 #include "TestMeshes.h"
@@ -298,6 +299,27 @@ TEST(MeshWriter, ExtensionIsCaseInsensitive)
     EXPECT_EQ(entry.path().filename().string().find(".partial-"), std::string::npos) << entry.path();
   }
   EXPECT_EQ(files, 6u);
+}
+
+TEST(MeshWriter, ANameOfUpTo255BytesIsWrittenALongerOneRefused)
+{
+  // The temporary ".<stem>.partial-<pid>.vtp" of a name of 241 to 255 bytes went past the file
+  // system's 255 and the write failed after the meshing; a longer name is refused up front.
+  const fs::path folder = freshFolder("long-names");
+  const fs::path longest = folder / (std::string(251, 'c') + ".vtp");
+  writeMesh(testing::box(1, 1, 1), CoordinateSystem::LPS, longest.string());
+  EXPECT_EQ(readBack(longest).polyData->GetNumberOfPolys(), 12);
+  const fs::path tooLong = folder / (std::string(252, 'c') + ".vtp");
+  try
+  {
+    writablePlace(tooLong.string(), "mesh");
+    ADD_FAILURE() << "a name of 256 bytes";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("its name is 256 bytes long; the file system allows 255"), std::string::npos)
+      << e.what();
+  }
 }
 
 TEST(MeshWriter, UnknownExtensionIsAOneLineError)
