@@ -6,6 +6,7 @@
 #include "PipelineStep.h"
 #include "PipelineStructures.h"
 
+#include "Core/Lowercase.h"
 #include "Core/ParallelFor.h"
 #include "FileReplacement.h"
 #include "Finishing/SurfaceSmoothing.h"
@@ -196,10 +197,11 @@ std::string labelFileName(const Structure& s, int width, const std::string& exte
 }
 
 /** The files in `folder` named as a structure's mesh is ("037_Name.vtp": a label number, an
- *  underscore, the run's extension) that this run did not write: an earlier run's, with other labels. */
-std::vector<fs::path> otherStructureFiles(const fs::path& folder, const std::set<std::string>& written,
-                                          const std::string& extension)
+ *  underscore, a mesh format's extension) that this run did not write: an earlier run's, with other
+ *  labels or in another format (3D Slicer loading the folder would show both runs' meshes). */
+std::vector<fs::path> otherStructureFiles(const fs::path& folder, const std::set<std::string>& written)
 {
+  const std::set<std::string> meshExtensions{ ".vtp", ".vtk", ".stl", ".ply", ".obj" };
   std::vector<fs::path> others;
   std::error_code error;
   for (const fs::directory_entry& entry : fs::directory_iterator(folder, error))
@@ -208,7 +210,7 @@ std::vector<fs::path> otherStructureFiles(const fs::path& folder, const std::set
     const std::size_t sign = name[0] == '-' ? 1 : 0; // a negative label's
     const std::size_t digits = name.find_first_not_of("0123456789", sign);
     const bool named = digits != std::string::npos && digits > sign && name[digits] == '_' &&
-                       entry.path().extension() == extension;
+                       meshExtensions.count(lowercase(entry.path().extension().string())) > 0;
     if (named && entry.is_regular_file(error) && !written.count(name))
       others.push_back(entry.path());
   }
@@ -543,8 +545,14 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   if (merged.triangles.empty() && failures.empty())
   {
     std::ostringstream message;
+    const bool everyOneEmpty = std::all_of(structures.begin(), structures.end(), [](const Structure& s)
+                                           { return s.report.droppedBecause == "the segment is empty"; });
     if (fromContours)
       message << "no ROI of '" << input << "' has a closed contour; nothing to mesh";
+    else if (everyOneEmpty)
+      message << (structures.size() == 1 ? "the segment asked for, " : "every segment asked for, the first ")
+              << structures.front().report.label << " (" << structures.front().report.name << "), holds no voxel in '"
+              << settings.inputVolume << "'; nothing to mesh";
     else
       message << "every label of '" << settings.inputVolume << "' is smaller than the minimum component volume "
               << settings.minimumComponentVolume << " mm^3; nothing to mesh";
@@ -605,8 +613,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
         written.insert(fs::path(s.report.path).filename().string());
       else if (!s.report.error.empty())
         failed.insert(labelFileName(s, width, output.extension().string()));
-    std::vector<fs::path> others =
-      otherStructureFiles(settings.multiLabel.outputDirectory, written, output.extension().string());
+    std::vector<fs::path> others = otherStructureFiles(settings.multiLabel.outputDirectory, written);
     // A file of a structure that failed here is an earlier run's mesh of it, not of another.
     const auto stale = std::stable_partition(others.begin(), others.end(), [&](const fs::path& file)
                                              { return failed.count(file.filename().string()) > 0; });
@@ -618,7 +625,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
     if (stale != others.end())
       std::cerr << "SliceMesh: warning: '" << folder << "' also holds " << (others.end() - stale)
                 << " mesh file(s) this run did not write (first: " << stale->filename().string()
-                << "): an earlier run's, of other " << noun << "s" << std::endl;
+                << "): an earlier run's, of other " << noun << "s or in another format" << std::endl;
   }
   if (!perLabel)
   {

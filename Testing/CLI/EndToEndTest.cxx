@@ -410,6 +410,11 @@ TEST(EndToEnd, MeshFilesOfAnEarlierRunInTheFolderAreSaidAndKept)
                                        quoted((folder / "all.vtp").string()));
   ASSERT_EQ(again.exitCode, cli::Success) << again.err;
   EXPECT_EQ(again.err.find("did not write"), std::string::npos) << again.err;
+  // Another format beside them: the earlier .vtp files are said too (they were passed over).
+  const RunResult stl = runSliceMesh("--outputDirectory " + meshes + " " + quoted(input.string()) + " " +
+                                     quoted((folder / "all.stl").string()));
+  ASSERT_EQ(stl.exitCode, cli::Success) << stl.err;
+  EXPECT_NE(stl.err.find("mesh file(s) this run did not write (first: 001_Label_1.vtp)"), std::string::npos) << stl.err;
 }
 
 TEST(EndToEnd, LabelsPastFloatsPrecisionStayApart)

@@ -181,6 +181,18 @@ double ballVolume(double radius)
   return 4.0 / 3.0 * M_PI * radius * radius * radius;
 }
 
+TEST(SegmentationFileInput, AnEmptySegmentAskedForIsSaidToBeEmpty)
+{
+  // --label 4, the file's empty segment: "every label ... is smaller than the minimum component
+  // volume 0 mm^3", which named an option nobody set.
+  const fs::path folder = freshFolder("segfile-empty-asked");
+  const fs::path input = slicerFile(folder);
+  const RunResult r = runSliceMesh("--label 4 " + quoted(input.string()) + " " + quoted((folder / "empty.vtp").string()));
+  EXPECT_EQ(r.exitCode, cli::EmptySegmentation) << r.err;
+  EXPECT_NE(r.err.find("the segment asked for, 4 (Empty), holds no voxel"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(folder / "empty.vtp"));
+}
+
 TEST(SegmentationFileInput, SlicerTwoLayersGiveOneNamedColouredMeshPerSegment)
 {
   const fs::path folder = freshFolder("segfile-slicer");
