@@ -1,11 +1,9 @@
 #include "ReaderSpaceCorrection.h"
 
-#include "Nifti1Header.h"
-
 #include "Core/Lowercase.h"
 
+#include <algorithm>
 #include <fstream>
-#include <optional>
 
 namespace slicemesh
 {
@@ -50,21 +48,43 @@ std::array<double, 3> ReaderSpaceCorrection::applied(const std::array<double, 3>
   return { this->sign[0] * scale * point[0], this->sign[1] * scale * point[1], this->sign[2] * scale * point[2] };
 }
 
-ReaderSpaceCorrection readerSpaceCorrection(const std::string& path)
+ReaderSpaceCorrection readerSpaceCorrection(const std::string& path, const std::optional<Nifti1Header>& nifti)
 {
   ReaderSpaceCorrection correction;
   const std::string space = nrrdSpace(path);
   if (space == "left-anterior-superior" || space == "las" || space == "left-anterior-superior-time" || space == "last")
     correction.sign = { -1.0, -1.0, 1.0 }; // ITK's (-x, y, z) of the file's axes, to (x, -y, z)
-  if (const std::optional<Nifti1Header> header = readNifti1Header(path))
+  if (nifti)
   {
-    const int unit = header->xyztUnits & 0x07;
+    const int unit = nifti->xyztUnits & 0x07;
     if (unit == 1)
       correction.originScale = 1000.0; // metres
     else if (unit == 3)
       correction.originScale = 0.001; // microns
   }
   return correction;
+}
+
+void correctHeaderSpace(itk::ImageIOBase* io, const ReaderSpaceCorrection& correction)
+{
+  if (!correction.needed())
+    return;
+  const unsigned int axes = std::min(io->GetNumberOfDimensions(), 3u);
+  std::array<double, 3> origin{ 0.0, 0.0, 0.0 };
+  for (unsigned int axis = 0; axis < axes; ++axis)
+    origin[axis] = io->GetOrigin(axis);
+  origin = correction.applied(origin, true);
+  for (unsigned int axis = 0; axis < axes; ++axis)
+  {
+    io->SetOrigin(axis, origin[axis]);
+    std::vector<double> column = io->GetDirection(axis);
+    std::array<double, 3> direction{ 0.0, 0.0, 0.0 };
+    const std::size_t rows = std::min<std::size_t>(column.size(), 3);
+    std::copy_n(column.begin(), rows, direction.begin());
+    direction = correction.applied(direction, false);
+    std::copy_n(direction.begin(), rows, column.begin());
+    io->SetDirection(axis, column);
+  }
 }
 
 } // namespace slicemesh

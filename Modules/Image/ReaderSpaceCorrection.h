@@ -3,7 +3,12 @@
 #ifndef ReaderSpaceCorrection_h
 #define ReaderSpaceCorrection_h
 
+#include "Nifti1Header.h"
+
+#include "itkImageIOBase.h"
+
 #include <array>
+#include <optional>
 #include <string>
 
 namespace slicemesh
@@ -27,8 +32,12 @@ struct ReaderSpaceCorrection
  *    and front-back;
  *  - a NIfTI-1 file whose spatial unit is the metre or the micron: ITK converts its spacing to
  *    millimetres but leaves its origin in the file's unit.
- *  No correction for any other file. */
-ReaderSpaceCorrection readerSpaceCorrection(const std::string& path);
+ *  No correction for any other file. `nifti`: the file's NIfTI-1 header (readNifti1Header), if it is one. */
+ReaderSpaceCorrection readerSpaceCorrection(const std::string& path, const std::optional<Nifti1Header>& nifti);
+
+/** The header's origin and directions as the file states them: `correction` applied to what ITK's
+ *  reader `io` read. */
+void correctHeaderSpace(itk::ImageIOBase* io, const ReaderSpaceCorrection& correction);
 
 } // namespace slicemesh
 

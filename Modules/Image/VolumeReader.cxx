@@ -545,55 +545,13 @@ void checkDicomFileMeta(const std::string& path)
   }
 }
 
-/** The header's origin and directions as the file states them (readerSpaceCorrection). */
-void correctHeaderSpace(itk::ImageIOBase* io, const ReaderSpaceCorrection& correction)
-{
-  if (!correction.needed())
-    return;
-  const unsigned int axes = std::min(io->GetNumberOfDimensions(), 3u);
-  std::array<double, 3> origin{ 0.0, 0.0, 0.0 };
-  for (unsigned int axis = 0; axis < axes; ++axis)
-    origin[axis] = io->GetOrigin(axis);
-  origin = correction.applied(origin, true);
-  for (unsigned int axis = 0; axis < axes; ++axis)
-  {
-    io->SetOrigin(axis, origin[axis]);
-    std::vector<double> column = io->GetDirection(axis);
-    std::array<double, 3> direction{ 0.0, 0.0, 0.0 };
-    for (unsigned int row = 0; row < std::min<std::size_t>(column.size(), 3); ++row)
-      direction[row] = column[row];
-    direction = correction.applied(direction, false);
-    for (unsigned int row = 0; row < std::min<std::size_t>(column.size(), 3); ++row)
-      column[row] = direction[row];
-    io->SetDirection(axis, column);
-  }
-}
-
-/** The volume's origin and directions as its file states them (readerSpaceCorrection). */
-void correctVolumeSpace(itk::ImageBase<3>* volume, const ReaderSpaceCorrection& correction)
-{
-  if (!correction.needed())
-    return;
-  const itk::Point<double, 3> before = volume->GetOrigin();
-  const std::array<double, 3> origin = correction.applied({ before[0], before[1], before[2] }, true);
-  itk::ImageBase<3>::DirectionType direction = volume->GetDirection();
-  for (unsigned int axis = 0; axis < 3; ++axis)
-  {
-    const std::array<double, 3> column =
-      correction.applied({ direction[0][axis], direction[1][axis], direction[2][axis] }, false);
-    for (unsigned int row = 0; row < 3; ++row)
-      direction[row][axis] = column[row];
-  }
-  volume->SetOrigin(itk::Point<double, 3>(origin.data()));
-  volume->SetDirection(direction);
-}
-
 /** The header of an image file through the ImageIO ITK picks for it. */
 itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
 {
   checkDicomFileMeta(path);
   checkMetaImageGeometry(path);
-  checkNiftiOrientation(path, readNifti1Header(path));
+  const std::optional<Nifti1Header> nifti = readNifti1Header(path);
+  checkNiftiOrientation(path, nifti);
   constexpr auto reading = itk::ImageIOFactory::FileModeEnum::ReadMode;
   // The readers ITK tries on the file, and the one that reads its header, speak on the standard
   // error of a damaged file; ITK's exception (or SliceMesh's own message below) says it in one line.
@@ -629,7 +587,7 @@ itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
   {
     throw Error(path + ": cannot read the image header: " + itkErrorText(error));
   }
-  correctHeaderSpace(io, readerSpaceCorrection(path));
+  correctHeaderSpace(io, readerSpaceCorrection(path, nifti));
   // GDCM gives a DICOM file of one frame as a volume of one slice 1 mm thick, a thickness it makes
   // up: a slice of a series given instead of its folder would be meshed as a 1 mm slab.
   if (std::string(io->GetNameOfClass()) == "GDCMImageIO" && io->GetNumberOfDimensions() == 3 && io->GetDimensions(2) == 1)
@@ -657,6 +615,20 @@ itk::ImageIOBase::Pointer checkedImageHeader(const std::string& path, bool asSto
 template <typename TImage>
 typename TImage::Pointer readImageFileAs(const std::string& path, itk::ImageIOBase* io)
 {
+  // ITK's reader reads the header again, as ITK has it: the volume is placed as `io` (checked and
+  // corrected: readImageHeader) places it. This keeps the first three axes' directions of a 4-D
+  // file too, where the reader falls back to the identity direction when it drops a dimension.
+  typename TImage::PointType origin;
+  origin.Fill(0.0);
+  typename TImage::DirectionType direction;
+  direction.SetIdentity();
+  for (unsigned int axis = 0; axis < std::min(io->GetNumberOfDimensions(), 3u); ++axis)
+  {
+    origin[axis] = io->GetOrigin(axis);
+    const std::vector<double> column = io->GetDirection(axis);
+    for (unsigned int row = 0; row < std::min<std::size_t>(column.size(), 3); ++row)
+      direction[row][axis] = column[row];
+  }
   using Reader = itk::ImageFileReader<TImage>;
   auto reader = Reader::New();
   reader->SetFileName(path);
@@ -677,21 +649,8 @@ typename TImage::Pointer readImageFileAs(const std::string& path, itk::ImageIOBa
   typename TImage::Pointer volume = reader->GetOutput();
   volume->DisconnectPipeline();
 
-  if (io->GetNumberOfDimensions() == 4)
-  {
-    // ITK's reader falls back to the identity direction when it drops a dimension; the first
-    // three axes of the file still say where the volume is.
-    typename TImage::DirectionType direction;
-    for (unsigned int axis = 0; axis < 3; ++axis)
-    {
-      const std::vector<double> column = io->GetDirection(axis);
-      for (unsigned int row = 0; row < 3; ++row)
-        direction[row][axis] = column[row];
-    }
-    volume->SetDirection(direction);
-  }
-  // The reader read the header again, as ITK has it.
-  correctVolumeSpace(volume.GetPointer(), readerSpaceCorrection(path));
+  volume->SetOrigin(origin);
+  volume->SetDirection(direction);
   checkVolumeGeometry(path, volume);
   return volume;
 }
