@@ -17,6 +17,13 @@ inline std::string lowercase(std::string text)
   return text;
 }
 
+/** Whether `text` ends in `suffix`, ASCII letters of either in any case: a file name's extension
+ *  (".nii.gz", ".NRRD", ".Mha"). */
+inline bool endsInAnyCase(const std::string& text, const std::string& suffix)
+{
+  return text.size() >= suffix.size() && lowercase(text.substr(text.size() - suffix.size())) == lowercase(suffix);
+}
+
 } // namespace slicemesh
 
 #endif

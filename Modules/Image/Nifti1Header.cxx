@@ -17,10 +17,8 @@ namespace
 
 bool isNiftiName(const std::string& path)
 {
-  const std::string lower = lowercase(path);
-  const auto endsWith = [&](const std::string& suffix)
-  { return lower.size() >= suffix.size() && lower.compare(lower.size() - suffix.size(), suffix.size(), suffix) == 0; };
-  return endsWith(".nii") || endsWith(".nii.gz") || endsWith(".hdr") || endsWith(".hdr.gz");
+  return endsInAnyCase(path, ".nii") || endsInAnyCase(path, ".nii.gz") || endsInAnyCase(path, ".hdr") ||
+         endsInAnyCase(path, ".hdr.gz");
 }
 
 /** The field of type T at `offset` of the header's bytes, byte-swapped when the file's order is not

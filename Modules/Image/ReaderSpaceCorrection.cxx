@@ -13,10 +13,7 @@ namespace
 /** The value of a NRRD header's "space" field, in lower case; empty for another file or none. */
 std::string nrrdSpace(const std::string& path)
 {
-  const std::string lower = lowercase(path);
-  const auto endsWith = [&](const std::string& suffix)
-  { return lower.size() >= suffix.size() && lower.compare(lower.size() - suffix.size(), suffix.size(), suffix) == 0; };
-  if (!endsWith(".nrrd") && !endsWith(".nhdr"))
+  if (!endsInAnyCase(path, ".nrrd") && !endsInAnyCase(path, ".nhdr"))
     return {};
   std::ifstream in(path, std::ios::binary);
   std::string line;

@@ -229,11 +229,6 @@ void checkGzipStream(const std::string& path)
     throw Error(path + ": a damaged or truncated gzip file (" + oneLine(reason) + ")");
 }
 
-bool endsWith(const std::string& text, const std::string& suffix)
-{
-  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 /** Where a detached header's data file `named` lies: as named if absolute, else beside the header. */
 std::filesystem::path dataFilePath(const std::string& header, const std::string& named)
 {
@@ -303,8 +298,7 @@ void checkMetaImageList(const std::string& path, const std::vector<std::string>&
  *  is checked by checkMetaImageList; NRRD's lists, patterns and LOCAL data are left to the readers. */
 void checkDetachedDataFile(const std::string& path)
 {
-  const std::string lower = lowercase(path);
-  const bool meta = endsWith(lower, ".mhd"), nrrd = endsWith(lower, ".nhdr");
+  const bool meta = endsInAnyCase(path, ".mhd"), nrrd = endsInAnyCase(path, ".nhdr");
   if (!meta && !nrrd)
     return;
   std::ifstream in(path);
@@ -344,8 +338,7 @@ void checkDetachedDataFile(const std::string& path)
  *  The header is text up to its ElementDataFile line (the voxels of a .mha follow it). */
 void checkMetaImageGeometry(const std::string& path)
 {
-  const std::string lower = lowercase(path);
-  if (!endsWith(lower, ".mha") && !endsWith(lower, ".mhd"))
+  if (!endsInAnyCase(path, ".mha") && !endsInAnyCase(path, ".mhd"))
     return;
   // The fields MetaIO reads as numbers that place the voxels (Offset has two other names).
   static const std::set<std::string> geometry = { "ElementSpacing", "ElementSize", "Offset", "Origin", "Position",
@@ -408,7 +401,7 @@ private:
  *  to ITK's size of the voxels. */
 void checkNiftiFileSize(const std::string& path, const itk::ImageIOBase* io, const std::optional<Nifti1Header>& header)
 {
-  if (!endsWith(path, ".nii") && !endsWith(path, ".NII"))
+  if (!endsInAnyCase(path, ".nii"))
     return;
   std::error_code error;
   const auto fileSize = std::filesystem::file_size(path, error);
@@ -572,7 +565,7 @@ itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
     io = itk::ImageIOFactory::CreateImageIO(path.c_str(), reading);
   }
   // ITK's MetaImage factory knows ".mha" and ".mhd" in lower case only; NIfTI's and NRRD's any case.
-  if (!io && (endsWith(lowercase(path), ".mha") || endsWith(lowercase(path), ".mhd")))
+  if (!io && (endsInAnyCase(path, ".mha") || endsInAnyCase(path, ".mhd")))
     io = itk::MetaImageIO::New();
   if (!io && isNifti2(path))
     throw Error(path + ": a NIfTI-2 file, which SliceMesh does not read; save it as NIfTI-1 (.nii)");
@@ -599,7 +592,7 @@ itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
  *  spacing, memory; `asStored` as checkHeader's) before any voxel is read. */
 itk::ImageIOBase::Pointer checkedImageHeader(const std::string& path, bool asStored)
 {
-  if (endsWith(path, ".gz") || endsWith(path, ".GZ"))
+  if (endsInAnyCase(path, ".gz"))
     checkGzipStream(path);
   checkDetachedDataFile(path);
   itk::ImageIOBase::Pointer io = readImageHeader(path);
