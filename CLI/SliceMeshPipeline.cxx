@@ -11,6 +11,7 @@
 #include "FileReplacement.h"
 #include "Finishing/SurfaceSmoothing.h"
 #include "MaskMeshing.h"
+#include "MemoryBudget.h"
 #include "MeshSnapshot.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/MeshQuality.h"
@@ -88,6 +89,9 @@ void requireWritableFolder(const fs::path& folder, MadeFolders* made, const std:
  *  run writes nothing. */
 ColorTable checkBeforeWork(const PipelineSettings& settings, MadeFolders& made)
 {
+  // A malformed memory limit is a malformed value, said before the input is read rather than when
+  // its memory is first checked.
+  guarded(BadArguments, [] { return memoryLimitBytes(); });
   // The folder of the file each output replaces: a symbolic link's file's (writablePlace).
   auto folderOf = [](const std::string& file, const std::string& what)
   {

@@ -6,6 +6,7 @@
 #include "Core/SliceMeshTypes.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -102,15 +103,34 @@ double runMemoryBytes(double voxels, double volumeBytesPerVoxel)
   return bytesOfTheProgram + voxels * (volumeBytesPerVoxel + bytesPerVoxelOfARun);
 }
 
+std::optional<double> memoryLimitBytes()
+{
+  const char* const variable = "SLICEMESH_MEMORY_LIMIT_MB";
+  const char* set = std::getenv(variable);
+  if (!set)
+    return std::nullopt;
+  const std::string value = set;
+  // Digits with at most one decimal point, read by from_chars: the C locale's strtod would take a
+  // hexadecimal number or an exponent, and another locale's would stop at the point.
+  const bool plain = value.find_first_not_of("0123456789.") == std::string::npos &&
+                     value.find_first_of("0123456789") != std::string::npos &&
+                     std::count(value.begin(), value.end(), '.') <= 1;
+  double mebibytes = 0.0;
+  const char* const end = value.data() + value.size();
+  const std::from_chars_result read = std::from_chars(value.data(), end, mebibytes, std::chars_format::fixed);
+  if (!plain || read.ec != std::errc() || read.ptr != end || !std::isfinite(mebibytes) || mebibytes <= 0.0)
+  {
+    std::string shown = value.size() > 60 ? value.substr(0, 57) + "..." : value;
+    std::replace_if(shown.begin(), shown.end(), [](unsigned char c) { return c < ' '; }, ' '); // on one line
+    throw Error(std::string(variable) + " is '" + shown + "'; it takes a positive number of MiB, such as 4096 or 1.5");
+  }
+  return mebibytes * 1024.0 * 1024.0;
+}
+
 double availableMemoryBytes()
 {
-  if (const char* limit = std::getenv("SLICEMESH_MEMORY_LIMIT_MB"))
-  {
-    char* end = nullptr;
-    const double megabytes = std::strtod(limit, &end);
-    if (end != limit && megabytes > 0.0)
-      return megabytes * 1024.0 * 1024.0;
-  }
+  if (const std::optional<double> limit = memoryLimitBytes())
+    return *limit;
   const double available = memAvailableBytes();
   const double room = cgroupRoomBytes();
   if (available < 0.0)

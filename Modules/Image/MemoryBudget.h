@@ -3,15 +3,23 @@
 #define MemoryBudget_h
 
 #include <cstddef>
+#include <optional>
 #include <string>
 
 namespace slicemesh
 {
 
+/** The memory the environment variable SLICEMESH_MEMORY_LIMIT_MB sets by hand, in bytes; empty
+ *  when it is not set. Its value must be a plain positive number of MiB ("4096", "1.5"); anything
+ *  else throws slicemesh::Error naming the variable and the value: read as far as it went, "8GB"
+ *  limited a run to 8 MiB, "0x10" to 16 and "1e2" to 100, and "abc" or "0" removed the limit
+ *  without a word. */
+std::optional<double> memoryLimitBytes();
+
 /** Bytes this process may still allocate: the smaller of the system's MemAvailable and the
- *  room left under the cgroup (container) memory limit. The environment variable
- *  SLICEMESH_MEMORY_LIMIT_MB, when set to a positive number, replaces the measurement (for tests,
- *  and to keep a shared machine responsive). Returns 0 when nothing can be measured. */
+ *  room left under the cgroup (container) memory limit. memoryLimitBytes(), when set, replaces the
+ *  measurement (for tests, and to keep a shared machine responsive). Returns 0 when nothing can be
+ *  measured. */
 double availableMemoryBytes();
 
 /** The memory a run needs at its peak for a volume of `voxels` voxels held at `volumeBytesPerVoxel`

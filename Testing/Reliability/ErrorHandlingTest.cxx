@@ -584,6 +584,39 @@ TEST(ErrorHandling, VolumeLargerThanTheMemoryAvailableIsAClearError)
   EXPECT_EQ(fileText(out), precious);
 }
 
+TEST(ErrorHandling, AMemoryLimitThatIsNotAPlainPositiveNumberIsAMalformedValue)
+{
+  // Read as far as it went, "8GB" limited the run to 8 MiB, "100abc" to 100, "0x10" to 16 and "1e2"
+  // to 100; "abc", "0", "-5" and an empty value left the limit to the machine without a word.
+  const Folders f = foldersFor("memory-limit");
+  const std::string input = writeBoxInput(f.inputs);
+  const char* previous = std::getenv("SLICEMESH_MEMORY_LIMIT_MB");
+  const std::string saved = previous ? previous : "";
+  for (const std::string value : { "8GB", "100abc", "0x10", "1e2", "abc", "0", "0.0", "-5", "", " 100", "1.2.3", ".",
+                                   "inf", "nan", "99999999999999999999999999999999999999999999999999999999999999999999"
+                                                 "99999999999999999999999999999999999999999999999999999999999999999999"
+                                                 "99999999999999999999999999999999999999999999999999999999999999999999"
+                                                 "99999999999999999999999999999999999999999999999999999999999999999999"
+                                                 "99999999999999999999999999999999999999999999999999999999999999999999" })
+  {
+    ::setenv("SLICEMESH_MEMORY_LIMIT_MB", value.c_str(), 1);
+    SCOPED_TRACE("SLICEMESH_MEMORY_LIMIT_MB='" + value + "'");
+    const std::string shown = value.size() > 60 ? value.substr(0, 57) + "..." : value;
+    expectFailure(f.outputs, input, cli::BadArguments, "SLICEMESH_MEMORY_LIMIT_MB is '" + shown + "'; it takes a positive number of MiB");
+  }
+  // A plain number, whole or with a fraction, is a limit.
+  for (const std::string value : { "4096", "4096.5", "512." })
+  {
+    ::setenv("SLICEMESH_MEMORY_LIMIT_MB", value.c_str(), 1);
+    const RunResult r = runSliceMesh(quoted(input) + " " + quoted((f.outputs / "box.vtp").string()));
+    EXPECT_EQ(r.exitCode, cli::Success) << value << ": " << r.err;
+  }
+  if (previous)
+    ::setenv("SLICEMESH_MEMORY_LIMIT_MB", saved.c_str(), 1);
+  else
+    ::unsetenv("SLICEMESH_MEMORY_LIMIT_MB");
+}
+
 TEST(ErrorHandling, EdgesFoundIn3DAreCheckedAgainstTheMemoryAvailable)
 {
   // A 100^3 byte volume: its reading needs about 73 MiB, edges found in 3D about 84 (they peaked at
