@@ -9,6 +9,7 @@
 #include "FractionalLabelmap.h"
 #include "ItkErrorText.h"
 #include "MemoryBudget.h"
+#include "RawVoxelBytes.h"
 
 #include "Core/SliceMeshTypes.h"
 
@@ -128,6 +129,7 @@ SegmentationFile readSlicerSegmentation(const std::string& path)
     throw Error(path + ": holds a '" + representation +
                 "' segmentation; SliceMesh reads binary and fractional labelmaps");
 
+  checkRawVoxelBytes(path, io); // before the memory its layers would take is checked, or allocated
   const std::size_t layerCount = io->GetNumberOfComponents();
   {
     double voxels = 1.0;

@@ -6,6 +6,7 @@
 #include "ItkErrorText.h"
 #include "MemoryBudget.h"
 #include "Nifti1Header.h"
+#include "RawVoxelBytes.h"
 #include "ReaderSpaceCorrection.h"
 #include "SilencedStandardError.h"
 
@@ -588,14 +589,18 @@ itk::ImageIOBase::Pointer readImageHeader(const std::string& path)
   return io;
 }
 
-/** The header of an image file, checked (dimension, components, geometry, NIfTI's size and
- *  spacing, memory; `asStored` as checkHeader's) before any voxel is read. */
+/** The header of an image file, checked (an uncompressed NRRD's or MetaImage's size, dimension,
+ *  components, geometry, NIfTI's size and spacing, memory; `asStored` as checkHeader's) before any
+ *  voxel is read. */
 itk::ImageIOBase::Pointer checkedImageHeader(const std::string& path, bool asStored)
 {
   if (endsInAnyCase(path, ".gz"))
     checkGzipStream(path);
   checkDetachedDataFile(path);
   itk::ImageIOBase::Pointer io = readImageHeader(path);
+  // Before the memory check: a header claiming more voxels than the file holds is a damaged file,
+  // whatever memory its voxels would take.
+  checkRawVoxelBytes(path, io);
   checkHeader(path, io, asStored);
   // NIfTI-1 (plain or gzip): its header read once, for the two checks.
   const std::optional<Nifti1Header> header = readNifti1Header(path);

@@ -330,7 +330,7 @@ TEST(ErrorHandling, AMalformedNrrdIsOneLineNamingTheFileAndTheFault)
     { "sizes.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 8 8\nencoding: raw\n\n" + voxels,
       "parsed 2 values, but dimension is 3" },
     { "short.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 8 8 8\nencoding: raw\n\n" + voxels.substr(0, 100),
-      "cannot read the voxels: fread got only 100 1-sized things, not 512" },
+      "the file holds 100 bytes of voxel data where its header claims 512 (a truncated file?)" },
     { "gzip.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 8 8 8\nencoding: gzip\n\n" + voxels.substr(0, 100),
       "cannot read the voxels: expected 512 bytes but received 100" },
   };
@@ -348,6 +348,80 @@ TEST(ErrorHandling, AMalformedNrrdIsOneLineNamingTheFileAndTheFault)
       EXPECT_EQ(lines[0].find(noise), std::string::npos) << "'" << noise << "' in: " << lines[0];
     EXPECT_TRUE(fs::is_empty(f.outputs)) << "nothing written";
   }
+}
+
+TEST(ErrorHandling, AHeaderClaimingMoreVoxelsThanItsFilesHoldIsRefusedBeforeTheyAreAllocated)
+{
+  // A 308-byte NRRD claiming 1000^3 bytes: ITK allocated the whole volume (985 MiB) before it found
+  // the file short. The data's size on disk is compared with the header's first; gzip data by the
+  // most deflate can decompress to (1032 bytes a byte).
+  const Folders f = foldersFor("claimed-voxels");
+  const std::string grid = "type: uchar\ndimension: 3\nsizes: 1000 1000 1000\nspacings: 1 1 1\n";
+  const std::string hundred(100, '\1');
+  const auto gzipped = [&](const std::string& bytes)
+  {
+    writeText(f.inputs / "plain", bytes);
+    EXPECT_EQ(runCommand("gzip -c -n " + quoted((f.inputs / "plain").string()) + " > " +
+                         quoted((f.inputs / "plain.gz").string()))
+                .exitCode,
+              0);
+    const std::string compressed = readBytes(f.inputs / "plain.gz");
+    fs::remove(f.inputs / "plain");
+    fs::remove(f.inputs / "plain.gz");
+    return compressed;
+  };
+  const std::string hundredGzipped = gzipped(hundred);
+  writeText(f.inputs / "raw.nrrd", "NRRD0004\n" + grid + "encoding: raw\n\n" + hundred);
+  writeText(f.inputs / "short.raw", hundred);
+  writeText(f.inputs / "detached.nhdr", "NRRD0004\n" + grid + "encoding: raw\ndata file: short.raw\n\n");
+  writeText(f.inputs / "local.mha", "ObjectType = Image\nNDims = 3\nBinaryData = True\nDimSize = 1000 1000 1000\n"
+                                    "ElementSpacing = 1 1 1\nElementType = MET_UCHAR\nElementDataFile = LOCAL\n" +
+                                      hundred);
+  writeText(f.inputs / "gzip.nrrd", "NRRD0004\n" + grid + "encoding: gzip\n\n" + hundredGzipped);
+  writeText(f.inputs / "layers.seg.nrrd",
+            "NRRD0004\ntype: uchar\ndimension: 4\nspace: left-posterior-superior\nsizes: 3 600 600 600\n"
+            "space directions: none (1,0,0) (0,1,0) (0,0,1)\nkinds: list domain domain domain\nencoding: raw\n"
+            "space origin: (0,0,0)\nSegment0_ID:=a\nSegment0_Name:=A\nSegment0_Layer:=0\nSegment0_LabelValue:=1\n\n" +
+              hundred);
+  const std::string held = "holds 100 bytes of voxel data where its header claims ";
+  const std::vector<std::pair<std::string, std::string>> refused{
+    { "raw.nrrd", "raw.nrrd: the file " + held + "1000000000 (a truncated file?)" },
+    { "detached.nhdr", "detached.nhdr: its data file '" + (f.inputs / "short.raw").string() + "' " + held + "1000000000" },
+    { "local.mha", "local.mha: the file " + held + "1000000000" },
+    { "gzip.nrrd", "gzip.nrrd: the file holds " + std::to_string(hundredGzipped.size()) +
+                     " bytes of compressed voxel data (at most " + std::to_string(1032 * hundredGzipped.size()) +
+                     " decompressed) where its header claims 1000000000" },
+    { "layers.seg.nrrd", "layers.seg.nrrd: the file " + held + "648000000" },
+  };
+  for (const auto& [name, message] : refused)
+    expectFailure(f.outputs, (f.inputs / name).string(), cli::UnreadableInput, message);
+
+  // Where the header says the voxels start, they are counted from there: a file that holds them all
+  // is read, one a byte short is not.
+  std::string box(512, '\0');
+  for (int k = 2; k < 6; ++k)
+    for (int j = 2; j < 6; ++j)
+      for (int i = 2; i < 6; ++i)
+        box[static_cast<std::size_t>(i + 8 * (j + 8 * k))] = '\1';
+  const std::string boxGrid = "type: uchar\ndimension: 3\nsizes: 8 8 8\nspacings: 1 1 1\n";
+  const std::string sixteen(16, '\7');
+  writeText(f.inputs / "end.nrrd", "NRRD0004\n" + boxGrid + "encoding: raw\nbyte skip: -1\n\n" + sixteen + box);
+  writeText(f.inputs / "box.raw", sixteen + box);
+  writeText(f.inputs / "skip.nhdr", "NRRD0004\n" + boxGrid + "encoding: raw\ndata file: box.raw\nbyte skip: 16\n\n");
+  writeText(f.inputs / "box.nrrd", "NRRD0004\n" + boxGrid + "encoding: gzip\n\n" + gzipped(box));
+  const std::string metaGrid = "ObjectType = Image\nNDims = 3\nBinaryData = True\nDimSize = 8 8 8\nElementSpacing = 1 1 1\n"
+                               "ElementType = MET_UCHAR\n";
+  writeText(f.inputs / "skip.mhd", metaGrid + "HeaderSize = 16\nElementDataFile = box.raw\n");
+  writeText(f.inputs / "end.mhd", metaGrid + "HeaderSize = -1\nElementDataFile = box.raw\n");
+  for (const std::string name : { "end.nrrd", "skip.nhdr", "box.nrrd", "skip.mhd", "end.mhd" })
+  {
+    const RunResult r = runSliceMesh(quoted((f.inputs / name).string()) + " " + quoted((f.outputs / "box.vtp").string()));
+    EXPECT_EQ(r.exitCode, cli::Success) << name << ": " << r.err;
+  }
+  fs::remove(f.outputs / "box.vtp");
+  writeText(f.inputs / "over.nhdr", "NRRD0004\n" + boxGrid + "encoding: raw\ndata file: box.raw\nbyte skip: 17\n\n");
+  expectFailure(f.outputs, (f.inputs / "over.nhdr").string(), cli::UnreadableInput,
+                "' holds 511 bytes of voxel data where its header claims 512");
 }
 
 TEST(ErrorHandling, TwoAndFourDimensionalImages)
