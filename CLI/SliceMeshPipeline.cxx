@@ -192,12 +192,27 @@ RunQuality runQualityOf(const MeshedContours& m)
   return quality;
 }
 
-/** "037_Hippocampus_L.vtp": the value zero-padded to sort in label order, then the safe name. */
-std::string labelFileName(const Structure& s, int width, const std::string& extension)
+/** The digits a run's structure files give their numbers: as many as the largest number has, at
+ *  least three, so that a folder's files sort in the order of their numbers (the negative ones
+ *  first, the nearest to zero first). A number of more digits once left every file unpadded, and
+ *  a negative one had its sign take a digit's place ("0_Zero", "-3_Neg" beside "1000000_Million";
+ *  "-05_Neg" beside "005_Five"). */
+int structureFileDigits(const std::vector<Structure>& structures)
 {
-  char value[32];
-  std::snprintf(value, sizeof(value), "%0*d", width, s.report.label);
-  return std::string(value) + "_" + safeFileName(s.report.name) + extension;
+  std::size_t digits = 3;
+  for (const Structure& s : structures)
+    digits = std::max(digits, std::to_string(std::llabs(s.report.label)).size());
+  return static_cast<int>(digits);
+}
+
+/** "037_Hippocampus_L.vtp", "-005_Lesion.vtp": the value's sign, its digits zero-padded to
+ *  `digits` (structureFileDigits), then the safe name. */
+std::string labelFileName(const Structure& s, int digits, const std::string& extension)
+{
+  const long long value = s.report.label;
+  char number[32];
+  std::snprintf(number, sizeof(number), "%s%0*lld", value < 0 ? "-" : "", digits, std::llabs(value));
+  return std::string(number) + "_" + safeFileName(s.report.name) + extension;
 }
 
 /** The files in `folder` named as a structure's mesh is ("037_Name.vtp": a label number, an
@@ -337,13 +352,10 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   if (std::isfinite(smallestVoxelSide))
     requireResolvableLengths(settings.meshing, smallestVoxelSide);
   const fs::path output(settings.outputModel);
-  const int width = perLabel && std::any_of(structures.begin(), structures.end(),
-                                            [](const Structure& s) { return s.report.label >= 1000; })
-                      ? 0
-                      : 3;
+  const int digits = structureFileDigits(structures);
   const bool structureFiles = perLabel && !settings.multiLabel.outputDirectory.empty();
   auto structureFile = [&](const Structure& s)
-  { return (fs::path(settings.multiLabel.outputDirectory) / labelFileName(s, width, output.extension().string())).string(); };
+  { return (fs::path(settings.multiLabel.outputDirectory) / labelFileName(s, digits, output.extension().string())).string(); };
   // The structures' files are named now: one that is the input, or another output, is refused
   // before the meshing.
   if (structureFiles)
@@ -616,7 +628,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
       if (s.live())
         written.insert(fs::path(s.report.path).filename().string());
       else if (!s.report.error.empty())
-        failed.insert(labelFileName(s, width, output.extension().string()));
+        failed.insert(labelFileName(s, digits, output.extension().string()));
     std::vector<fs::path> others = otherStructureFiles(settings.multiLabel.outputDirectory, written);
     // A file of a structure that failed here is an earlier run's mesh of it, not of another.
     const auto stale = std::stable_partition(others.begin(), others.end(), [&](const fs::path& file)

@@ -451,7 +451,7 @@ TEST(EndToEnd, LabelsPastFloatsPrecisionStayApart)
     ASSERT_FALSE(entry.empty()) << label << " missing from " << json.substr(0, 2000);
     EXPECT_NE(entry.find("\"voxels\": 64,"), std::string::npos) << entry.substr(0, 300);
     char name[64];
-    std::snprintf(name, sizeof name, "%u_Label_%u.vtp", label, label); // not padded past 999
+    std::snprintf(name, sizeof name, "%09u_Label_%u.vtp", label, label); // padded to the largest's digits
     EXPECT_TRUE(fs::exists(folder / "meshes" / name)) << name;
   }
   // One of two neighbouring labels picked alone: its box, not both.
@@ -898,10 +898,10 @@ TEST(EndToEnd, ALabelMapsNegativeLabelsAreMeshedByLabelAndByLabels)
   const double byLabel = volumeOf("--label -5", "label");
   EXPECT_NEAR(byLabel, 64.0, 0.1 * 64.0);
   EXPECT_NEAR(volumeOf("--labels -5 --outputDirectory " + quoted((folder / "one").string()), "labels"), byLabel, 0.01 * byLabel);
-  EXPECT_TRUE(fs::exists(folder / "one" / "-05_Label_-5.vtp"));
+  EXPECT_TRUE(fs::exists(folder / "one" / "-005_Label_-5.vtp"));
   EXPECT_NEAR(volumeOf("--splitLabels --outputDirectory " + quoted((folder / "all").string()), "all"), 2.0 * byLabel,
               0.02 * byLabel);
-  EXPECT_TRUE(fs::exists(folder / "all" / "-05_Label_-5.vtp"));
+  EXPECT_TRUE(fs::exists(folder / "all" / "-005_Label_-5.vtp"));
   EXPECT_TRUE(fs::exists(folder / "all" / "003_Label_3.vtp"));
 
   // Not given as a label map, a volume with negative values is none (a CT's): one mesh per label

@@ -21,6 +21,7 @@
 #include <fstream>
 #include <iterator>
 #include <regex>
+#include <sstream>
 
 namespace fs = std::filesystem;
 
@@ -597,6 +598,47 @@ TEST(StructureSet, AnEarlierMeshOfAnROIThatFailsNowIsKeptAndSaidToBeItsOwn)
   EXPECT_EQ(failed.err.find("of other ROIs"), std::string::npos) << failed.err;
   EXPECT_EQ(fileText(folder / "rois" / "002_B.vtp"), before);
   expectValid(folder / "rois" / "001_A.vtp");
+}
+
+TEST(StructureSet, ROINumbersOfZeroOfASignAndOfManyDigitsAreAllPaddedAndSortInOrder)
+{
+  // ROI 0 was written as '0_Zero.vtp' and ROI -3 as '-3_Negative.vtp' beside a number of more than
+  // three digits (which left every file unpadded), and as '-03_Negative.vtp' beside '007_Seven.vtp'.
+  const fs::path folder = freshFolder("StructureSetFileNumbers");
+  auto meshFiles = [&](const std::vector<std::pair<int, std::string>>& rois)
+  {
+    std::ostringstream json;
+    json << R"({ "rois": [ )";
+    double x = 0.0;
+    for (const auto& [number, name] : rois)
+    {
+      const std::string square = "[ [[" + std::to_string(x) + ", 0], [" + std::to_string(x + 8) + ", 0], [" +
+                                 std::to_string(x + 8) + ", 8], [" + std::to_string(x) + ", 8]] ]";
+      json << (x > 0.0 ? ", " : "") << R"({ "number": )" << number << R"(, "name": ")" << name
+           << R"(", "slices": [ { "z": 0, "polygons": )" << square << R"( }, { "z": 2, "polygons": )" << square
+           << " } ] }";
+      x += 20.0;
+    }
+    json << " ] }";
+    std::ofstream(folder / "set.json") << json.str();
+    fs::remove_all(folder / "rois");
+    const RunResult r = runSliceMesh("--outputDirectory " + quoted((folder / "rois").string()) + " " +
+                                     quoted((folder / "set.json").string()) + " " + quoted((folder / "all.vtp").string()));
+    EXPECT_EQ(r.exitCode, cli::Success) << r.err;
+    std::vector<std::string> names;
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder / "rois"))
+      names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end()); // as a file browser lists them
+    return names;
+  };
+  const std::vector<std::pair<int, std::string>> small{ { 7, "Seven" }, { -12, "Twelve below" }, { 0, "Zero" },
+                                                         { -3, "Negative" } };
+  EXPECT_EQ(meshFiles(small), (std::vector<std::string>{ "-003_Negative.vtp", "-012_Twelve_below.vtp", "000_Zero.vtp",
+                                                        "007_Seven.vtp" }));
+  std::vector<std::pair<int, std::string>> large = small;
+  large.emplace_back(1000000, "Million");
+  EXPECT_EQ(meshFiles(large), (std::vector<std::string>{ "-0000003_Negative.vtp", "-0000012_Twelve_below.vtp",
+                                                        "0000000_Zero.vtp", "0000007_Seven.vtp", "1000000_Million.vtp" }));
 }
 
 TEST(StructureSet, TwoROIsOfOneNumberFailWithOneWarningAndTheOthersAreWritten)
