@@ -34,6 +34,7 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <set>
@@ -580,6 +581,11 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   // the merged model first (the largest task; written after the others, it ran alone at the end).
   // A failure is reported as when they were written one by one: the first structure's in label
   // order, then the merged model's (task 0 fails in slot structures.size(), task 1 in the next).
+  // Each file is written to its temporary, and all are moved into place together once every one is
+  // written (commitTogether): a file that cannot be written (a full disk) leaves every earlier file
+  // as it was, where the files written before it had replaced theirs. Slot n holds structure n's
+  // file, the last slot the merged model.
+  std::vector<std::unique_ptr<FileReplacement>> written(structures.size() + 1);
   std::vector<std::exception_ptr> writeFailures(structures.size() + 2);
   parallelFor(structures.size() + 2, threads,
               [&](std::size_t task)
@@ -589,14 +595,14 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
                   if (task == 0)
                   {
                     if (!merged.triangles.empty())
-                      guarded(WriteFailed,
-                              [&]
-                              {
-                                if (perLabel)
-                                  writeMesh(merged, settings.coordinateSystem, settings.outputModel, mergedAttributes);
-                                else
-                                  writeMesh(merged, settings.coordinateSystem, settings.outputModel);
-                              });
+                      written.back() = guarded(WriteFailed,
+                                               [&]
+                                               {
+                                                 const MeshAttributes none;
+                                                 return writeMeshUncommitted(merged, settings.coordinateSystem,
+                                                                             settings.outputModel,
+                                                                             perLabel ? mergedAttributes : none);
+                                               });
                   }
                   else if (task == 1)
                   {
@@ -608,8 +614,12 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
                     const std::size_t n = task - 2;
                     const Structure& s = structures[n];
                     const TriangleMesh own = appendedPart(merged, appendedAt[n], appendedAt[n + 1]);
-                    guarded(WriteFailed, [&]
-                            { writeMesh(own, settings.coordinateSystem, s.report.path, attributesOf(s, own.triangles.size())); });
+                    written[n] = guarded(WriteFailed,
+                                         [&]
+                                         {
+                                           return writeMeshUncommitted(own, settings.coordinateSystem, s.report.path,
+                                                                       attributesOf(s, own.triangles.size()));
+                                         });
                   }
                 }
                 catch (...)
@@ -620,6 +630,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   for (const std::exception_ptr& failure : writeFailures)
     if (failure)
       std::rethrow_exception(failure);
+  guarded(WriteFailed, [&] { commitTogether(written); });
   // Said, not removed: the files are the user's, and may be wanted.
   if (structureFiles)
   {

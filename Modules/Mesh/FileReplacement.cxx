@@ -26,11 +26,11 @@ fs::path folderOf(const fs::path& file)
   return file.has_parent_path() ? file.parent_path() : fs::path(".");
 }
 
-/** ".<stem>.partial-<pid><extension>" beside the target, the extension in lower case: VTK's PLY
- *  writer appends ".ply" to a name that does not end in it, and would write somewhere else. The
- *  stem is cut to 200 bytes: a name of 241 to 255 bytes is a valid target, but its temporary went
- *  past the file system's 255 and failed once the meshing was done. */
-std::string temporaryBeside(const fs::path& target)
+/** ".<stem>.<kind>-<pid><extension>" beside the target ("partial": the file being written), the
+ *  extension in lower case: VTK's PLY writer appends ".ply" to a name that does not end in it, and
+ *  would write somewhere else. The stem is cut to 200 bytes: a name of 241 to 255 bytes is a valid
+ *  target, but its temporary went past the file system's 255 and failed once the meshing was done. */
+std::string temporaryBeside(const fs::path& target, const std::string& kind = "partial")
 {
   constexpr std::size_t longestStem = 200;
   std::string stem = target.stem().string();
@@ -41,7 +41,7 @@ std::string temporaryBeside(const fs::path& target)
       --cut;
     stem.resize(cut);
   }
-  return (folderOf(target) / ("." + stem + ".partial-" + std::to_string(::getpid()) +
+  return (folderOf(target) / ("." + stem + "." + kind + "-" + std::to_string(::getpid()) +
                                  lowercase(target.extension().string())))
     .string();
 }
@@ -115,6 +115,75 @@ void FileReplacement::commit()
   if (std::rename(m_Temporary.c_str(), m_Target.c_str()) != 0)
     throw Error(m_Failure + ": renaming the finished file into place failed");
   m_Committed = true;
+}
+
+namespace
+{
+
+/** An earlier file at a replacement's place, kept by a second name while a group is committed. */
+struct KeptEarlier
+{
+  fs::path target;
+  bool existed = false;
+  std::string keptAs; ///< the hard link to it; empty where there was none or none could be made
+  std::unique_ptr<RemovedOnSignal> removedIfStopped;
+};
+
+} // namespace
+
+void commitTogether(const std::vector<std::unique_ptr<FileReplacement>>& files)
+{
+  std::vector<KeptEarlier> earlier;
+  for (const std::unique_ptr<FileReplacement>& file : files)
+  {
+    if (!file)
+      continue;
+    KeptEarlier kept;
+    kept.target = file->target();
+    std::error_code ignored;
+    kept.existed = fs::exists(kept.target, ignored);
+    const std::string link = temporaryBeside(kept.target, "earlier");
+    if (kept.existed && ::link(kept.target.c_str(), link.c_str()) == 0)
+    {
+      kept.keptAs = link;
+      kept.removedIfStopped = std::make_unique<RemovedOnSignal>(link);
+    }
+    earlier.push_back(std::move(kept));
+  }
+  const auto removeKeptLinks = [&earlier]
+  {
+    for (const KeptEarlier& kept : earlier)
+    {
+      std::error_code ignored;
+      if (!kept.keptAs.empty())
+        fs::remove(kept.keptAs, ignored);
+    }
+  };
+  std::size_t placed = 0;
+  try
+  {
+    for (const std::unique_ptr<FileReplacement>& file : files)
+      if (file)
+      {
+        file->commit();
+        ++placed;
+      }
+  }
+  catch (const Error&)
+  {
+    // Those already in place are undone: the earlier file back, or the new one gone where there was none.
+    for (std::size_t n = 0; n < placed; ++n)
+    {
+      std::error_code ignored;
+      if (!earlier[n].keptAs.empty() && std::rename(earlier[n].keptAs.c_str(), earlier[n].target.c_str()) == 0)
+        earlier[n].keptAs.clear();
+      else if (!earlier[n].existed)
+        fs::remove(earlier[n].target, ignored);
+    }
+    removeKeptLinks();
+    throw;
+  }
+  removeKeptLinks();
 }
 
 } // namespace slicemesh

@@ -5,7 +5,9 @@
 #include "RemovedOnSignal.h"
 
 #include <filesystem>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace slicemesh
 {
@@ -40,6 +42,9 @@ public:
   /** The file to write. */
   const std::string& temporary() const { return m_Temporary; }
 
+  /** The file it replaces: writablePlace(path). */
+  const std::filesystem::path& target() const { return m_Target; }
+
   /** The temporary file moved into place; throws Error (the temporary removed) if it cannot be. */
   void commit();
 
@@ -50,6 +55,15 @@ private:
   RemovedOnSignal m_RemovedIfStopped;
   bool m_Committed = false;
 };
+
+/** Several outputs moved into place together, in order, or none of them: the meshes of a run of one
+ *  mesh per label or ROI and the model they make. `files` are written and not yet committed; an
+ *  empty entry is passed over. Each earlier file at their places is kept by a second name beside it
+ *  (a hard link: no copy) until all are in place, so that a rename failing part way puts back those
+ *  it already replaced (and removes those that were new) and throws that rename's Error; the
+ *  temporaries go with their replacements. On a file system without hard links an earlier file
+ *  replaced before such a failure cannot be put back. */
+void commitTogether(const std::vector<std::unique_ptr<FileReplacement>>& files);
 
 } // namespace slicemesh
 

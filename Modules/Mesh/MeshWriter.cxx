@@ -3,7 +3,6 @@
 
 #include "Core/Lowercase.h"
 #include "DeflateCompressor.h"
-#include "FileReplacement.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
@@ -414,6 +413,12 @@ void writeMesh(const TriangleMesh& physicalMesh, CoordinateSystem system, const 
 void writeMesh(const TriangleMesh& physicalMesh, CoordinateSystem system, const std::string& path,
                const MeshAttributes& attributes)
 {
+  writeMeshUncommitted(physicalMesh, system, path, attributes)->commit();
+}
+
+std::unique_ptr<FileReplacement> writeMeshUncommitted(const TriangleMesh& physicalMesh, CoordinateSystem system,
+                                                      const std::string& path, const MeshAttributes& attributes)
+{
   const std::size_t triangles = physicalMesh.triangles.size();
   if ((!attributes.cellLabels.empty() && attributes.cellLabels.size() != triangles) ||
       (!attributes.cellColors.empty() && attributes.cellColors.size() != triangles))
@@ -429,12 +434,12 @@ void writeMesh(const TriangleMesh& physicalMesh, CoordinateSystem system, const 
     throw Error("cannot write mesh '" + path + "': unknown extension '" + extension +
                 "' (use .vtp, .vtk, .stl, .ply or .obj)");
   }
-  FileReplacement file(path, "mesh");
+  auto file = std::make_unique<FileReplacement>(path, "mesh");
   const std::string failure =
-    writeByExtension(physicalMesh, system, extension, file.temporary(), hasAttributes ? &attributes : nullptr);
+    writeByExtension(physicalMesh, system, extension, file->temporary(), hasAttributes ? &attributes : nullptr);
   if (!failure.empty())
-    throw Error("cannot write mesh '" + path + "': " + userMessage(failure, file.temporary(), path));
-  file.commit();
+    throw Error("cannot write mesh '" + path + "': " + userMessage(failure, file->temporary(), path));
+  return file;
 }
 
 } // namespace slicemesh

@@ -3,8 +3,10 @@
 #define MeshWriter_h
 
 #include "Core/SliceMeshTypes.h"
+#include "FileReplacement.h"
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -49,6 +51,12 @@ struct MeshAttributes
 /** writeMesh with attributes; .stl and .obj have no place for them and get the geometry only. */
 void writeMesh(const TriangleMesh& physicalMesh, CoordinateSystem system, const std::string& path,
                const MeshAttributes& attributes);
+
+/** writeMesh's file written whole to its temporary but not moved into place: the caller commits
+ *  it, alone or with others that must replace their files together (commitTogether); dropped
+ *  uncommitted, it leaves the place as it was. Throws slicemesh::Error as writeMesh does. */
+std::unique_ptr<FileReplacement> writeMeshUncommitted(const TriangleMesh& physicalMesh, CoordinateSystem system,
+                                                      const std::string& path, const MeshAttributes& attributes);
 
 } // namespace slicemesh
 

@@ -11,8 +11,8 @@ namespace slicemesh
 namespace
 {
 
-constexpr int slots = 64;
 constexpr std::size_t longestPath = 4096;
+constexpr int tableSlots = 64;
 
 /** The files to remove, read by the handler: only a slot marked in use (after its path is written)
  *  is read, so the handler needs no lock (a lock is not safe in a signal handler). */
@@ -21,15 +21,25 @@ struct WatchedFile
   std::atomic<bool> inUse{ false };
   char path[longestPath];
 };
-WatchedFile watched[slots];
+
+/** Slots by the table of tableSlots, a table added when all are in use (never freed: the handler may be
+ *  walking them): a run of one mesh per label holds every label's temporary file until all are
+ *  written, and an atlas has hundreds. */
+struct WatchedTable
+{
+  WatchedFile files[tableSlots];
+  std::atomic<WatchedTable*> next{ nullptr };
+};
+WatchedTable watched;
 
 constexpr int stoppingSignals[] = { SIGTERM, SIGINT, SIGHUP };
 
 extern "C" void removeWatchedFiles(int signal)
 {
-  for (WatchedFile& file : watched)
-    if (file.inUse.load())
-      ::unlink(file.path); // async-signal-safe
+  for (WatchedTable* table = &watched; table; table = table->next.load())
+    for (WatchedFile& file : table->files)
+      if (file.inUse.load())
+        ::unlink(file.path); // async-signal-safe
   // The signal's own course: the default action (the process ends as if it had not been caught).
   struct sigaction usual{};
   usual.sa_handler = SIG_DFL;
@@ -71,14 +81,23 @@ RemovedOnSignal::RemovedOnSignal(const std::string& path)
     return;
   installHandlersOnce();
   const std::lock_guard<std::mutex> lock(slotLock);
-  for (int slot = 0; slot < slots; ++slot)
-    if (!watched[slot].inUse.load())
+  int slot = 0;
+  for (WatchedTable* table = &watched;; table = table->next.load())
+  {
+    for (WatchedFile& file : table->files)
     {
-      std::memcpy(watched[slot].path, path.c_str(), path.size() + 1);
-      watched[slot].inUse.store(true);
-      m_Slot = slot;
-      return;
+      if (!file.inUse.load())
+      {
+        std::memcpy(file.path, path.c_str(), path.size() + 1);
+        file.inUse.store(true);
+        m_Slot = slot;
+        return;
+      }
+      ++slot;
     }
+    if (!table->next.load())
+      table->next.store(new WatchedTable); // complete before the handler can reach it
+  }
 }
 
 RemovedOnSignal::~RemovedOnSignal()
@@ -86,7 +105,10 @@ RemovedOnSignal::~RemovedOnSignal()
   if (m_Slot < 0)
     return;
   const std::lock_guard<std::mutex> lock(slotLock);
-  watched[m_Slot].inUse.store(false);
+  WatchedTable* table = &watched;
+  for (int skipped = m_Slot / tableSlots; skipped > 0; --skipped)
+    table = table->next.load();
+  table->files[m_Slot % tableSlots].inUse.store(false);
 }
 
 } // namespace slicemesh

@@ -12,8 +12,8 @@ namespace slicemesh
  *  For the temporary file a writer renames into place once it is complete: without it, a run stopped
  *  while writing left that hidden file beside the output. The handlers are installed only where the
  *  process has none of its own for those signals (SliceMesh loaded into another program keeps
- *  that program's). At most 64 files at once; beyond that a file is not watched. SIGKILL cannot be
- *  caught: a run killed so can still leave the file. */
+ *  that program's). Any number of files at once (a run of one mesh per label holds one for each
+ *  label until all are written). SIGKILL cannot be caught: a run killed so can still leave the file. */
 class RemovedOnSignal
 {
 public:
@@ -23,7 +23,7 @@ public:
   RemovedOnSignal& operator=(const RemovedOnSignal&) = delete;
 
 private:
-  int m_Slot = -1; ///< its place in the table the handler reads; -1: not watched
+  int m_Slot = -1; ///< its place in the tables the handler reads, counted across them; -1: not watched
 };
 
 } // namespace slicemesh

@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <unistd.h>
 #include <vector>
@@ -562,6 +563,76 @@ TEST(ErrorHandling, OutputFolderMissingOrNotWritable)
     EXPECT_NE(r.err.find("not writable"), std::string::npos) << r.err;
     EXPECT_EQ(fileText(locked / "out.vtp"), precious);
   }
+}
+
+/** Every name in `folder` with its bytes, hidden files too, sub-folders as "<folder>". */
+std::map<std::string, std::string> folderContents(const fs::path& folder)
+{
+  std::map<std::string, std::string> contents;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder))
+    contents[entry.path().filename().string()] = entry.is_directory() ? "<folder>" : readBytes(entry.path());
+  return contents;
+}
+
+TEST(ErrorHandling, OneMeshPerLabelIsWrittenWholeOrNotAtAll)
+{
+  // A label's file that could not be written (a full disk) failed the run, but the files written
+  // before it stayed, replacing the user's earlier files of their names. Now every file goes to its
+  // temporary first and all are moved into place together: the earlier files are as they were, and
+  // no new or temporary file is left. Labels 1 and 2 are boxes of 4^3 voxels (files of some 6 kB),
+  // label 3 a ball of radius 12 (some 70 kB).
+  const Folders f = foldersFor("labels-whole-or-none");
+  const fs::path input = f.inputs / "labels.mha";
+  writeMetaImage(input, { 40, 40, 40 }, { 1, 1, 1 }, [](int i, int j, int k) -> unsigned char {
+    if (j >= 2 && j < 6 && k >= 2 && k < 6 && i >= 2 && i < 12 && (i < 6 || i >= 8))
+      return i < 6 ? 1 : 2;
+    return (i - 25) * (i - 25) + (j - 22) * (j - 22) + (k - 20) * (k - 20) < 144 ? 3 : 0;
+  });
+  const fs::path meshes = f.outputs / "meshes";
+  const auto earlierRun = [&]
+  {
+    fs::remove_all(f.outputs);
+    fs::create_directories(meshes);
+    std::ofstream(f.outputs / "all.vtp") << precious;
+    std::ofstream(meshes / "001_Label_1.vtp") << "an earlier run's label 1";
+    std::ofstream(meshes / "007_Label_7.vtp") << "an earlier run's label 7";
+  };
+  const std::string run = quoted(SLICEMESH_EXECUTABLE) + " --outputDirectory " + quoted(meshes.string()) + " " +
+                          quoted(input.string()) + " " + quoted((f.outputs / "all.vtp").string());
+
+  // A full disk: files of more than 16 kB (32 blocks of 512 bytes; of 1 kB in some shells, 32 kB) cut short.
+  earlierRun();
+  const std::map<std::string, std::string> before = folderContents(meshes);
+  const RunResult full = runCommand("trap '' XFSZ; ulimit -f 32; " + run);
+  EXPECT_EQ(full.exitCode, cli::WriteFailed) << full.err;
+  ASSERT_EQ(linesOf(full.err).size(), 1u) << full.err;
+  EXPECT_NE(full.err.find("cannot write mesh '" + (meshes / "003_Label_3.vtp").string() + "': "), std::string::npos)
+    << full.err;
+  EXPECT_EQ(folderContents(meshes), before);
+  EXPECT_EQ(fileText(f.outputs / "all.vtp"), precious);
+
+  // A folder where label 3's file goes.
+  earlierRun();
+  fs::create_directories(meshes / "003_Label_3.vtp" / "inside");
+  const std::map<std::string, std::string> withFolder = folderContents(meshes);
+  const RunResult blocked = runCommand(run);
+  EXPECT_EQ(blocked.exitCode, cli::WriteFailed) << blocked.err;
+  EXPECT_NE(blocked.err.find("003_Label_3.vtp': it is a folder"), std::string::npos) << blocked.err;
+  EXPECT_EQ(folderContents(meshes), withFolder);
+  EXPECT_EQ(fileText(f.outputs / "all.vtp"), precious);
+
+  // Written whole, every file is replaced.
+  fs::remove_all(meshes / "003_Label_3.vtp");
+  const RunResult whole = runCommand(run);
+  ASSERT_EQ(whole.exitCode, cli::Success) << whole.err;
+  const std::map<std::string, std::string> after = folderContents(meshes);
+  std::vector<std::string> names;
+  for (const auto& [name, bytes] : after)
+    names.push_back(name);
+  EXPECT_EQ(names, (std::vector<std::string>{ "001_Label_1.vtp", "002_Label_2.vtp", "003_Label_3.vtp", "007_Label_7.vtp" }));
+  EXPECT_NE(after.at("001_Label_1.vtp"), "an earlier run's label 1");
+  EXPECT_EQ(after.at("007_Label_7.vtp"), "an earlier run's label 7");
+  EXPECT_NE(fileText(f.outputs / "all.vtp"), precious);
 }
 
 TEST(ErrorHandling, ReportReturnParameterAndSnapshotFoldersAreCheckedBeforeAnyWork)

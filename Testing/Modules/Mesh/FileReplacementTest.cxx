@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -132,6 +133,54 @@ TEST(FileReplacement, PlacesThatCannotBeWrittenAreRefusedBeforeWriting)
     }
   }
   EXPECT_EQ(entriesIn(folder), 5u) << "nothing created";
+}
+
+/** FileReplacements of the named files in `folder`, each written with "<name> new". */
+std::vector<std::unique_ptr<FileReplacement>> writtenReplacements(const fs::path& folder,
+                                                                  const std::vector<std::string>& names)
+{
+  std::vector<std::unique_ptr<FileReplacement>> files;
+  for (const std::string& name : names)
+  {
+    files.push_back(std::make_unique<FileReplacement>((folder / name).string(), "mesh"));
+    write(*files.back(), name + " new");
+  }
+  files.insert(files.begin() + 1, nullptr); // an empty slot, passed over
+  return files;
+}
+
+TEST(FileReplacement, FilesCommittedTogetherReplaceTheirsAllAtOnce)
+{
+  const fs::path folder = freshFolder("together");
+  std::ofstream(folder / "a.vtp") << "a old";
+  {
+    const auto files = writtenReplacements(folder, { "a.vtp", "b.vtp" });
+    EXPECT_EQ(fileText(folder / "a.vtp"), "a old") << "untouched until committed";
+    EXPECT_FALSE(fs::exists(folder / "b.vtp"));
+    commitTogether(files);
+  }
+  EXPECT_EQ(fileText(folder / "a.vtp"), "a.vtp new");
+  EXPECT_EQ(fileText(folder / "b.vtp"), "b.vtp new");
+  EXPECT_EQ(entriesIn(folder), 2u) << "no temporary or earlier file left";
+}
+
+TEST(FileReplacement, ARenameFailingPartWayThroughACommitPutsBackThoseBeforeIt)
+{
+  // c's place turns into a folder after its file is written: its rename fails once a and b are in
+  // place; a's earlier file comes back and b, new, goes.
+  const fs::path folder = freshFolder("together-undone");
+  std::ofstream(folder / "a.vtp") << "a old";
+  std::ofstream(folder / "c.vtp") << "c old";
+  {
+    const auto files = writtenReplacements(folder, { "a.vtp", "b.vtp", "c.vtp" });
+    fs::remove(folder / "c.vtp");
+    fs::create_directories(folder / "c.vtp" / "inside");
+    EXPECT_THROW(commitTogether(files), Error);
+  }
+  EXPECT_EQ(fileText(folder / "a.vtp"), "a old");
+  EXPECT_FALSE(fs::exists(folder / "b.vtp"));
+  EXPECT_TRUE(fs::is_directory(folder / "c.vtp"));
+  EXPECT_EQ(entriesIn(folder), 2u) << "no temporary or earlier file left";
 }
 
 } // namespace

@@ -8,8 +8,10 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -58,6 +60,25 @@ TEST(RemovedOnSignal, AFileBeingWrittenIsRemovedWhenTheRunIsStopped)
     EXPECT_FALSE(fs::exists(file)) << signal;
     EXPECT_FALSE(fs::exists(other)) << signal;
   }
+}
+
+TEST(RemovedOnSignal, AnyNumberOfFilesAreWatchedAtOnce)
+{
+  // A run of one mesh per label holds every label's temporary until all are written: past 64 files
+  // the others were not watched, and a stopped atlas run left them.
+  std::vector<fs::path> files;
+  for (int n = 0; n < 200; ++n)
+    files.push_back(freshFile(".label-" + std::to_string(n) + ".partial.vtp"));
+  const int ended = endedBy(SIGTERM,
+                            [&]
+                            {
+                              static std::vector<std::unique_ptr<slicemesh::RemovedOnSignal>> watched;
+                              for (const fs::path& file : files)
+                                watched.push_back(std::make_unique<slicemesh::RemovedOnSignal>(file.string()));
+                            });
+  EXPECT_EQ(ended, SIGTERM);
+  for (const fs::path& file : files)
+    EXPECT_FALSE(fs::exists(file)) << file;
 }
 
 TEST(RemovedOnSignal, AFileNoLongerWatchedIsKept)
