@@ -559,6 +559,11 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   // stderr as failing.
   if (!shortOfVolume.empty())
     std::cout << "SliceMesh: " << volumeShortfallWarning(structures, shortOfVolume, noun) << std::endl;
+  // One mesh per label asked for without a folder: said, since the help's "files" read as if they
+  // were written anyway.
+  if (perLabel && !structureFiles && structures.size() > 1)
+    std::cout << "SliceMesh: the " << structures.size() << " " << noun << "s' meshes are in '" << settings.outputModel
+              << "' alone (its Label array tells them apart); --outputDirectory also writes a file for each" << std::endl;
   if (merged.triangles.empty() && failures.empty())
   {
     std::ostringstream message;

@@ -509,6 +509,13 @@ TEST(EndToEnd, MultiLabelSummaryAndReportCarryRealQuality)
   const RunResult r = runSliceMesh("--splitLabels --report " + quoted(report.string()) + " " + quoted(input.string()) +
                                    " " + quoted((folder / "labels.vtp").string()));
   ASSERT_EQ(r.exitCode, cli::Success) << r.err;
+  // Without an output folder the labels' meshes are in the model alone: said, and no other file.
+  EXPECT_NE(r.out.find("the 2 labels' meshes are in '" + (folder / "labels.vtp").string() + "' alone"), std::string::npos)
+    << r.out;
+  std::size_t files = 0;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder))
+    files += entry.path().extension() == ".vtp";
+  EXPECT_EQ(files, 1u);
   const std::string summary = linesOf(r.out).back();
   // Two solids: genus 0 each, angles of real triangles, 1 mm points on 2 mm slices.
   EXPECT_NE(summary.find("2 components"), std::string::npos) << summary;
