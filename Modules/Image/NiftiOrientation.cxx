@@ -78,6 +78,46 @@ std::array<double, 3> apply(const Affine3x4& m, const std::array<double, 3>& ijk
   return p;
 }
 
+double determinant3(const Affine3x4& m)
+{
+  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+/** Where the two maps are mirror images of each other (one turns the voxel axes right-handed, the
+ *  other left-handed): the RAS direction the mirror flips, as a reader would name it (the one that
+ *  the sform's world axes map onto their opposites, by the product sform * qform^-1); empty if they
+ *  are not mirrored. */
+std::string mirroredDirection(const Affine3x4& qform, const Affine3x4& sform)
+{
+  const double dq = determinant3(qform), ds = determinant3(sform);
+  if (!(dq * ds < 0.0))
+    return {};
+  // qform^-1 by cofactors; then the diagonal of sform * qform^-1: an axis flipped is near -1.
+  double inverse[3][3];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c)
+    {
+      const int r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
+      inverse[r][c] = (qform[r1][c1] * qform[r2][c2] - qform[r1][c2] * qform[r2][c1]) / dq;
+    }
+  int flipped = 0;
+  double lowest = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    double diagonal = 0.0;
+    for (int k = 0; k < 3; ++k)
+      diagonal += sform[a][k] * inverse[k][a];
+    if (diagonal < lowest)
+    {
+      lowest = diagonal;
+      flipped = a;
+    }
+  }
+  static const char* const names[3] = { "left-right", "front-back", "head-foot" };
+  return names[flipped];
+}
+
 } // namespace
 
 std::optional<std::string> niftiOrientationWarning(const std::string& path, const itk::ImageBase<3>* volume,
@@ -111,8 +151,14 @@ std::optional<std::string> niftiOrientationWarning(const std::string& path, cons
                                                 : "neither exactly (ITK made the sform orthonormal)";
   std::ostringstream message;
   message << path << ": the NIfTI qform (code " << o->qformCode << ") and sform (code " << o->sformCode
-          << ") disagree by up to " << measureText(disagreement, 3) << " mm at the volume's corners; using " << used
-          << ", as ITK's NIfTI reader (and so 3D Slicer) does";
+          << ") disagree by up to " << measureText(disagreement, 3) << " mm at the volume's corners";
+  // A side flip is the dangerous kind: FSL and MRIcron show the sform.
+  const std::string mirrored = mirroredDirection(o->qform, o->sform);
+  if (!mirrored.empty())
+    message << " and are mirror images of each other (" << mirrored << ")";
+  message << "; using " << used << ", as ITK's NIfTI reader (and so 3D Slicer) does";
+  if (!mirrored.empty())
+    message << " (FSL and MRIcron show the sform)";
   return message.str();
 }
 

@@ -116,6 +116,22 @@ TEST(Orientation, QformAndSformDisagree_TheFormITKFollowsIsNamedInAWarning)
               << (message->find("using the sform") != std::string::npos ? "sform" : "qform") << std::endl;
   }
 
+  // A shift is not a mirror; forms that mirror each other say so, and across which axis (a side
+  // flip is the dangerous kind): the sform flipped along y, then the real atlases whose forms mirror
+  // left-right (jhu189) and head-foot (JHU white matter).
+  EXPECT_EQ(warning->find("mirror"), std::string::npos) << *warning;
+  const double flippedY[3][4] = { { 1, 0, 0, 0 }, { 0, -1, 0, 11 }, { 0, 0, 1, 0 } };
+  const std::string mirrored = writeNifti("qform-sform-mirrored.nii", 12, 1, noQuaternion, 1.0, noOffset, 2, flippedY);
+  const auto mirror = niftiOrientationWarning(mirrored, readVolume(mirrored));
+  ASSERT_TRUE(mirror.has_value());
+  EXPECT_NE(mirror->find("mirror images of each other (front-back)"), std::string::npos) << *mirror;
+  const std::string jhu189 = mricronTemplates + "jhu189.nii.gz", jhu = mricronTemplates + "JHU-WhiteMatter-labels-2mm.nii.gz";
+  const auto leftRight = niftiOrientationWarning(jhu189, readVolume(jhu189));
+  const auto headFoot = niftiOrientationWarning(jhu, readVolume(jhu));
+  ASSERT_TRUE(leftRight.has_value() && headFoot.has_value());
+  EXPECT_NE(leftRight->find("(left-right)"), std::string::npos) << *leftRight;
+  EXPECT_NE(headFoot->find("(head-foot)"), std::string::npos) << *headFoot;
+
   // Agreeing forms, or one form only: no warning.
   const double same[3][4] = { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } };
   const std::string agree = writeNifti("agree.nii", 12, 1, noQuaternion, 1.0, noOffset, 2, same);
