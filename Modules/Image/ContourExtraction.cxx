@@ -144,7 +144,7 @@ ContourStack extractContours(const MaskVolume* mask, double inPlaneSigma)
   const long width = static_cast<long>(region.GetSize()[0]);
   const long height = static_cast<long>(region.GetSize()[1]);
   const long depth = static_cast<long>(region.GetSize()[2]);
-  const auto spacing = mask->GetSpacing();
+  const std::array<double, 3> spacing = meshingSpacing(mask);
 
   ContourStack stack;
   stack.sliceSpacing = spacing[2];

@@ -10,16 +10,14 @@ double maskVoxelVolume(const MaskVolume* mask)
   const auto* value = mask->GetBufferPointer();
   for (std::size_t i = 0; i < count; ++i)
     voxels += value[i] != 0;
-  const auto spacing = mask->GetSpacing();
+  const std::array<double, 3> spacing = meshingSpacing(mask);
   return static_cast<double>(voxels) * spacing[0] * spacing[1] * spacing[2];
 }
 
 MeshedContours startMaskMeshing(const MaskVolume* mask, const MeshingOptions& options, double contourSmoothingSigma)
 {
-  const auto spacing = mask->GetSpacing();
   // The finished surface encloses the voxels' volume (their traced contours cut each convex corner).
-  return startMeshing(extractContours(mask, contourSmoothingSigma), options, { spacing[0], spacing[1], spacing[2] },
-                      maskVoxelVolume(mask));
+  return startMeshing(extractContours(mask, contourSmoothingSigma), options, meshingSpacing(mask), maskVoxelVolume(mask));
 }
 
 MeshedMask meshMask(const MaskVolume* mask, const MeshingOptions& options, double contourSmoothingSigma,

@@ -951,4 +951,40 @@ TEST(EndToEnd, AShearedGridsReportSaysWhatItsFileHolds)
   EXPECT_NEAR(jsonNumberAfter(json, "areaMm2"), file.area, 1e-6 * file.area);
 }
 
+TEST(EndToEnd, TheSameVoxelsOnSpacingsAPartIn10To8ApartGiveTheSameMesh)
+{
+  // One header written in double precision, the other as single precision rounds it (a NIfTI copy,
+  // or a direction matrix rounded, whose columns' lengths are the spacing): the meshes were a few
+  // triangles apart. An ellipsoid with a tunnel, on 0.9 x 0.9 x 2.5 mm voxels.
+  const fs::path folder = freshFolder("spacing-rounding");
+  auto write = [&](const fs::path& path, const std::array<double, 3>& spacing)
+  {
+    std::ofstream out(path, std::ios::binary);
+    out.precision(17);
+    out << "NRRD0004\ntype: uint8\ndimension: 3\nspace: left-posterior-superior\nsizes: 48 40 24\n"
+        << "space directions: (" << spacing[0] << ",0,0) (0," << spacing[1] << ",0) (0,0," << spacing[2] << ")\n"
+        << "endian: little\nencoding: raw\nspace origin: (0,0,0)\n\n";
+    for (int k = 0; k < 24; ++k)
+      for (int j = 0; j < 40; ++j)
+        for (int i = 0; i < 48; ++i)
+        {
+          const double x = (i - 23.3) * 0.9, y = (j - 19.6) * 0.9, z = (k - 11.4) * 2.5;
+          const double ring = std::hypot(x, y - 3.0) - 9.0;
+          const bool inside = (x / 18) * (x / 18) + (y / 14) * (y / 14) + (z / 22) * (z / 22) < 1.0 &&
+                              ring * ring + (z - 4.0) * (z - 4.0) >= 16.0;
+          out.put(static_cast<char>(inside ? 1 : 0));
+        }
+  };
+  write(folder / "double.nrrd", { 0.9, 0.9, 2.5 });
+  write(folder / "rounded.nrrd", { 0.9 * (1 + 3e-8), 0.9 * (1 - 2e-8), 2.5 * (1 + 3e-8) });
+  for (const char* name : { "double", "rounded" })
+  {
+    const RunResult r = runSliceMesh(quoted((folder / (std::string(name) + ".nrrd")).string()) + " " +
+                                     quoted((folder / (std::string(name) + ".vtp")).string()));
+    ASSERT_EQ(r.exitCode, cli::Success) << r.err;
+  }
+  EXPECT_EQ(fileText(folder / "double.vtp"), fileText(folder / "rounded.vtp"));
+  EXPECT_TRUE(validateMesh(readMesh((folder / "double.vtp").string()).mesh).valid());
+}
+
 } // namespace slicemesh::testing
