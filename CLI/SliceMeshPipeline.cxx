@@ -139,8 +139,11 @@ bool shears(const SliceFrame& frame)
 }
 
 /** The validation's and the quality's measures of a structure, taken again on its mesh in physical
- *  space where its frame shears: the report says what the file holds. */
-void measuredInPhysicalSpace(const TriangleMesh& physical, MeshValidation& validation, RunQuality& quality)
+ *  space where its frame shears: the report says what the file holds. The voxels' volume too: a
+ *  voxel of sheared axes holds |det| of the frame's unit axes times the product of its spacings
+ *  (0.93 of it for a 15 degree gantry tilt), and the mesh, exact there, was said to fall 7-9% short. */
+void measuredInPhysicalSpace(const TriangleMesh& physical, const SliceFrame& frame, MeshValidation& validation,
+                             RunQuality& quality)
 {
   const MeshValidation measured = validateMeshTopology(physical);
   validation.area = measured.area;
@@ -148,6 +151,11 @@ void measuredInPhysicalSpace(const TriangleMesh& physical, MeshValidation& valid
   validation.minAngleDegrees = measured.minAngleDegrees;
   validation.fractionAnglesBelow30 = measured.fractionAnglesBelow30;
   quality.shape = measureMeshQuality(physical);
+  const auto& d = frame.direction;
+  const double determinant = d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) -
+                             d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
+                             d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
+  quality.targetVolume *= std::abs(determinant);
 }
 
 RunQuality runQualityOf(const MeshedContours& m)
@@ -527,7 +535,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
       s.report.validation = surface.validation;
       s.report.quality = runQualityOf(s.meshing);
       if (shears(s.frame()))
-        measuredInPhysicalSpace(physical[n], s.report.validation, s.report.quality);
+        measuredInPhysicalSpace(physical[n], s.frame(), s.report.validation, s.report.quality);
       s.report.contourPoints = contourPoints(s.meshing.stack);
       if (!surface.fallback.empty())
         std::cerr << "SliceMesh: warning: " << who(s, noun) << "surface finishing: " << oneLine(surface.fallback)
