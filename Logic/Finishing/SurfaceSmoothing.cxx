@@ -197,8 +197,7 @@ inline __attribute__((always_inline)) Point3 neighbourMean(const std::vector<Poi
  *  side by side, each range's sums added in range order: the same sums on any number of threads.
  *  (On one thread, with the offset's normals, it kept the other cores waiting after the smoothing.) */
 void measureComponents(const TriangleMesh& mesh, const std::vector<std::size_t>& component, std::vector<double>& volume,
-                       std::vector<double>& area, unsigned int threads, const std::vector<char>& held = {},
-                       const std::vector<double>& weight = {})
+                       std::vector<double>& area, unsigned int threads, const std::vector<char>& held = {})
 {
   constexpr std::size_t trianglesPerRange = 16384;
   const std::size_t components = volume.size();
@@ -219,14 +218,12 @@ void measureComponents(const TriangleMesh& mesh, const std::vector<std::size_t>&
         const Point3& a = mesh.points[t[0]];
         const std::size_t k = component[static_cast<std::size_t>(t[0])];
         sums.volume[k] += (a.x * n.x + a.y * n.y + a.z * n.z) / 6.0;
-        double share = 0.0;
-        for (std::int32_t corner : t)
-        {
-          const std::size_t c = static_cast<std::size_t>(corner);
-          if (held.empty() || !held[c])
-            share += weight.empty() ? 1.0 : weight[c];
-        }
-        share /= 3.0;
+        double share = 1.0;
+        if (!held.empty())
+          share = static_cast<double>(3 - (held[static_cast<std::size_t>(t[0])] != 0) -
+                                      (held[static_cast<std::size_t>(t[1])] != 0) -
+                                      (held[static_cast<std::size_t>(t[2])] != 0)) /
+                  3.0;
         sums.area[k] += share * 0.5 * std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
       }
     });
@@ -447,93 +444,13 @@ bool relaxAroundNarrowTriangles(std::vector<Point3>& points, const TriangleMesh&
  *  normals by one common distance (a few Newton steps: the volume grows by the area per unit of
  *  offset). Taubin's filter keeps large shapes, but shrinks a structure a few edges across, whose
  *  whole shape lies above the pass band: a vessel two voxels wide would lose half its volume. */
-/** Rings of neighbours over which shrinkWeights averages the curvature: the remesh's and the
- *  staircase's own bumps averaged out, so that a sphere is offset nearly evenly (1, 3, 6 and 10 rings:
- *  the benchmark's spheres 2.4, 2.0, 1.7 and 1.4% farther from their surface than with one common
- *  distance, a vessel tree's trunk as close with each). */
-constexpr int curvatureRings = 10;
-
-/** The least share of a component's mean weight a vertex is given: flat and concave parts move too. */
-constexpr double leastWeight = 0.2;
-
-/** How far each vertex moves, relative to the others of its component, when a volume is given back:
- *  in proportion to the surface's mean curvature there (the umbrella vector along the normal, over
- *  the squared edge length, averaged over curvatureRings rings), at least leastWeight of the
- *  component's mean. The filter, and a tiling of contours that overlap only in part, shrink a surface where it
- *  bends the most: a vessel tree's thin branches lose their volume, its trunk keeps it; given back
- *  by one common distance, the trunk was inflated (walls 0.1-0.4 mm out) and the branches stayed
- *  short. A sphere's curvature is the same everywhere: one common distance, as before. */
-std::vector<double> shrinkWeights(const TriangleMesh& mesh, const std::vector<std::size_t>& component,
-                                  std::size_t components, unsigned int threads)
-{
-  const std::size_t n = mesh.points.size();
-  std::vector<std::int32_t> identity(n);
-  std::iota(identity.begin(), identity.end(), 0);
-  const VertexNeighbours around = neighboursOf(mesh, identity, threads);
-  const std::vector<Point3> normals = vertexNormals(mesh, threads);
-  std::vector<double> curvature(n, 0.0), smoothed(n, 0.0);
-  parallelForRanges(n, threads,
-                    [&](std::size_t first, std::size_t last)
-                    {
-                      for (std::size_t v = first; v < last; ++v)
-                      {
-                        const Point3& p = mesh.points[v];
-                        double mx = 0.0, my = 0.0, mz = 0.0, squared = 0.0;
-                        for (std::size_t k = around.first[v]; k < around.first[v + 1]; ++k)
-                        {
-                          const Point3& q = mesh.points[static_cast<std::size_t>(around.ids[k])];
-                          mx += q.x - p.x, my += q.y - p.y, mz += q.z - p.z;
-                          squared += (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y) + (q.z - p.z) * (q.z - p.z);
-                        }
-                        if (squared > 0.0)
-                          curvature[v] = -(mx * normals[v].x + my * normals[v].y + mz * normals[v].z) / squared;
-                      }
-                    });
-  for (int ring = 0; ring < curvatureRings; ++ring)
-  {
-    parallelForRanges(n, threads,
-                      [&](std::size_t first, std::size_t last)
-                      {
-                        for (std::size_t v = first; v < last; ++v)
-                        {
-                          double sum = curvature[v];
-                          for (std::size_t k = around.first[v]; k < around.first[v + 1]; ++k)
-                            sum += curvature[static_cast<std::size_t>(around.ids[k])];
-                          smoothed[v] = sum / static_cast<double>(1 + around.first[v + 1] - around.first[v]);
-                        }
-                      });
-    curvature.swap(smoothed);
-  }
-  smoothed.swap(curvature);
-  std::vector<double> mean(components, 0.0), count(components, 0.0);
-  for (std::size_t v = 0; v < n; ++v)
-  {
-    mean[component[v]] += std::abs(smoothed[v]);
-    count[component[v]] += 1.0;
-  }
-  std::vector<double> weight(n, 1.0);
-  for (std::size_t v = 0; v < n; ++v)
-  {
-    const double m = count[component[v]] > 0.0 ? mean[component[v]] / count[component[v]] : 0.0;
-    if (m > 0.0)
-      weight[v] = std::max(smoothed[v], leastWeight * m) / m;
-  }
-  return weight;
-}
-
-/** Gives every component back the signed volume it had (`target`) by moving its vertices along their
- *  normals, each by the component's common distance times its shrinkWeights (a few Newton steps:
- *  the volume grows by the weighted area per unit of offset). Taubin's filter keeps large shapes, but
- *  shrinks a structure a few edges across, whose whole shape lies above the pass band: a vessel two
- *  voxels wide would lose half its volume. */
 void restoreVolumes(TriangleMesh& mesh, const std::vector<std::size_t>& component, const std::vector<double>& target,
                     unsigned int threads, const std::vector<char>& held = {}, double maxOffset = 0.0)
 {
-  const std::vector<double> weight = shrinkWeights(mesh, component, target.size(), threads);
   std::vector<double> volume(target.size()), area(target.size()), offset(target.size()), total(target.size(), 0.0);
   for (int step = 0; step < 4; ++step)
   {
-    measureComponents(mesh, component, volume, area, threads, held, weight);
+    measureComponents(mesh, component, volume, area, threads, held);
     bool done = true;
     for (std::size_t k = 0; k < target.size(); ++k)
     {
@@ -555,7 +472,7 @@ void restoreVolumes(TriangleMesh& mesh, const std::vector<std::size_t>& componen
                         {
                           if (!held.empty() && held[v])
                             continue;
-                          const double d = offset[component[v]] * weight[v];
+                          const double d = offset[component[v]];
                           mesh.points[v].x += d * normals[v].x;
                           mesh.points[v].y += d * normals[v].y;
                           mesh.points[v].z += d * normals[v].z;
