@@ -339,12 +339,13 @@ TEST(FinishingProperty, ARemeshThatCrossesItselfIsRemeshedAgainAroundTheCrossing
 
 TEST(FinishingProperty, AFewFoldsOfTheRemeshAreUndoneWhereTheyAre)
 {
-  // Voxels that touch only along an edge (seed 4001) and noise beside blobs (seed 3010): the remesh
+  // Voxels that touch only along an edge (seed 4001) and noise beside blobs (seed 3165): the remesh
   // folds over itself in one or two places that smoothing did not cause. Those folds are flipped or
   // collapsed away where they are: the piece is not remeshed again around them (no tiled triangle
-  // kept; before, 400 and 33 were).
+  // kept; before, 400 were for seed 4001). (Seed 3010 folded so until its random spacing was
+  // rounded to six digits for the meshing; where a remesh folds depends on such details.)
   for (const auto& [seed, kind] :
-       { std::pair{ 4001u, RandomMaskKind::Touching }, std::pair{ 3010u, RandomMaskKind::BlobsAndNoise } })
+       { std::pair{ 4001u, RandomMaskKind::Touching }, std::pair{ 3165u, RandomMaskKind::BlobsAndNoise } })
   {
     SCOPED_TRACE("seed " + std::to_string(seed));
     const FinishedSurface finished = expectRemeshedToItsTiledTopology(seed, kind);
