@@ -199,7 +199,26 @@ std::vector<Structure> labelStructures(std::vector<LabelSource> sources, const s
         chosen.push_back(source);
     }
     for (const std::string& name : foundNames)
+    {
       wantedNames.erase(name);
+      // Said: asked for one structure by its name, the user may not know that two share it.
+      std::vector<int> sharing;
+      std::string asNamed;
+      for (const LabelSource& source : chosen)
+        if (lowercase(source.name) == name)
+        {
+          sharing.push_back(source.number);
+          asNamed = source.name;
+        }
+      if (sharing.size() > 1)
+      {
+        std::cout << "SliceMesh: " << sharing.size() << (segments ? " segments" : " labels") << " are named '"
+                  << asNamed << "', and each is meshed:";
+        for (int number : sharing)
+          std::cout << " " << number;
+        std::cout << std::endl;
+      }
+    }
     if (!wanted.empty() || !wantedNames.empty())
     {
       std::ostringstream message;

@@ -990,4 +990,25 @@ TEST(EndToEnd, TheSameVoxelsOnSpacingsAPartIn10To8ApartGiveTheSameMesh)
   EXPECT_TRUE(validateMesh(readMesh((folder / "double.vtp").string()).mesh).valid());
 }
 
+TEST(EndToEnd, ANameTwoLabelsShareMeshesBothAndSaysSo)
+{
+  // A colour table that gives two labels one name: asked for by the name, both are meshed, and the
+  // run says so (it did not: the user asking for "Heart" got two structures without a word).
+  const fs::path folder = freshFolder("shared-name");
+  const fs::path input = folder / "two.mha", table = folder / "names.txt";
+  writeMetaImage(input, { 12, 10, 8 }, { 1.0, 1.0, 1.0 },
+                 [](int i, int j, int k) -> unsigned char
+                 {
+                   if (j < 2 || j > 7 || k < 2 || k > 5)
+                     return 0;
+                   return i >= 2 && i < 5 ? 1 : i >= 7 && i < 10 ? 2 : 0;
+                 });
+  std::ofstream(table) << "1 Heart\n2 Heart\n";
+  const RunResult r = runSliceMesh("--labels heart --colorTable " + quoted(table.string()) + " " + quoted(input.string()) +
+                                   " " + quoted((folder / "heart.vtp").string()));
+  ASSERT_EQ(r.exitCode, cli::Success) << r.err;
+  EXPECT_NE(r.out.find("2 labels are named 'Heart', and each is meshed: 1 2"), std::string::npos) << r.out;
+  EXPECT_EQ(validateMesh(readMesh((folder / "heart.vtp").string()).mesh).components, 2u);
+}
+
 } // namespace slicemesh::testing
