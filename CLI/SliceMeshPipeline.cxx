@@ -119,9 +119,18 @@ ColorTable checkBeforeWork(const PipelineSettings& settings, MadeFolders& made)
     throw PipelineFailure(WriteFailed, "cannot render snapshot '" + settings.snapshotFile + "': " + reason);
   // Read in every run, not only where it names the labels: a wrong path is the user's mistake
   // whichever run it is given to.
-  if (!settings.multiLabel.colorTable.empty())
-    return guarded(BadArguments, [&] { return ColorTable::read(settings.multiLabel.colorTable); });
-  return {};
+  if (settings.multiLabel.colorTable.empty())
+    return {};
+  ColorTable table = guarded(BadArguments, [&] { return ColorTable::read(settings.multiLabel.colorTable); });
+  // Said: which of a repeated value's names a mesh gets is the table's last line, maybe not the meant one.
+  if (!table.repeatedLabels().empty())
+  {
+    const int first = table.repeatedLabels().front();
+    std::cout << "SliceMesh: '" << settings.multiLabel.colorTable << "' lists " << table.repeatedLabels().size()
+              << " value(s) more than once; each takes its last line (value " << first << ": '"
+              << table.entry(first).name << "')" << std::endl;
+  }
+  return table;
 }
 
 /** Whether the frame's axes are not at right angles (a sheared grid, which NRRD and MetaImage can

@@ -64,6 +64,8 @@ ColorTable ColorTable::read(const std::string& path)
       else
         entry.rgba[3] = 255;
     }
+    if (table.Entries.count(entry.label))
+      table.Repeated.push_back(entry.label);
     table.Entries[entry.label] = entry;
   }
   if (anyAlpha && everyAlphaZero)

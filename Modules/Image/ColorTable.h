@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace slicemesh
 {
@@ -39,8 +40,13 @@ public:
   /** A deterministic, well-spread colour for a label (golden-ratio hue steps). */
   static std::array<unsigned char, 4> generatedColor(int label);
 
+  /** The labels the file lists more than once, in the order their repeats come: the last line of
+   *  each is the entry. */
+  const std::vector<int>& repeatedLabels() const { return this->Repeated; }
+
 private:
   std::map<int, LabelColor> Entries;
+  std::vector<int> Repeated;
 };
 
 /** The longest safeFileName: room for the number before it and the extension after it. */

@@ -993,7 +993,8 @@ TEST(EndToEnd, TheSameVoxelsOnSpacingsAPartIn10To8ApartGiveTheSameMesh)
 TEST(EndToEnd, ANameTwoLabelsShareMeshesBothAndSaysSo)
 {
   // A colour table that gives two labels one name: asked for by the name, both are meshed, and the
-  // run says so (it did not: the user asking for "Heart" got two structures without a word).
+  // run says so (it did not: the user asking for "Heart" got two structures without a word). And
+  // one that lists a value twice.
   const fs::path folder = freshFolder("shared-name");
   const fs::path input = folder / "two.mha", table = folder / "names.txt";
   writeMetaImage(input, { 12, 10, 8 }, { 1.0, 1.0, 1.0 },
@@ -1009,6 +1010,18 @@ TEST(EndToEnd, ANameTwoLabelsShareMeshesBothAndSaysSo)
   ASSERT_EQ(r.exitCode, cli::Success) << r.err;
   EXPECT_NE(r.out.find("2 labels are named 'Heart', and each is meshed: 1 2"), std::string::npos) << r.out;
   EXPECT_EQ(validateMesh(readMesh((folder / "heart.vtp").string()).mesh).components, 2u);
+
+  // A table that lists a value twice: the last line names it, and the run says so.
+  const fs::path repeated = folder / "repeated.txt";
+  std::ofstream(repeated) << "1 Heart\n2 Lung\n2 LungDup\n";
+  const RunResult twice = runSliceMesh("--labels 2 --colorTable " + quoted(repeated.string()) + " --outputDirectory " +
+                                       quoted((folder / "lung").string()) + " " + quoted(input.string()) + " " +
+                                       quoted((folder / "lung.vtp").string()));
+  ASSERT_EQ(twice.exitCode, cli::Success) << twice.err;
+  EXPECT_NE(twice.out.find("lists 1 value(s) more than once; each takes its last line (value 2: 'LungDup')"),
+            std::string::npos)
+    << twice.out;
+  EXPECT_TRUE(fs::exists(folder / "lung" / "002_LungDup.vtp"));
 }
 
 } // namespace slicemesh::testing
