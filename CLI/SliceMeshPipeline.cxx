@@ -1,5 +1,7 @@
 #include "SliceMeshPipeline.h"
 
+#include "Core/Determinant3.h"
+
 #include "DistinctFiles.h"
 #include "LengthLimits.h"
 #include "MadeFolders.h"
@@ -160,11 +162,7 @@ void measuredInPhysicalSpace(const TriangleMesh& physical, const SliceFrame& fra
   validation.minAngleDegrees = measured.minAngleDegrees;
   validation.fractionAnglesBelow30 = measured.fractionAnglesBelow30;
   quality.shape = measureMeshQuality(physical);
-  const auto& d = frame.direction;
-  const double determinant = d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) -
-                             d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
-                             d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
-  quality.targetVolume *= std::abs(determinant);
+  quality.targetVolume *= std::abs(determinant3(frame.direction));
 }
 
 RunQuality runQualityOf(const MeshedContours& m)

@@ -3,6 +3,7 @@
 
 #include "Nifti1Header.h"
 
+#include "Core/Determinant3.h"
 #include "Core/MeasureText.h"
 
 #include <algorithm>
@@ -76,12 +77,6 @@ std::array<double, 3> apply(const Affine3x4& m, const std::array<double, 3>& ijk
   for (int row = 0; row < 3; ++row)
     p[row] = m[row][0] * ijk[0] + m[row][1] * ijk[1] + m[row][2] * ijk[2] + m[row][3];
   return p;
-}
-
-double determinant3(const Affine3x4& m)
-{
-  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
 }
 
 /** Where the two maps are mirror images of each other (one turns the voxel axes right-handed, the

@@ -2,6 +2,8 @@
 // slicemesh::Error with a one-line message that names the input.
 #include "VolumeReader.h"
 
+#include "Core/Determinant3.h"
+
 #include "DicomImagePlugin.h"
 #include "ItkErrorText.h"
 #include "MemoryBudget.h"
@@ -108,10 +110,7 @@ void checkGeometry(const std::string& path, const double spacing[3], const doubl
     for (int column = 0; column < 3; ++column)
       if (!std::isfinite(direction[row][column]))
         throw Error(path + ": the direction matrix has a non-finite entry");
-  const double (*d)[3] = direction;
-  const double determinant = d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) -
-                             d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
-                             d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
+  const double determinant = determinant3(direction);
   if (std::abs(determinant) < 1e-6)
   {
     std::ostringstream message;

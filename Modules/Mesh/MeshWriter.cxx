@@ -1,6 +1,7 @@
 // Stack frame -> physical space, and VTK writers chosen by file extension, written atomically.
 #include "MeshWriter.h"
 
+#include "Core/Determinant3.h"
 #include "Core/Lowercase.h"
 #include "DeflateCompressor.h"
 
@@ -45,12 +46,6 @@ namespace
 
 /** Why a write that ran out of room failed, where the writer gives no reason of its own. */
 const char* const WriteFailed = "writing the file failed (disk full?)";
-
-double determinant(const std::array<std::array<double, 3>, 3>& m)
-{
-  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-}
 
 const char* spaceName(CoordinateSystem system)
 {
@@ -394,7 +389,7 @@ TriangleMesh mapToPhysicalSpace(const TriangleMesh& stackMesh, const SliceFrame&
     physical.points.push_back(p);
   }
   physical.triangles = stackMesh.triangles;
-  if (determinant(d) < 0.0)
+  if (determinant3(d) < 0.0)
   {
     // A mirror turns outward normals inward; swapping two corners turns them back.
     for (Triangle& t : physical.triangles)
