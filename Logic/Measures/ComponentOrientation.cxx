@@ -5,12 +5,8 @@
 #include "Core/ParallelFor.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/MeshValidation.h"
-#include "Measures/TriangleMeshTree.h"
+#include "Measures/PointsInside.h"
 
-#include <CGAL/Polygon_mesh_processing/internal/Side_of_triangle_mesh/Point_inside_vertical_ray_cast.h>
-
-#include <algorithm>
-#include <memory>
 #include <utility>
 
 namespace slicemesh
@@ -18,31 +14,13 @@ namespace slicemesh
 namespace
 {
 
-using Kernel = CgalKernel;
-/** CGAL's inside/outside test (what its Side_of_triangle_mesh runs), over a tree of the component's
- *  own triangles (TriangleMeshTree). */
-using RayParity = CGAL::internal::Point_inside_vertical_ray_cast<Kernel, TriangleMeshTree>;
+/** Components of this many triangles are asked one at a time, each on every thread. */
+constexpr std::size_t largeComponent = 1 << 16;
 
-/** A component held for inside/outside queries (CGAL's ray parity over an AABB tree, which shoots
- *  again when a ray grazes an edge; asked only of points inside the component's box). The tree is
- *  built here, not at the first query (the queries of several threads would wait for it), and on
- *  the component itself: making a copy of it in CGAL's mesh was a fifth of the time. The component
- *  must outlive it. */
-struct Enclosure
+const Point3& firstVertex(const TriangleMesh& component)
 {
-  TriangleMeshTree tree;
-
-  explicit Enclosure(const TriangleMesh& mesh)
-  {
-    insertTriangles(tree, mesh);
-    tree.build();
-  }
-
-  bool encloses(const Point3& p) const
-  {
-    return RayParity()(Kernel::Point_3(p.x, p.y, p.z), tree) == CGAL::ON_BOUNDED_SIDE;
-  }
-};
+  return component.points[static_cast<std::size_t>(component.triangles.front()[0])];
+}
 
 } // namespace
 
@@ -57,8 +35,8 @@ std::size_t misorientedComponents(const std::vector<const TriangleMesh*>& compon
   for (const TriangleMesh* c : components)
     boxes.push_back(boxOfTriangles(*c));
   // Surfaces that do not cross nest only if their boxes do: most components nest in none, and only
-  // a component whose box holds another's needs a tree. (A component without triangles has an
-  // empty box, which meets none.)
+  // a component whose box holds another's is asked. (A component without triangles has an empty
+  // box, which meets none.)
   std::vector<std::vector<std::size_t>> enclosing(n); // per component, those whose box holds its own
   std::vector<char> needed(n, 0);
   for (const auto& [i, j] : meetingBoxes(boxes))
@@ -68,28 +46,37 @@ std::size_t misorientedComponents(const std::vector<const TriangleMesh*>& compon
         enclosing[a].push_back(b);
         needed[b] = 1;
       }
-  std::vector<std::unique_ptr<Enclosure>> enclosures(n);
-  parallelFor(n, threads,
-              [&](std::size_t b)
-              {
-                if (needed[b])
-                  enclosures[b] = std::make_unique<Enclosure>(*components[b]);
-              });
-  std::vector<char> misoriented(n, 0);
-  parallelFor(n, threads,
-              [&](std::size_t a)
-              {
-                const TriangleMesh& component = *components[a];
-                if (component.triangles.empty())
-                  return;
-                const Point3& probe = component.points[static_cast<std::size_t>(component.triangles.front()[0])];
-                std::size_t depth = 0;
-                for (std::size_t b : enclosing[a])
-                  depth += enclosures[b]->encloses(probe);
-                const bool outward = depth % 2 == 0;
-                misoriented[a] = outward ? !(volumes[a] > 0.0) : !(volumes[a] < 0.0);
-              });
-  return static_cast<std::size_t>(std::count(misoriented.begin(), misoriented.end(), 1));
+  // Each component that holds another's box is asked, in one pass over its triangles, which of
+  // those components' first vertices it encloses: the large ones one after another on every
+  // thread, the small ones side by side.
+  std::vector<std::vector<std::size_t>> held(n); // per component, those whose box its box holds
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b : enclosing[a])
+      held[b].push_back(a);
+  std::vector<std::size_t> large, small;
+  for (std::size_t b = 0; b < n; ++b)
+    if (needed[b])
+      (components[b]->triangles.size() >= largeComponent ? large : small).push_back(b);
+  std::vector<std::vector<char>> inside(n);
+  auto ask = [&](std::size_t b, unsigned int askThreads)
+  {
+    std::vector<Point3> probes;
+    for (std::size_t a : held[b])
+      probes.push_back(firstVertex(*components[a]));
+    inside[b] = pointsInside(*components[b], probes, askThreads);
+  };
+  for (std::size_t b : large)
+    ask(b, threads);
+  parallelFor(small.size(), threads, [&](std::size_t k) { ask(small[k], 1); });
+  std::vector<std::size_t> depth(n, 0);
+  for (std::size_t b = 0; b < n; ++b)
+    for (std::size_t k = 0; k < held[b].size(); ++k)
+      depth[held[b][k]] += static_cast<std::size_t>(inside[b][k]);
+  std::size_t misoriented = 0;
+  for (std::size_t a = 0; a < n; ++a)
+    if (!components[a]->triangles.empty())
+      misoriented += depth[a] % 2 == 0 ? !(volumes[a] > 0.0) : !(volumes[a] < 0.0);
+  return misoriented;
 }
 
 std::size_t misorientedComponents(const TriangleMesh& mesh)
