@@ -17,7 +17,7 @@ NearestSegment::NearestSegment(std::vector<Segment> segments, double cellSize)
   {
     const auto& [a, b] = m_Segments[s];
     const SpatialHash::CellRange cells =
-      m_Cells.cellsOf({ std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y) });
+      m_Cells.cellsOf(Box2{ std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y) });
     m_Cells.insert(cells, s);
     xmin = std::min(xmin, cells.x0);
     xmax = std::max(xmax, cells.x1);

@@ -1,9 +1,11 @@
-// A uniform grid of square cells over the plane, each cell holding indices into the caller's items:
-// the one spatial hash of the stages (nearest segments, candidate pairs of edges, points near a point).
-// Cells are hashed, so the grid has no bounds and costs nothing where it is empty.
+// A uniform grid of square cells over the plane, or of cubes over space, each cell holding indices
+// into the caller's items: the one spatial hash of the stages (nearest segments, candidate pairs of
+// edges, points near a point, triangles near a triangle). Cells are hashed, so the grid has no bounds
+// and costs nothing where it is empty. A planar grid is the grid of space's cells with z = 0.
 #ifndef SpatialHash_h
 #define SpatialHash_h
 
+#include "Core/BoundingBox.h"
 #include "Core/PlanarGeometry.h"
 
 #include <algorithm>
@@ -18,10 +20,10 @@ namespace slicemesh
 class SpatialHash
 {
 public:
-  /** The cells (x, y) with x0 <= x <= x1 and y0 <= y <= y1. */
+  /** The cells (x, y, z) with x0 <= x <= x1, y0 <= y <= y1 and z0 <= z <= z1 (z = 0 in the plane). */
   struct CellRange
   {
-    long long x0 = 0, x1 = -1, y0 = 0, y1 = -1;
+    long long x0 = 0, x1 = -1, y0 = 0, y1 = -1, z0 = 0, z1 = 0;
   };
 
   /** cellSize: the side of a cell (mm), positive; cell k along an axis is [k cellSize, (k + 1) cellSize). */
@@ -36,6 +38,12 @@ public:
   CellRange cellsOf(const Box2& box) const
   {
     return { cellOf(box.xmin), cellOf(box.xmax), cellOf(box.ymin), cellOf(box.ymax) };
+  }
+  /** The cells of space a box touches: for items whose plan says little (a surface's walls). */
+  CellRange cellsOf(const BoundingBox& box) const
+  {
+    return { cellOf(box.low[0]), cellOf(box.high[0]), cellOf(box.low[1]),
+             cellOf(box.high[1]), cellOf(box.low[2]), cellOf(box.high[2]) };
   }
   /** The cells that can hold a point within radius of p: ceil(radius / cellSize) cells on each side of p's. */
   CellRange cellsWithin(const Point2& p, double radius) const
@@ -75,23 +83,24 @@ public:
   };
 
   /** Adds index to the cell holding p. */
-  void insert(const Point2& p, int index) { append({ cellOf(p.x), cellOf(p.y) }, index); }
-  /** Adds index to every cell of the range (x outer, y inner). */
+  void insert(const Point2& p, int index) { append({ cellOf(p.x), cellOf(p.y), 0 }, index); }
+  /** Adds index to every cell of the range (x outer, z inner). */
   void insert(const CellRange& cells, int index)
   {
     for (long long x = cells.x0; x <= cells.x1; ++x)
       for (long long y = cells.y0; y <= cells.y1; ++y)
-        append({ x, y }, index);
+        for (long long z = cells.z0; z <= cells.z1; ++z)
+          append({ x, y, z }, index);
   }
 
-  /** The indices in cell (x, y), in the order they were inserted; valid until the next insert. */
-  Cell cell(long long x, long long y) const
+  /** The indices in cell (x, y, z), in the order they were inserted; valid until the next insert. */
+  Cell cell(long long x, long long y, long long z = 0) const
   {
-    const std::int32_t list = find({ x, y });
+    const std::int32_t list = find({ x, y, z });
     return { this, list < 0 ? -1 : m_Ends[static_cast<std::size_t>(list)].first };
   }
 
-  /** Calls visit(index) for the indices of the range's cells, cell by cell (x outer, y inner), each
+  /** Calls visit(index) for the indices of the range's cells, cell by cell (x outer, z inner), each
    *  cell in insertion order: an index held by several of the cells comes once for each. */
   template <typename Visit>
   void forEachIn(const CellRange& cells, Visit&& visit) const
@@ -109,17 +118,18 @@ public:
   {
     for (long long x = cells.x0; x <= cells.x1; ++x)
       for (long long y = cells.y0; y <= cells.y1; ++y)
-        for (int index : cell(x, y))
-          if (test(index))
-            return true;
+        for (long long z = cells.z0; z <= cells.z1; ++z)
+          for (int index : cell(x, y, z))
+            if (test(index))
+              return true;
     return false;
   }
 
 private:
   struct CellKey
   {
-    long long x, y;
-    bool operator==(const CellKey& o) const { return x == o.x && y == o.y; }
+    long long x, y, z;
+    bool operator==(const CellKey& o) const { return x == o.x && y == o.y && z == o.z; }
   };
 
   /** The cells are found by open addressing (linear probing in a power-of-two table of list
@@ -129,7 +139,8 @@ private:
   static std::size_t hashOf(const CellKey& k)
   {
     std::uint64_t h = static_cast<std::uint64_t>(k.x) * 0x9E3779B97F4A7C15ULL ^
-                      static_cast<std::uint64_t>(k.y) * 0xC2B2AE3D27D4EB4FULL;
+                      static_cast<std::uint64_t>(k.y) * 0xC2B2AE3D27D4EB4FULL ^
+                      static_cast<std::uint64_t>(k.z) * 0x165667B19E3779F9ULL;
     h ^= h >> 29;
     return static_cast<std::size_t>(h);
   }

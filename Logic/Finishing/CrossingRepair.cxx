@@ -609,15 +609,12 @@ private:
     m_Crossings.insert(outcome.added.begin(), outcome.added.end());
   }
 
-  /** A box's extent in x and y: the cells are those of the plane. */
-  static Box2 planeBox(const BoundingBox& box) { return { box.low[0], box.low[1], box.high[0], box.high[1] }; }
-
   /** Files triangle t under the cells of its box as it is now. A triangle's earlier places stay
    *  filed (an undo may give it its earlier corners back): a query checks the box it has. */
   void index(std::size_t t)
   {
     const BoundingBox box = boxOf(m_Mesh.points, m_Mesh.triangles[t]);
-    m_Cells.insert(m_Cells.cellsOf(planeBox(box)), static_cast<int>(t));
+    m_Cells.insert(m_Cells.cellsOf(box), static_cast<int>(t));
   }
 
   /** The triangles of the scope (and those operations rewrote) filed under the cells of this box,
@@ -625,7 +622,7 @@ private:
   std::vector<std::size_t> trianglesNear(const BoundingBox& box) const
   {
     std::vector<std::size_t> near;
-    m_Cells.forEachIn(m_Cells.cellsOf(planeBox(box)),
+    m_Cells.forEachIn(m_Cells.cellsOf(box),
                       [&](int t) { near.push_back(static_cast<std::size_t>(t)); });
     std::sort(near.begin(), near.end());
     near.erase(std::unique(near.begin(), near.end()), near.end());
@@ -641,10 +638,11 @@ private:
   TrianglePairs m_Crossings;
   std::unordered_map<std::int32_t, std::vector<std::size_t>> m_Fan;
   std::vector<std::size_t> m_Scope;
-  /** The scope's triangles by where they are (index), in cells of two target edges, so that an
+  /** The scope's triangles by where they are (index), in cubes of two target edges, so that an
    *  operation is judged against the triangles near it only, not against the whole scope: a scope of
    *  every triangle of a piece (widenNarrowTrianglesLocally on a whole piece) made the judging
-   *  quadratic. */
+   *  quadratic, and so did columns of the plane on a tall wall (a body's skin: the triangles of
+   *  every slice above and below). */
   SpatialHash m_Cells;
   std::size_t m_TwoStepBudget = twoStepJudgements;
 };

@@ -20,7 +20,7 @@ TEST(SpatialHash, CellsAreHalfOpenOnEitherSideOfZero)
   EXPECT_EQ(hash.cellOf(-0.01), -1);
   EXPECT_EQ(hash.cellOf(-0.5), -1);
   EXPECT_EQ(hash.cellOf(-0.51), -2);
-  const SpatialHash::CellRange cells = hash.cellsOf({ -0.7, 0.2, 1.1, 0.3 });
+  const SpatialHash::CellRange cells = hash.cellsOf(Box2{ -0.7, 0.2, 1.1, 0.3 });
   EXPECT_EQ(cells.x0, -2);
   EXPECT_EQ(cells.x1, 2);
   EXPECT_EQ(cells.y0, 0);
