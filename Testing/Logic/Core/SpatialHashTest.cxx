@@ -91,6 +91,32 @@ TEST(SpatialHash, FindsEveryPointWithinARadius)
     }
 }
 
+TEST(SpatialHash, BoxesOfSpaceAreFiledByHeightToo)
+{
+  // A tall wall's triangles, one above the other at the same place in plan: a box finds only those
+  // whose cells of space it shares, where columns of the plane would give it every one.
+  SpatialHash hash(1.0);
+  auto boxAt = [](double z)
+  {
+    BoundingBox box;
+    box.add(Point3{ 0.2, 0.2, z });
+    box.add(Point3{ 0.8, 0.3, z + 0.5 });
+    return box;
+  };
+  for (int k = 0; k < 100; ++k)
+    hash.insert(hash.cellsOf(boxAt(k)), k);
+  const SpatialHash::CellRange cells = hash.cellsOf(boxAt(40.7));
+  EXPECT_EQ(cells.z0, 40);
+  EXPECT_EQ(cells.z1, 41);
+  std::vector<int> found;
+  hash.forEachIn(cells, [&](int k) { found.push_back(k); });
+  EXPECT_EQ(found, (std::vector<int>{ 40, 41 }));
+  // A planar range is the cells of height 0: the same box's plan finds the one at z = 0 only.
+  std::vector<int> inPlane;
+  hash.forEachIn(hash.cellsOf(Box2{ 0.2, 0.2, 0.8, 0.3 }), [&](int k) { inPlane.push_back(k); });
+  EXPECT_EQ(inPlane, (std::vector<int>{ 0 }));
+}
+
 TEST(NearestSegment, AgreesWithBruteForceNearAndFarFromTheSegments)
 {
   std::mt19937 random(5);
