@@ -141,5 +141,71 @@ TEST(MeshCrossings, EveryPairOfEveryTwoMeshesOnAnyNumberOfThreads)
     EXPECT_EQ(crossingTriangles(meshes, threads), everyPair) << threads << " threads";
 }
 
+TEST(MeshCrossings, ALargePieceAmongSpecksAndABroadNeighbour)
+{
+  // A ball of radius 30 mm of over 65,536 triangles (searched on every thread), 60 specks of
+  // radius 1-2 mm around it (crossing its surface, inside it, outside it) and a ball whose box spans
+  // many of the specks' cells (tested by every triangle, not filed): the pairs are every pair of
+  // triangles of different meshes that meet, each mesh's triangles filtered by the other's box alone.
+  auto ballAt = [](double cx, double cy, double cz, double r, int points, double dz)
+  {
+    ContourStack stack;
+    stack.sliceSpacing = dz;
+    for (double z = -r + dz / 2.0; z < r; z += dz)
+      stack.slices.push_back({ cz + z, { circle(cx, cy, std::sqrt(r * r - z * z), points) } });
+    return reconstructSurface(stack);
+  };
+  std::vector<TriangleMesh> pieces{ ballAt(0.0, 0.0, 0.0, 30.0, 360, 0.5), ballAt(0.0, 0.0, 33.0, 8.0, 48, 1.0) };
+  ASSERT_GE(pieces[0].triangles.size(), 65536u);
+  for (int k = 0; k < 60; ++k)
+  {
+    const double theta = 0.37 * k, phi = 0.1 + 0.047 * k, r = 26.0 + 0.15 * k; // 26 to 35 mm out
+    pieces.push_back(ballAt(r * std::sin(phi) * std::cos(theta), r * std::sin(phi) * std::sin(theta), r * std::cos(phi),
+                            1.0 + 0.015 * k, 16, 0.5));
+  }
+  std::vector<const TriangleMesh*> meshes;
+  for (const TriangleMesh& p : pieces)
+    meshes.push_back(&p);
+  auto triangleOf = [&](std::size_t m, std::size_t t)
+  {
+    auto point = [&](int corner)
+    {
+      const Point3& p = pieces[m].points[static_cast<std::size_t>(pieces[m].triangles[t][corner])];
+      return CGAL::Epick::Point_3(p.x, p.y, p.z);
+    };
+    return CGAL::Epick::Triangle_3(point(0), point(1), point(2));
+  };
+  std::vector<CGAL::Bbox_3> boxes(pieces.size());
+  for (std::size_t m = 0; m < pieces.size(); ++m)
+    for (std::size_t t = 0; t < pieces[m].triangles.size(); ++t)
+      boxes[m] += triangleOf(m, t).bbox();
+  auto boxOf = [&](std::size_t m) { return boxes[m]; };
+  std::vector<TrianglePair> expected;
+  for (std::size_t a = 0; a < pieces.size(); ++a)
+    for (std::size_t b = a + 1; b < pieces.size(); ++b)
+    {
+      if (!CGAL::do_overlap(boxOf(a), boxOf(b)))
+        continue;
+      std::vector<std::size_t> inB, inA; // a's triangles in b's box, b's in a's
+      for (std::size_t s = 0; s < pieces[a].triangles.size(); ++s)
+        if (CGAL::do_overlap(triangleOf(a, s).bbox(), boxOf(b)))
+          inB.push_back(s);
+      for (std::size_t t = 0; t < pieces[b].triangles.size(); ++t)
+        if (CGAL::do_overlap(triangleOf(b, t).bbox(), boxOf(a)))
+          inA.push_back(t);
+      for (std::size_t s : inB)
+        for (std::size_t t : inA)
+          if (CGAL::do_intersect(triangleOf(a, s), triangleOf(b, t)))
+            expected.push_back({ { a, s }, { b, t } });
+    }
+  std::sort(expected.begin(), expected.end());
+  const auto crossed = meshPairs(expected);
+  // Most specks near the large ball's surface cross it; the broad ball crosses it too.
+  EXPECT_TRUE(std::binary_search(crossed.begin(), crossed.end(), std::pair<std::size_t, std::size_t>(0, 1)));
+  EXPECT_GE(crossed.size(), 20u);
+  for (unsigned int threads : { 1u, 2u })
+    EXPECT_EQ(crossingTriangles(meshes, threads), expected) << threads << " threads";
+}
+
 } // namespace
 } // namespace slicemesh::testing
