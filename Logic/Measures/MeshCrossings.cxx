@@ -3,14 +3,13 @@
 #include "Core/BoundingBox.h"
 #include "Core/MeetingBoxes.h"
 #include "Core/ParallelFor.h"
-#include "Core/SpatialHash.h"
+#include "Measures/TrianglesMeetingBoxes.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
 #include <array>
-#include <cstdint>
 
 namespace slicemesh
 {
@@ -40,85 +39,6 @@ Kernel::Triangle_3 triangle(const TriangleMesh& mesh, std::size_t t)
 /** Meshes of this many triangles are searched one at a time, each on every thread. */
 constexpr std::size_t largeMesh = 1 << 16;
 
-/** A box over more cells than this is tested by every triangle instead of being filed. */
-constexpr std::size_t mostCellsFiled = 64;
-
-/** For each of `boxes`, the triangles of `mesh` whose boxes share a point with it, in increasing
- *  order. The boxes are filed under the cells of space they cover (cells as wide as all but the
- *  widest tenth of them, or two triangles); one pass over the triangles, in ranges on up to
- *  `threads` threads, looks up the cells each triangle's box covers. Linear in the triangles: a
- *  box intersection of a piece of a million triangles with the boxes of the specks around it
- *  sorted the million each time, on one thread. */
-std::vector<std::vector<std::size_t>> trianglesMeeting(const TriangleMesh& mesh, const std::vector<BoundingBox>& boxes,
-                                                       unsigned int threads)
-{
-  auto widthOf = [](const BoundingBox& box)
-  { return std::max({ box.high[0] - box.low[0], box.high[1] - box.low[1], box.high[2] - box.low[2] }); };
-  std::vector<double> widths;
-  for (const BoundingBox& box : boxes)
-    widths.push_back(widthOf(box));
-  const std::size_t tenth = widths.size() - 1 - (widths.size() - 1) / 10;
-  std::nth_element(widths.begin(), widths.begin() + static_cast<std::ptrdiff_t>(tenth), widths.end());
-  double triangleWidth = 0.0; // of a sample of the triangles, spread over the mesh
-  const std::size_t stride = std::max<std::size_t>(1, mesh.triangles.size() / 1024);
-  std::size_t sampled = 0;
-  for (std::size_t t = 0; t < mesh.triangles.size(); t += stride, ++sampled)
-    triangleWidth += widthOf(boxOfTriangle(mesh, t));
-  triangleWidth /= static_cast<double>(std::max<std::size_t>(1, sampled));
-  const double cellSize = std::max({ widths[tenth], 2.0 * triangleWidth, 1e-9 });
-  SpatialHash filed(cellSize);
-  std::vector<std::uint32_t> unfiled; // boxes over more than mostCellsFiled cells
-  auto cellCount = [](const SpatialHash::CellRange& r)
-  {
-    return static_cast<double>(r.x1 - r.x0 + 1) * static_cast<double>(r.y1 - r.y0 + 1) *
-           static_cast<double>(r.z1 - r.z0 + 1);
-  };
-  for (std::size_t b = 0; b < boxes.size(); ++b)
-  {
-    const SpatialHash::CellRange cells = filed.cellsOf(boxes[b]);
-    if (cellCount(cells) > static_cast<double>(mostCellsFiled))
-      unfiled.push_back(static_cast<std::uint32_t>(b));
-    else
-      filed.insert(cells, static_cast<int>(b));
-  }
-  using Hit = std::pair<std::uint32_t, std::size_t>; // (box, triangle)
-  const auto hitsByRange = fixedRangeResults<std::vector<Hit>>(
-    mesh.triangles.size(), 1 << 14, threads,
-    [&](std::vector<Hit>& hits, std::size_t first, std::size_t last)
-    {
-      std::vector<std::uint32_t> met;
-      for (std::size_t t = first; t < last; ++t)
-      {
-        const BoundingBox box = boxOfTriangle(mesh, t);
-        met.clear();
-        auto test = [&](std::uint32_t b)
-        {
-          if (boxes[b].overlaps(box))
-            met.push_back(b);
-        };
-        const SpatialHash::CellRange cells = filed.cellsOf(box);
-        if (cellCount(cells) > static_cast<double>(mostCellsFiled)) // a triangle wider than the cells
-          for (std::uint32_t b = 0; b < boxes.size(); ++b)
-            test(b);
-        else
-        {
-          filed.forEachIn(cells, [&](int b) { test(static_cast<std::uint32_t>(b)); });
-          for (std::uint32_t b : unfiled)
-            test(b);
-        }
-        std::sort(met.begin(), met.end());
-        met.erase(std::unique(met.begin(), met.end()), met.end());
-        for (std::uint32_t b : met)
-          hits.emplace_back(b, t);
-      }
-    });
-  std::vector<std::vector<std::size_t>> meeting(boxes.size());
-  for (const std::vector<Hit>& hits : hitsByRange)
-    for (const auto& [b, t] : hits)
-      meeting[b].push_back(t);
-  return meeting;
-}
-
 } // namespace
 
 std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh*>& meshes, unsigned int threads)
@@ -131,7 +51,7 @@ std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh
     boxOfMesh[m] = boxOfTriangles(*meshes[m]);
   const std::vector<std::pair<std::size_t, std::size_t>> meshPairs = meetingBoxes(boxOfMesh);
   // For each mesh, its triangles within each partner's box, from one pass over its triangles
-  // (trianglesMeeting): a mesh whose box holds a thousand others (a brain's outer surface around
+  // (trianglesMeetingBoxes): a mesh whose box holds a thousand others (a brain's outer surface around
   // the specks of a thresholded MRI) was scanned whole once per partner.
   // Within a partner's box is within the overlap of the two boxes: a triangle's box lies in its own
   // mesh's box.
@@ -147,13 +67,13 @@ std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh
     std::vector<BoundingBox> partners;
     for (const auto& [pair, side] : partnersOf[m])
       partners.push_back(boxOfMesh[side == 0 ? meshPairs[pair].second : meshPairs[pair].first]);
-    const std::vector<std::vector<std::size_t>> meeting = trianglesMeeting(*meshes[m], partners, meshThreads);
+    const TrianglesMeeting meeting = trianglesMeetingBoxes(*meshes[m], partners, meshThreads);
     for (std::size_t i = 0; i < partners.size(); ++i)
     {
       const auto [pair, side] = partnersOf[m][i];
       std::vector<Box>& list = within[pair][static_cast<std::size_t>(side)];
-      for (std::size_t t : meeting[i])
-        list.push_back(tagged(boxOfTriangle(*meshes[m], t), m, t));
+      for (std::size_t k = meeting.start[i]; k < meeting.start[i + 1]; ++k)
+        list.push_back(tagged(boxOfTriangle(*meshes[m], meeting.triangles[k]), m, meeting.triangles[k]));
     }
   };
   // Large meshes one after another on every thread, the others side by side.

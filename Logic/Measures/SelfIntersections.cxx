@@ -3,9 +3,9 @@
 #include "Core/BoundingBox.h"
 #include "Core/GridCellSize.h"
 #include "Core/ParallelFor.h"
+#include "Measures/TrianglesMeetingBoxes.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
 
 #include <algorithm>
@@ -13,7 +13,6 @@
 #include <cmath>
 #include <cstdint>
 #include <mutex>
-#include <unordered_set>
 
 namespace slicemesh
 {
@@ -356,20 +355,13 @@ selfIntersectingTrianglePairsAfterMoving(const TriangleMesh& mesh,
   for (const auto& pair : before)
     if (!movedTriangle[pair.first] && !movedTriangle[pair.second])
       pairs.push_back(pair);
-  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
-  auto tagged = [](BoundingBox box, std::size_t t) // by value: CGAL takes non-const arrays
-  { return Box(box.low.data(), box.high.data(), t); };
   auto isDegenerate = [&](std::size_t t)
   {
     const Triangle& triangle = mesh.triangles[t];
     return CGAL::collinear(corner(mesh, triangle[0]), corner(mesh, triangle[1]), corner(mesh, triangle[2]));
   };
-  // The moved triangles' boxes, and the cells of a grid about as wide as the widest of them that
-  // they cover: a triangle that meets one of them has its box in one of those cells.
-  std::vector<Box> movedBoxes;
-  std::vector<BoundingBox> movedBounds;
-  BoundingBox all;
-  double widest = 0.0;
+  std::vector<std::size_t> tested; // the moved triangles that are not degenerate
+  std::vector<BoundingBox> testedBoxes;
   for (std::size_t t : movedTriangles)
   {
     if (isDegenerate(t))
@@ -377,51 +369,21 @@ selfIntersectingTrianglePairsAfterMoving(const TriangleMesh& mesh,
       pairs.emplace_back(t, t);
       continue;
     }
-    const BoundingBox box = boxOfTriangle(mesh, t);
-    movedBounds.push_back(box);
-    movedBoxes.push_back(tagged(box, t));
-    all.add(box);
-    for (int axis = 0; axis < 3; ++axis)
-      widest = std::max(widest, box.high[axis] - box.low[axis]);
+    tested.push_back(t);
+    testedBoxes.push_back(boxOfTriangle(mesh, t));
   }
-  if (!movedBoxes.empty())
+  if (!tested.empty())
   {
-    // The cells the moved boxes cover: a triangle whose box meets a moved box covers one of them.
-    const CellGrid grid(all.low, std::max(widest, 1e-300));
-    std::unordered_set<std::uint64_t> cells;
-    for (const BoundingBox& box : movedBounds)
-      grid.anyCovered(box, [&](std::uint64_t key) {
-        cells.insert(key);
-        return false;
-      });
-    // A box over more cells than this is kept without looking: the exact test sorts it out.
-    constexpr std::uint64_t mostCellsLooked = 64;
-    auto reachesMovedCells = [&](const BoundingBox& box)
-    {
-      const auto from = grid.cellOf(box.low), to = grid.cellOf(box.high);
-      if (to[0] - from[0] >= mostCellsLooked || to[1] - from[1] >= mostCellsLooked ||
-          to[2] - from[2] >= mostCellsLooked || grid.cellsOf(box) > mostCellsLooked)
-        return true;
-      return grid.anyCovered(box, [&](std::uint64_t key) { return cells.count(key) > 0; });
-    };
-    std::vector<char> near(nTriangles, 0);
-    parallelForRanges(nTriangles, threads,
-                      [&](std::size_t first, std::size_t last)
-                      {
-                        for (std::size_t t = first; t < last; ++t)
-                          near[t] = reachesMovedCells(boxOfTriangle(mesh, t)) && !isDegenerate(t);
-                      });
-    std::vector<Box> nearBoxes;
-    for (std::size_t t = 0; t < nTriangles; ++t)
-      if (near[t])
-        nearBoxes.push_back(tagged(boxOfTriangle(mesh, t), t));
+    // Every triangle whose box meets a moved one's, from one pass over the triangles.
+    const TrianglesMeeting meeting = trianglesMeetingBoxes(mesh, testedBoxes, threads);
     std::vector<std::pair<std::size_t, std::size_t>> candidates;
-    CGAL::box_intersection_d(movedBoxes.begin(), movedBoxes.end(), nearBoxes.begin(), nearBoxes.end(),
-                             [&](const Box& a, const Box& b)
-                             {
-                               if (a.info() != b.info())
-                                 candidates.emplace_back(std::min(a.info(), b.info()), std::max(a.info(), b.info()));
-                             });
+    for (std::size_t i = 0; i < tested.size(); ++i)
+      for (std::size_t k = meeting.start[i]; k < meeting.start[i + 1]; ++k)
+      {
+        const std::size_t other = meeting.triangles[k];
+        if (other != tested[i] && !isDegenerate(other))
+          candidates.emplace_back(std::min(tested[i], other), std::max(tested[i], other));
+      }
     std::sort(candidates.begin(), candidates.end());
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
     std::vector<char> crosses(candidates.size(), 0);
