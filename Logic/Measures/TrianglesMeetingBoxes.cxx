@@ -57,8 +57,10 @@ TrianglesMeeting trianglesMeetingBoxes(const TriangleMesh& mesh, const std::vect
     return meeting;
   SpatialHash filed(cellWidth(mesh, boxes));
   std::vector<std::uint32_t> unfiled;
+  BoundingBox all; // a triangle outside it meets none: most, where the boxes are a few places
   for (std::size_t b = 0; b < boxes.size(); ++b)
   {
+    all.add(boxes[b]);
     const SpatialHash::CellRange cells = filed.cellsOf(boxes[b]);
     if (cellCount(cells) > mostCellsFiled)
       unfiled.push_back(static_cast<std::uint32_t>(b));
@@ -74,6 +76,8 @@ TrianglesMeeting trianglesMeetingBoxes(const TriangleMesh& mesh, const std::vect
       for (std::size_t t = first; t < last; ++t)
       {
         const BoundingBox box = boxOfTriangle(mesh, t);
+        if (!all.overlaps(box))
+          continue;
         met.clear();
         auto tryBox = [&](std::uint32_t b)
         {
