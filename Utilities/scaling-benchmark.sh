@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The scaling benchmark: SliceMesh and 3D Slicer's label map -> closed surface pipeline (SlicerPeer)
 # in the same run, on a large isotropic volume, the same shape on thick slices, the AAL atlas (all
-# labels), 60 generated labels on 256^3, and one sphere at 128^3, 256^3 and 512^3. Per row: whole run
+# labels), 60 generated labels on 256^3, a generated whole-body CT segmentation (87 labels on
+# 512 x 512 x 400), and one sphere at 128^3, 256^3 and 512^3. Per row: whole run
 # and meshing time (reading and writing excluded) of both, their ratio, SliceMesh's time per stage,
 # peak memory of both, triangles, triangles per second. Writes the table into the "Scaling" section
 # of Documentation/Benchmark.md with the machine it ran on (the rest of the file is kept) and prints it.
@@ -10,11 +11,11 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$(cd "${1:-$here/build}" && pwd)"
-rows="${2:-ellipsoid-large ellipsoid-thick aal labels-60 sphere-128 sphere-256 sphere-512}"
+rows="${2:-ellipsoid-large ellipsoid-thick aal labels-60 ct-like sphere-128 sphere-256 sphere-512}"
 cmake --build "$build" -j2 --target SliceMesh MakeScalingVolumes SlicerPeer >/dev/null
 work="$build/scaling"
 mkdir -p "$work"
-[ -f "$work/inputs/sphere-512.nrrd" ] || "$build/Testing/Benchmark/MakeScalingVolumes" "$work/inputs"
+[ -f "$work/inputs/ct-like.nrrd" ] || "$build/Testing/Benchmark/MakeScalingVolumes" "$work/inputs"
 
 input_of() {
   case "$1" in
@@ -24,7 +25,7 @@ input_of() {
 }
 options_of() { # one mesh per label where there are several
   case "$1" in
-    aal | labels-60) echo "--splitLabels" ;;
+    aal | labels-60 | ct-like) echo "--splitLabels" ;;
     *) echo "" ;;
   esac
 }

@@ -2,9 +2,11 @@
 //   ellipsoid-large.nrrd     an ellipsoid of 220 x 190 x 264 mm at 0.5 x 0.5 x 1 mm (about 448 x 388 x 268)
 //   ellipsoid-thick.nrrd     the same ellipsoid at 0.8 x 0.8 x 3 mm
 //   labels-60.nrrd           60 labelled ellipsoids of varied size and tilt on 256^3 at 1 mm, some touching
+//   ct-like.nrrd             a whole-body CT segmentation, 87 labels on 512 x 512 x 400 (CtLikeLabelMap.h)
 //   sphere-128.nrrd, sphere-256.nrrd, sphere-512.nrrd
 //                            one sphere of radius 62 mm at 1, 0.5 and 0.25 mm (128^3 .. 512^3 voxels)
 // Usage: MakeScalingVolumes <output folder>
+#include "CtLikeLabelMap.h"
 #include "Ellipsoid.h"
 #include "MaskFileWriter.h"
 #include "PhantomGrid.h"
@@ -78,6 +80,7 @@ int main(int argc, char* argv[])
   writeMaskFile(rasterizePhantom(ellipsoid, gridAround(ellipsoid, { 0.8, 0.8, 3.0 }, 2)),
                 (folder / "ellipsoid-thick.nrrd").string());
   writeMaskFile(sixtyLabels(), (folder / "labels-60.nrrd").string());
+  writeMaskFile(ctLikeLabelMap(), (folder / "ct-like.nrrd").string());
   const Sphere sphere(Vector3(0, 0, 0), 62.0);
   for (const auto& [name, voxels, spacing] : { std::tuple{ "sphere-128.nrrd", std::size_t(128), 1.0 },
                                                std::tuple{ "sphere-256.nrrd", std::size_t(256), 0.5 },
