@@ -325,7 +325,10 @@ public:
           newNumber[static_cast<std::size_t>(v)] = 0;
       }
     std::vector<std::int32_t> former;
-    std::vector<Point3> points;
+    std::vector<Point3> points; // at their size: grown by doubling, a large piece's were held twice over
+    const auto used = static_cast<std::size_t>(std::count(newNumber.begin(), newNumber.end(), 0));
+    former.reserve(used);
+    points.reserve(used);
     for (std::size_t v = 0; v < newNumber.size(); ++v)
       if (newNumber[v] == 0)
       {

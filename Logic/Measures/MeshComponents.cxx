@@ -58,6 +58,19 @@ std::vector<TriangleMesh> splitIntoPieces(const TriangleMesh& mesh)
   for (const Triangle& t : mesh.triangles)
     withTriangles = std::max(withTriangles, component[static_cast<std::size_t>(t[0])] + 1);
   std::vector<TriangleMesh> pieces(withTriangles);
+  // Each piece's arrays at their size from the start: grown by doubling, those of a piece of a
+  // million triangles held up to twice their size at a run's peak.
+  std::vector<std::size_t> points(withTriangles, 0), triangles(withTriangles, 0);
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    if (component[v] < withTriangles)
+      ++points[component[v]];
+  for (const Triangle& t : mesh.triangles)
+    ++triangles[component[static_cast<std::size_t>(t[0])]];
+  for (std::size_t p = 0; p < withTriangles; ++p)
+  {
+    pieces[p].points.reserve(points[p]);
+    pieces[p].triangles.reserve(triangles[p]);
+  }
   std::vector<std::int32_t> newIndex(mesh.points.size(), -1);
   for (std::size_t v = 0; v < mesh.points.size(); ++v)
     if (component[v] < withTriangles)
