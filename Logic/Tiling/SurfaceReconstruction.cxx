@@ -234,7 +234,11 @@ TriangleMesh reconstructSurface(const ContourStack& stack, const ReconstructionO
 
   if (statisticsOut)
     *statisticsOut = statistics;
-  return mesh.release();
+  // Grown slab by slab: held through the finishing (its projection's reference) at its size.
+  TriangleMesh tiling = mesh.release();
+  tiling.points.shrink_to_fit();
+  tiling.triangles.shrink_to_fit();
+  return tiling;
 }
 
 } // namespace slicemesh
