@@ -67,7 +67,9 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
         throw Error("mesh: a triangle refers to a vertex that does not exist");
 
   // Per triangle: degeneracy, area, unit normal, smallest angle.
-  std::vector<std::array<double, 3>> normals(nTriangles);
+  // Unit normals in single precision: they only tell folds (normals within a degree of opposite,
+  // far above its rounding), and a large piece's array is held while its edges are gathered.
+  std::vector<std::array<float, 3>> normals(nTriangles);
   struct TriangleSums
   {
     std::size_t degenerate = 0, below30 = 0;
@@ -85,9 +87,10 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
         const double twiceArea = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
         if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || twiceArea == 0.0)
           ++sums.degenerate;
-        normals[f] = twiceArea > 0.0
-                       ? std::array<double, 3>{ n.x / twiceArea, n.y / twiceArea, n.z / twiceArea }
-                       : std::array<double, 3>{ 0.0, 0.0, 0.0 };
+        normals[f] = twiceArea > 0.0 ? std::array<float, 3>{ static_cast<float>(n.x / twiceArea),
+                                                             static_cast<float>(n.y / twiceArea),
+                                                             static_cast<float>(n.z / twiceArea) }
+                                     : std::array<float, 3>{ 0.0F, 0.0F, 0.0F };
         sums.area += 0.5 * twiceArea;
         const double cosine = smallestAngleCosine(*p[0], *p[1], *p[2]);
         sums.largestCosine = std::max(sums.largestCosine, cosine);
@@ -125,12 +128,14 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
             [&](const EdgeUse* first, const EdgeUse* last)
             {
               std::size_t forward = first->forward ? 1 : 0;
-              const std::array<double, 3>& m = normals[first->triangle];
+              const std::array<float, 3>& m = normals[first->triangle];
               for (const EdgeUse* j = first + 1; j != last; ++j)
               { // unit normals nearly opposite: the triangles lie on top of each other
                 forward += j->forward ? 1 : 0;
-                const std::array<double, 3>& n = normals[j->triangle];
-                if (m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -foldCosine)
+                const std::array<float, 3>& n = normals[j->triangle];
+                if (static_cast<double>(m[0]) * n[0] + static_cast<double>(m[1]) * n[1] +
+                      static_cast<double>(m[2]) * n[2] <
+                    -foldCosine)
                   ++counts.folded;
               }
               const auto count = static_cast<std::size_t>(last - first);
@@ -154,7 +159,7 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
     v.boundaryEdges += counts.boundary;
     v.nonManifoldEdges += counts.nonManifold;
   }
-  normals = std::vector<std::array<double, 3>>();
+  normals = std::vector<std::array<float, 3>>();
 
   // A vertex is manifold when its triangles form one fan: the edges opposite it form one connected
   // link. Links gathered per vertex (counting sort), each checked with a small union-find.
