@@ -72,13 +72,11 @@ TEST(PointsInside, APointInACavityIsOutside)
 
 TEST(PointsInside, AgreesWithCgalsInsideTestOnATiledBall)
 {
-  // A tiled ball of radius 10 whose contours' points lie on a grid the test points share, so many
-  // rays pass through its vertices: the answers agree with CGAL's Side_of_triangle_mesh (which
-  // shoots again when a ray grazes) and, away from the surface, with the sphere.
-  ContourStack stack;
-  stack.sliceSpacing = 1.0;
-  for (double z = -9.5; z < 10.0; z += 1.0)
-    stack.slices.push_back({ z, { circle(0.0, 0.0, std::sqrt(100.0 - z * z), 40) } });
+  // A tiled ball of radius 10, with points straight above and below its vertices among random ones,
+  // so that many rays pass through vertices: the answers agree with CGAL's Side_of_triangle_mesh
+  // (which shoots again when a ray grazes) and, away from the surface, with the sphere.
+  const ContourStack stack = sliceStack(-9.5, 9.5, 1.0, [](double z)
+                                        { return std::vector<Polygon2>{ circle(0.0, 0.0, std::sqrt(100.0 - z * z), 40) }; });
   const TriangleMesh ball = reconstructSurface(stack);
   std::vector<Point3> points;
   std::mt19937 random(7);

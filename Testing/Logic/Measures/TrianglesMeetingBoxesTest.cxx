@@ -16,10 +16,8 @@ namespace
 
 TEST(TrianglesMeetingBoxes, EveryTriangleWhoseBoxMeetsEachBox)
 {
-  ContourStack stack;
-  stack.sliceSpacing = 1.0;
-  for (double z = -9.5; z < 10.0; z += 1.0)
-    stack.slices.push_back({ z, { circle(0.0, 0.0, std::sqrt(100.0 - z * z), 64) } });
+  const ContourStack stack = sliceStack(-9.5, 9.5, 1.0, [](double z)
+                                        { return std::vector<Polygon2>{ circle(0.0, 0.0, std::sqrt(100.0 - z * z), 64) }; });
   const TriangleMesh ball = reconstructSurface(stack);
   // Small boxes on and off the surface, boxes spanning many cells, one holding the whole ball, one
   // touching a vertex's coordinate exactly, one far away.
