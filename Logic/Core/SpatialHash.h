@@ -45,6 +45,15 @@ public:
     return { cellOf(box.low[0]), cellOf(box.high[0]), cellOf(box.low[1]),
              cellOf(box.high[1]), cellOf(box.low[2]), cellOf(box.high[2]) };
   }
+  /** How many cells of space a box touches, counted in floating point: no overflow for a box far
+   *  wider than the cells, NaN for a box with a NaN corner (so `!(count <= limit)` holds). */
+  double cellCountOf(const BoundingBox& box) const
+  {
+    double count = 1.0;
+    for (int a = 0; a < 3; ++a)
+      count *= std::floor(box.high[a] / m_CellSize) - std::floor(box.low[a] / m_CellSize) + 1.0;
+    return count;
+  }
   /** The cells that can hold a point within radius of p: ceil(radius / cellSize) cells on each side of p's. */
   CellRange cellsWithin(const Point2& p, double radius) const
   {

@@ -26,6 +26,10 @@ using TrianglePairs = std::set<std::pair<std::size_t, std::size_t>>;
  *  operation parts, took millions (a minute) without a bound. */
 constexpr std::size_t twoStepJudgements = 16384;
 
+/** A triangle over more cells than this (a long sliver) is taken as near every query instead of
+ *  being filed under each of its cells of space. */
+constexpr double mostCellsFiled = 64.0;
+
 /** One flip, collapse or vertex move: the triangles it removes and those it rewrites (slot, new corners). */
 struct Operation
 {
@@ -617,7 +621,10 @@ private:
   void index(std::size_t t)
   {
     const BoundingBox box = boxOf(m_Mesh.points, m_Mesh.triangles[t]);
-    m_Cells.insert(m_Cells.cellsOf(box), static_cast<int>(t));
+    if (!(m_Cells.cellCountOf(box) <= mostCellsFiled))
+      m_Oversized.push_back(t); // a long sliver: near every query, not filed under its many cells
+    else
+      m_Cells.insert(m_Cells.cellsOf(box), static_cast<int>(t));
   }
 
   /** The triangles of the scope (and those operations rewrote) filed under the cells of this box,
@@ -627,6 +634,7 @@ private:
     std::vector<std::size_t> near;
     m_Cells.forEachIn(m_Cells.cellsOf(box),
                       [&](int t) { near.push_back(static_cast<std::size_t>(t)); });
+    near.insert(near.end(), m_Oversized.begin(), m_Oversized.end());
     std::sort(near.begin(), near.end());
     near.erase(std::unique(near.begin(), near.end()), near.end());
     return near;
@@ -647,6 +655,7 @@ private:
    *  quadratic, and so did columns of the plane on a tall wall (a body's skin: the triangles of
    *  every slice above and below). */
   SpatialHash m_Cells;
+  std::vector<std::size_t> m_Oversized; ///< triangles over more than mostCellsFiled cells
   std::size_t m_TwoStepBudget = twoStepJudgements;
 };
 

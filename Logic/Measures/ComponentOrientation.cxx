@@ -48,7 +48,9 @@ std::size_t misorientedComponents(const std::vector<const TriangleMesh*>& compon
       }
   // Each component that holds another's box is asked, in one pass over its triangles, which of
   // those components' first vertices it encloses: the large ones one after another on every
-  // thread, the small ones side by side.
+  // thread, the small ones side by side. (A vertex on the other surface itself, where two
+  // components touch, is decided by the ray's perturbation; such touching is a crossing, which the
+  // self-intersection tests report.)
   std::vector<std::vector<std::size_t>> held(n); // per component, those whose box its box holds
   for (std::size_t a = 0; a < n; ++a)
     for (std::size_t b : enclosing[a])

@@ -18,8 +18,8 @@ EdgeUses::EdgeUses(const TriangleMesh& mesh, unsigned int threads)
     mesh.triangles.size() < 65536 ? 1 : std::min<std::size_t>(threadCount(threads), 8);
   auto forOwnUses = [&](std::size_t w, auto&& use)
   {
-    const auto low = static_cast<std::int32_t>(vertexCount * w / workers);
-    const auto high = static_cast<std::int32_t>(vertexCount * (w + 1) / workers);
+    const auto low = static_cast<std::int64_t>(vertexCount * w / workers);
+    const auto high = static_cast<std::int64_t>(vertexCount * (w + 1) / workers);
     for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
     {
       const Triangle& t = mesh.triangles[f];

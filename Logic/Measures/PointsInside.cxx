@@ -111,7 +111,7 @@ private:
   std::size_t cell(int axis, double value) const
   {
     const double c = std::floor((value - m_Low[axis]) / m_Size[axis]);
-    return static_cast<std::size_t>(std::clamp(c, 0.0, static_cast<double>(m_Cells - 1)));
+    return c > 0.0 ? static_cast<std::size_t>(std::min(c, static_cast<double>(m_Cells - 1))) : 0; // NaN: 0
   }
 
   std::array<double, 2> m_Low{}, m_High{}, m_Size{};

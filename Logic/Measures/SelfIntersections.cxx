@@ -381,7 +381,7 @@ selfIntersectingTrianglePairsAfterMoving(const TriangleMesh& mesh,
       for (std::size_t k = meeting.start[i]; k < meeting.start[i + 1]; ++k)
       {
         const std::size_t other = meeting.triangles[k];
-        if (other != tested[i] && !isDegenerate(other))
+        if (other != tested[i])
           candidates.emplace_back(std::min(tested[i], other), std::max(tested[i], other));
       }
     std::sort(candidates.begin(), candidates.end());
@@ -391,7 +391,8 @@ selfIntersectingTrianglePairsAfterMoving(const TriangleMesh& mesh,
                       [&](std::size_t first, std::size_t last)
                       {
                         for (std::size_t i = first; i < last; ++i)
-                          crosses[i] = crossing(cornersOf(mesh, candidates[i].first), cornersOf(mesh, candidates[i].second));
+                          crosses[i] = !isDegenerate(candidates[i].first) && !isDegenerate(candidates[i].second) &&
+                                       crossing(cornersOf(mesh, candidates[i].first), cornersOf(mesh, candidates[i].second));
                       });
     for (std::size_t i = 0; i < candidates.size(); ++i)
       if (crosses[i])

@@ -22,11 +22,6 @@ double widthOf(const BoundingBox& box)
   return std::max({ box.high[0] - box.low[0], box.high[1] - box.low[1], box.high[2] - box.low[2] });
 }
 
-double cellCount(const SpatialHash::CellRange& r)
-{
-  return static_cast<double>(r.x1 - r.x0 + 1) * static_cast<double>(r.y1 - r.y0 + 1) * static_cast<double>(r.z1 - r.z0 + 1);
-}
-
 /** The cells' width: all but the widest tenth of the boxes fit in two cells a side, and a triangle
  *  of mean width (over a sample spread over the mesh) in two. */
 double cellWidth(const TriangleMesh& mesh, const std::vector<BoundingBox>& boxes)
@@ -61,11 +56,10 @@ TrianglesMeeting trianglesMeetingBoxes(const TriangleMesh& mesh, const std::vect
   for (std::size_t b = 0; b < boxes.size(); ++b)
   {
     all.add(boxes[b]);
-    const SpatialHash::CellRange cells = filed.cellsOf(boxes[b]);
-    if (cellCount(cells) > mostCellsFiled)
+    if (!(filed.cellCountOf(boxes[b]) <= mostCellsFiled))
       unfiled.push_back(static_cast<std::uint32_t>(b));
     else
-      filed.insert(cells, static_cast<int>(b));
+      filed.insert(filed.cellsOf(boxes[b]), static_cast<int>(b));
   }
   using Hit = std::pair<std::uint32_t, std::uint32_t>; // (box, triangle)
   const auto hitsByRange = fixedRangeResults<std::vector<Hit>>(
@@ -84,13 +78,12 @@ TrianglesMeeting trianglesMeetingBoxes(const TriangleMesh& mesh, const std::vect
           if (boxes[b].overlaps(box))
             met.push_back(b);
         };
-        const SpatialHash::CellRange cells = filed.cellsOf(box);
-        if (cellCount(cells) > mostCellsFiled) // a triangle far wider than the cells
+        if (!(filed.cellCountOf(box) <= mostCellsFiled)) // a triangle far wider than the cells
           for (std::uint32_t b = 0; b < boxes.size(); ++b)
             tryBox(b);
         else
         {
-          filed.forEachIn(cells, [&](int b) { tryBox(static_cast<std::uint32_t>(b)); });
+          filed.forEachIn(filed.cellsOf(box), [&](int b) { tryBox(static_cast<std::uint32_t>(b)); });
           for (std::uint32_t b : unfiled)
             tryBox(b);
         }
