@@ -1,4 +1,4 @@
-// Colour table parsing (Slicer, FreeSurfer, plain name lists) and generated colours.
+// Colour table parsing (Slicer, FreeSurfer, ITK-SNAP, plain name lists) and generated colours.
 #include "ColorTable.h"
 
 #include "Core/SliceMeshTypes.h"
@@ -14,6 +14,54 @@
 
 namespace slicemesh
 {
+namespace
+{
+
+/** A line of an ITK-SNAP label description file, `IDX R G B A VIS MSH "name"`: the name is the
+ *  quoted text (spaces and '#' in it kept), the numbers before it the value and colour, the opacity
+ *  A from 0 to 1 (VIS and MSH, the label's visibility, are not the mesh's). False for a line without
+ *  a quoted name. Throws `malformed` for a quoted line whose numbers are not a value and a colour. */
+bool readQuotedLine(const std::string& line, LabelColor& entry, const std::string& malformed)
+{
+  const std::size_t open = line.find('"');
+  if (open == std::string::npos || line.find('#') < open)
+    return false;
+  const std::size_t close = line.find('"', open + 1);
+  if (close == std::string::npos)
+    throw Error(malformed);
+  std::istringstream fields(line.substr(0, open));
+  std::vector<double> numbers;
+  for (std::string word; fields >> word;)
+  {
+    char* end = nullptr;
+    numbers.push_back(std::strtod(word.c_str(), &end));
+    if (*end != '\0')
+      throw Error(malformed);
+  }
+  if (numbers.empty() || numbers[0] != std::floor(numbers[0]) || !(std::abs(numbers[0]) < 2147483648.0))
+    throw Error(malformed);
+  entry.label = static_cast<int>(numbers[0]);
+  entry.name = line.substr(open + 1, close - open - 1);
+  if (entry.name.empty())
+    entry.name = "Label_" + std::to_string(entry.label);
+  entry.rgba = ColorTable::generatedColor(entry.label);
+  if (numbers.size() >= 4)
+    for (int c = 0; c < 3; ++c)
+    {
+      if (!(numbers[c + 1] >= 0.0 && numbers[c + 1] <= 255.0))
+        throw Error(malformed);
+      entry.rgba[c] = static_cast<unsigned char>(std::lround(numbers[c + 1]));
+    }
+  if (numbers.size() >= 5)
+  {
+    if (!(numbers[4] >= 0.0 && numbers[4] <= 1.0))
+      throw Error(malformed);
+    entry.rgba[3] = static_cast<unsigned char>(std::lround(255.0 * numbers[4]));
+  }
+  return true;
+}
+
+} // namespace
 
 ColorTable ColorTable::read(const std::string& path)
 {
@@ -28,6 +76,14 @@ ColorTable ColorTable::read(const std::string& path)
   while (std::getline(in, line))
   {
     ++lineNumber;
+    const std::string malformed = path + ":" + std::to_string(lineNumber) + ": expected 'value name [r g b [a]]'";
+    if (LabelColor quoted; readQuotedLine(line, quoted, malformed))
+    {
+      if (table.Entries.count(quoted.label))
+        table.Repeated.push_back(quoted.label);
+      table.Entries[quoted.label] = quoted;
+      continue;
+    }
     if (const std::size_t hash = line.find('#'); hash != std::string::npos)
       line.erase(hash);
     std::istringstream fields(line);
@@ -40,7 +96,7 @@ ColorTable ColorTable::read(const std::string& path)
     char* end = nullptr;
     const long value = std::strtol(words[0].c_str(), &end, 10);
     if (*end != '\0' || words.size() < 2)
-      throw Error(path + ":" + std::to_string(lineNumber) + ": expected 'value name [r g b [a]]'");
+      throw Error(malformed);
     entry.label = static_cast<int>(value);
     entry.name = words[1];
     entry.rgba = generatedColor(entry.label);

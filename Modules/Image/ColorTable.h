@@ -1,5 +1,6 @@
-// Label names and colours from a colour table file: 3D Slicer's .ctbl/.txt, FreeSurfer's LUT, or
-// a plain "value name" list (MRIcron's atlas .txt such as aal.nii.txt).
+// Label names and colours from a colour table file: 3D Slicer's .ctbl/.txt, FreeSurfer's LUT, an
+// ITK-SNAP label description file, or a plain "value name" list (MRIcron's atlas .txt such as
+// aal.nii.txt).
 #ifndef ColorTable_h
 #define ColorTable_h
 
@@ -27,8 +28,9 @@ public:
    *  `#` starts a comment). Slicer's .ctbl/.txt give alpha as opacity (255 opaque); FreeSurfer's
    *  FreeSurferColorLUT.txt gives 0 for every entry (its fourth number is a transparency): when
    *  every entry's alpha is 0 the table is read as FreeSurfer's and all colours are opaque. Lines
-   *  without a colour get the generated colour of their label. Throws slicemesh::Error naming the
-   *  file and line on a malformed line. */
+   *  without a colour get the generated colour of their label. A line whose name is in double quotes
+   *  is ITK-SNAP's, `value r g b opacity visible mesh "name"`: the name may hold spaces, the opacity
+   *  runs from 0 to 1. Throws slicemesh::Error naming the file and line on a malformed line. */
   static ColorTable read(const std::string& path);
 
   /** The entry of a label; a label the table does not list gets the name "Label_<value>" and its
