@@ -1,13 +1,14 @@
 #include "Measures/PointsInside.h"
 
 #include "Core/ParallelFor.h"
+#include "Core/SpatialHash.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace slicemesh
 {
@@ -63,63 +64,6 @@ bool rayCrosses(const Point3& a, const Point3& b, const Point3& c, const Point3&
   return sideOfPlane(a, b, c, p, ab) == -ab;
 }
 
-/** The points bucketed by a uniform grid over their plan box, about one point a cell. */
-class PlanGrid
-{
-public:
-  explicit PlanGrid(const std::vector<Point3>& points)
-  {
-    m_Low = { points.front().x, points.front().y };
-    m_High = m_Low;
-    for (const Point3& p : points)
-    {
-      m_Low = { std::min(m_Low[0], p.x), std::min(m_Low[1], p.y) };
-      m_High = { std::max(m_High[0], p.x), std::max(m_High[1], p.y) };
-    }
-    const auto side = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(points.size()))));
-    m_Cells = std::clamp<std::size_t>(side, 1, 1024);
-    for (int axis = 0; axis < 2; ++axis)
-      m_Size[axis] = std::max((m_High[axis] - m_Low[axis]) / static_cast<double>(m_Cells), 1e-300);
-    m_Start.assign(m_Cells * m_Cells + 1, 0);
-    std::vector<std::size_t> cellOf(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i)
-    {
-      cellOf[i] = cell(0, points[i].x) * m_Cells + cell(1, points[i].y);
-      ++m_Start[cellOf[i] + 1];
-    }
-    for (std::size_t c = 0; c < m_Cells * m_Cells; ++c)
-      m_Start[c + 1] += m_Start[c];
-    m_Points.resize(points.size());
-    std::vector<std::uint32_t> next(m_Start.begin(), m_Start.end() - 1);
-    for (std::size_t i = 0; i < points.size(); ++i)
-      m_Points[next[cellOf[i]]++] = static_cast<std::uint32_t>(i);
-  }
-
-  /** Calls visit(i) for each point in the cells that the plan box [low, high] covers. */
-  template <typename Visit>
-  void forPointsUnder(double lowX, double lowY, double highX, double highY, Visit&& visit) const
-  {
-    if (highX < m_Low[0] || lowX > m_High[0] || highY < m_Low[1] || lowY > m_High[1])
-      return;
-    const std::size_t x0 = cell(0, lowX), x1 = cell(0, highX), y0 = cell(1, lowY), y1 = cell(1, highY);
-    for (std::size_t x = x0; x <= x1; ++x)
-      for (std::uint32_t k = m_Start[x * m_Cells + y0]; k < m_Start[x * m_Cells + y1 + 1]; ++k)
-        visit(m_Points[k]);
-  }
-
-private:
-  std::size_t cell(int axis, double value) const
-  {
-    const double c = std::floor((value - m_Low[axis]) / m_Size[axis]);
-    return c > 0.0 ? static_cast<std::size_t>(std::min(c, static_cast<double>(m_Cells - 1))) : 0; // NaN: 0
-  }
-
-  std::array<double, 2> m_Low{}, m_High{}, m_Size{};
-  std::size_t m_Cells = 1;
-  std::vector<std::uint32_t> m_Start;  // per cell (x-major), its first entry in m_Points
-  std::vector<std::uint32_t> m_Points; // point indices, cell by cell
-};
-
 } // namespace
 
 std::vector<char> pointsInside(const TriangleMesh& surface, const std::vector<Point3>& points, unsigned int threads)
@@ -127,7 +71,20 @@ std::vector<char> pointsInside(const TriangleMesh& surface, const std::vector<Po
   std::vector<char> inside(points.size(), 0);
   if (points.empty() || surface.triangles.empty())
     return inside;
-  const PlanGrid grid(points);
+  // The points filed in cells of the plane about one point a cell over their plan box (at most
+  // 1024 a side); a triangle looks in the cells of its plan box within that box. A point with a
+  // coordinate that is no number is filed nowhere: outside.
+  const double infinity = std::numeric_limits<double>::infinity();
+  Box2 plan{ infinity, infinity, -infinity, -infinity };
+  for (const Point3& p : points)
+    if (std::isfinite(p.x) && std::isfinite(p.y))
+      plan = { std::min(plan.xmin, p.x), std::min(plan.ymin, p.y), std::max(plan.xmax, p.x), std::max(plan.ymax, p.y) };
+  const double side = std::clamp(std::ceil(std::sqrt(static_cast<double>(points.size()))), 1.0, 1024.0);
+  const double width = std::max(plan.xmax - plan.xmin, plan.ymax - plan.ymin);
+  SpatialHash grid(width > 0.0 ? width / side : 1.0);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (std::isfinite(points[i].x) && std::isfinite(points[i].y))
+      grid.insert(Point2{ points[i].x, points[i].y }, static_cast<int>(i));
   // Each range of triangles lists the points its triangles are above; the parity of a point's
   // listings does not depend on the order they are taken in.
   constexpr std::size_t rangeSize = 1 << 15;
@@ -143,16 +100,20 @@ std::vector<char> pointsInside(const TriangleMesh& surface, const std::vector<Po
         const Point3& c = surface.points[static_cast<std::size_t>(tri[2])];
         const double lowX = std::min({ a.x, b.x, c.x }), highX = std::max({ a.x, b.x, c.x });
         const double lowY = std::min({ a.y, b.y, c.y }), highY = std::max({ a.y, b.y, c.y });
-        grid.forPointsUnder(lowX, lowY, highX, highY,
-                            [&](std::uint32_t i)
-                            {
-                              const Point3& p = points[i];
-                              // The moved point's plan lies in [low, high) on each axis at most.
-                              if (p.x < lowX || p.x >= highX || p.y < lowY || p.y >= highY)
-                                return;
-                              if (rayCrosses(a, b, c, p))
-                                hits.push_back(i);
-                            });
+        const Box2 under{ std::max(lowX, plan.xmin), std::max(lowY, plan.ymin), std::min(highX, plan.xmax),
+                          std::min(highY, plan.ymax) };
+        if (under.xmin > under.xmax || under.ymin > under.ymax)
+          continue;
+        grid.forEachIn(grid.cellsOf(under),
+                       [&](int i)
+                       {
+                         const Point3& p = points[static_cast<std::size_t>(i)];
+                         // The moved point's plan lies in [low, high) on each axis at most.
+                         if (p.x < lowX || p.x >= highX || p.y < lowY || p.y >= highY)
+                           return;
+                         if (rayCrosses(a, b, c, p))
+                           hits.push_back(static_cast<std::uint32_t>(i));
+                       });
       }
     });
   for (const std::vector<std::uint32_t>& hits : crossed)
