@@ -100,6 +100,22 @@ void parallelForRanges(std::size_t count, unsigned int threads, Body&& body, std
   parallelFor(ranges, threads, [&](std::size_t r) { body(std::min(count, r * step), std::min(count, (r + 1) * step)); });
 }
 
+/** Calls body(i, threads) for each i of `items`: the large ones (isLarge(i)) one after another, each
+ *  on up to threadCount(threads) threads for its own loops, then the others side by side, each on
+ *  one. For items of very different sizes (a large piece among specks), where one thread an item
+ *  would leave the large one alone on its thread. */
+template <typename IsLarge, typename Body>
+void largeOnesFirst(const std::vector<std::size_t>& items, unsigned int threads, IsLarge&& isLarge, Body&& body)
+{
+  std::vector<std::size_t> small;
+  for (std::size_t i : items)
+    if (isLarge(i))
+      body(i, threads);
+    else
+      small.push_back(i);
+  parallelFor(small.size(), threads, [&](std::size_t k) { body(small[k], 1u); });
+}
+
 /** How many ranges of `rangeSize` cover [0, count) (the last one may be shorter). */
 inline std::size_t fixedRangeCount(std::size_t count, std::size_t rangeSize)
 {

@@ -55,21 +55,20 @@ std::size_t misorientedComponents(const std::vector<const TriangleMesh*>& compon
   for (std::size_t a = 0; a < n; ++a)
     for (std::size_t b : enclosing[a])
       held[b].push_back(a);
-  std::vector<std::size_t> large, small;
+  std::vector<std::size_t> holders;
   for (std::size_t b = 0; b < n; ++b)
     if (needed[b])
-      (components[b]->triangles.size() >= largeComponent ? large : small).push_back(b);
+      holders.push_back(b);
   std::vector<std::vector<char>> inside(n);
-  auto ask = [&](std::size_t b, unsigned int askThreads)
-  {
-    std::vector<Point3> probes;
-    for (std::size_t a : held[b])
-      probes.push_back(firstVertex(*components[a]));
-    inside[b] = pointsInside(*components[b], probes, askThreads);
-  };
-  for (std::size_t b : large)
-    ask(b, threads);
-  parallelFor(small.size(), threads, [&](std::size_t k) { ask(small[k], 1); });
+  largeOnesFirst(
+    holders, threads, [&](std::size_t b) { return components[b]->triangles.size() >= largeComponent; },
+    [&](std::size_t b, unsigned int askThreads)
+    {
+      std::vector<Point3> probes;
+      for (std::size_t a : held[b])
+        probes.push_back(firstVertex(*components[a]));
+      inside[b] = pointsInside(*components[b], probes, askThreads);
+    });
   std::vector<std::size_t> depth(n, 0);
   for (std::size_t b = 0; b < n; ++b)
     for (std::size_t k = 0; k < held[b].size(); ++k)

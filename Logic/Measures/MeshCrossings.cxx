@@ -77,13 +77,12 @@ std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh
     }
   };
   // Large meshes one after another on every thread, the others side by side.
-  std::vector<std::size_t> large, small;
+  std::vector<std::size_t> withPartners;
   for (std::size_t m = 0; m < meshes.size(); ++m)
     if (!partnersOf[m].empty())
-      (meshes[m]->triangles.size() >= largeMesh ? large : small).push_back(m);
-  for (std::size_t m : large)
-    findWithin(m, threads);
-  parallelFor(small.size(), threads, [&](std::size_t k) { findWithin(small[k], 1); });
+      withPartners.push_back(m);
+  largeOnesFirst(withPartners, threads, [&](std::size_t m) { return meshes[m]->triangles.size() >= largeMesh; },
+                 findWithin);
   // Pair by pair, side by side: the triangles of each mesh within the other's box, against each
   // other (CGAL's box intersection), then the exact triangle test. Pairs within one mesh never come
   // up, where the box intersection of all triangles together went through every pair of
