@@ -73,15 +73,19 @@ ColorTable ColorTable::read(const std::string& path)
   std::size_t lineNumber = 0;
   bool everyAlphaZero = true;
   bool anyAlpha = false;
+  auto add = [&table](const LabelColor& entry) // a value listed again takes its last line
+  {
+    if (table.Entries.count(entry.label))
+      table.Repeated.push_back(entry.label);
+    table.Entries[entry.label] = entry;
+  };
   while (std::getline(in, line))
   {
     ++lineNumber;
     const std::string malformed = path + ":" + std::to_string(lineNumber) + ": expected 'value name [r g b [a]]'";
     if (LabelColor quoted; readQuotedLine(line, quoted, malformed))
     {
-      if (table.Entries.count(quoted.label))
-        table.Repeated.push_back(quoted.label);
-      table.Entries[quoted.label] = quoted;
+      add(quoted);
       continue;
     }
     if (const std::size_t hash = line.find('#'); hash != std::string::npos)
@@ -120,9 +124,7 @@ ColorTable ColorTable::read(const std::string& path)
       else
         entry.rgba[3] = 255;
     }
-    if (table.Entries.count(entry.label))
-      table.Repeated.push_back(entry.label);
-    table.Entries[entry.label] = entry;
+    add(entry);
   }
   if (anyAlpha && everyAlphaZero)
     for (auto& entry : table.Entries)
