@@ -45,6 +45,9 @@ public:
     return { cellOf(box.low[0]), cellOf(box.high[0]), cellOf(box.low[1]),
              cellOf(box.high[1]), cellOf(box.low[2]), cellOf(box.high[2]) };
   }
+  /** A box over more cells than this is best tried by every query rather than filed under each of
+   *  them (a long sliver among short triangles). */
+  static constexpr double mostCellsFiled = 64.0;
   /** How many cells of space a box touches, counted in floating point: no overflow for a box far
    *  wider than the cells, NaN for a box with a NaN corner (so `!(count <= limit)` holds). */
   double cellCountOf(const BoundingBox& box) const

@@ -26,10 +26,6 @@ using TrianglePairs = std::set<std::pair<std::size_t, std::size_t>>;
  *  operation parts, took millions (a minute) without a bound. */
 constexpr std::size_t twoStepJudgements = 16384;
 
-/** A triangle over more cells than this (a long sliver) is taken as near every query instead of
- *  being filed under each of its cells of space. */
-constexpr double mostCellsFiled = 64.0;
-
 /** One flip, collapse or vertex move: the triangles it removes and those it rewrites (slot, new corners). */
 struct Operation
 {
@@ -621,7 +617,7 @@ private:
   void index(std::size_t t)
   {
     const BoundingBox box = boxOf(m_Mesh.points, m_Mesh.triangles[t]);
-    if (!(m_Cells.cellCountOf(box) <= mostCellsFiled))
+    if (!(m_Cells.cellCountOf(box) <= SpatialHash::mostCellsFiled))
       m_Oversized.push_back(t); // a long sliver: near every query, not filed under its many cells
     else
       m_Cells.insert(m_Cells.cellsOf(box), static_cast<int>(t));
@@ -655,7 +651,7 @@ private:
    *  quadratic, and so did columns of the plane on a tall wall (a body's skin: the triangles of
    *  every slice above and below). */
   SpatialHash m_Cells;
-  std::vector<std::size_t> m_Oversized; ///< triangles over more than mostCellsFiled cells
+  std::vector<std::size_t> m_Oversized; ///< triangles over more than SpatialHash::mostCellsFiled cells
   std::size_t m_TwoStepBudget = twoStepJudgements;
 };
 

@@ -11,9 +11,6 @@ namespace slicemesh
 namespace
 {
 
-/** A box over more cells than this is tried by every triangle instead of being filed. */
-constexpr double mostCellsFiled = 64.0;
-
 /** Triangles per range of the pass over the triangles. */
 constexpr std::size_t rangeSize = 1 << 14;
 
@@ -56,7 +53,7 @@ TrianglesMeeting trianglesMeetingBoxes(const TriangleMesh& mesh, const std::vect
   for (std::size_t b = 0; b < boxes.size(); ++b)
   {
     all.add(boxes[b]);
-    if (!(filed.cellCountOf(boxes[b]) <= mostCellsFiled))
+    if (!(filed.cellCountOf(boxes[b]) <= SpatialHash::mostCellsFiled))
       unfiled.push_back(static_cast<std::uint32_t>(b));
     else
       filed.insert(filed.cellsOf(boxes[b]), static_cast<int>(b));
@@ -78,7 +75,7 @@ TrianglesMeeting trianglesMeetingBoxes(const TriangleMesh& mesh, const std::vect
           if (boxes[b].overlaps(box))
             met.push_back(b);
         };
-        if (!(filed.cellCountOf(box) <= mostCellsFiled)) // a triangle far wider than the cells
+        if (!(filed.cellCountOf(box) <= SpatialHash::mostCellsFiled)) // a triangle far wider than the cells
           for (std::uint32_t b = 0; b < boxes.size(); ++b)
             tryBox(b);
         else
