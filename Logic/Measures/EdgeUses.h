@@ -4,6 +4,7 @@
 #ifndef EdgeUses_h
 #define EdgeUses_h
 
+#include "Core/DefaultInitAllocator.h"
 #include "Core/SliceMeshTypes.h"
 
 #include <cstdint>
@@ -35,7 +36,7 @@ public:
 
   std::size_t vertices() const { return m_First.size() - 1; }
   std::size_t first(std::size_t v) const { return m_First[v]; }
-  const std::vector<EdgeUse>& uses() const { return m_Uses; }
+  const std::vector<EdgeUse, DefaultInitAllocator<EdgeUse>>& uses() const { return m_Uses; }
 
   /** Calls visit(first, last) for each edge filed under vertex v, in order: [first, last) are its
    *  uses (pointers into uses()). */
@@ -58,7 +59,7 @@ public:
 
 private:
   std::vector<std::size_t> m_First;
-  std::vector<EdgeUse> m_Uses;
+  std::vector<EdgeUse, DefaultInitAllocator<EdgeUse>> m_Uses; ///< sized, then filled on every thread
 };
 
 } // namespace slicemesh

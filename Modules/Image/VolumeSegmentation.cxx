@@ -6,12 +6,14 @@
 #include "GrayscaleSegmentation.h"
 #include "StoredVolume.h"
 
+#include "Core/ParallelFor.h"
 #include "Core/SliceMeshTypes.h"
 
 #include "itkOtsuThresholdCalculator.h"
 
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <set>
 #include <sstream>
 #include <type_traits>
@@ -167,21 +169,28 @@ MaskVolume::Pointer allocateMaskLike(const itk::ImageBase<3>* volume)
   return mask;
 }
 
-/** Fills the mask with 1 where inside(voxel) holds; returns the count of inside voxels. */
+/** Fills the mask with 1 where inside(voxel) holds; returns the count of inside voxels. In ranges
+ *  on every thread: on one, this pass over a large volume (and the first touch of the mask's pages)
+ *  kept the other cores waiting at the start of a run. */
 template <typename TImage, typename InsideTest>
 std::size_t fillMask(const TImage* volume, MaskVolume* mask, InsideTest inside)
 {
   const auto* voxel = volume->GetBufferPointer();
   const std::size_t count = volume->GetBufferedRegion().GetNumberOfPixels();
   unsigned char* out = mask->GetBufferPointer();
-  std::size_t insideCount = 0;
-  for (std::size_t n = 0; n < count; ++n)
-  {
-    const bool in = inside(voxel[n]);
-    out[n] = in ? 1 : 0;
-    insideCount += in;
-  }
-  return insideCount;
+  constexpr std::size_t voxelsPerRange = std::size_t(1) << 20;
+  const std::vector<std::size_t> insideCounts =
+    fixedRangeResults<std::size_t>(count, voxelsPerRange, 0,
+                                   [&](std::size_t& insideCount, std::size_t first, std::size_t last)
+                                   {
+                                     for (std::size_t n = first; n < last; ++n)
+                                     {
+                                       const bool in = inside(voxel[n]);
+                                       out[n] = in ? 1 : 0;
+                                       insideCount += in;
+                                     }
+                                   });
+  return std::accumulate(insideCounts.begin(), insideCounts.end(), std::size_t(0));
 }
 
 std::string listOfLabels(const std::vector<double>& labels)
