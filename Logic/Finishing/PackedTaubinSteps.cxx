@@ -56,25 +56,34 @@ void PackedPoints::unpackInto(std::vector<Point3>& points) const
     points[v] = unpack(v);
 }
 
-NeighbourSlots::NeighbourSlots(const std::vector<std::size_t>& first, const std::vector<std::int32_t>& neighbours)
+NeighbourSlots::NeighbourSlots(const std::vector<std::size_t>& first, const std::vector<std::int32_t>& neighbours,
+                               unsigned int threads)
   : zero(first.size() - 1)
 {
-  ids.assign(slots * zero, static_cast<std::int32_t>(zero));
-  inverseCount.resize(zero);
+  // Where each vertex's neighbours past the eighth go, then every vertex's slots on its own.
   moreOf.assign(zero + 1, 0);
   for (std::size_t v = 0; v < zero; ++v)
-  {
-    const std::size_t begin = first[v], end = first[v + 1];
-    if (begin == end)
-      std::fill_n(ids.begin() + static_cast<std::ptrdiff_t>(slots * v), slots, static_cast<std::int32_t>(v));
-    for (std::size_t i = begin; i < end; ++i)
-      if (i - begin < slots)
-        ids[slots * v + (i - begin)] = neighbours[i];
-      else
-        more.push_back(neighbours[i]);
-    moreOf[v + 1] = more.size();
-    inverseCount[v] = 1.0f / static_cast<float>(begin == end ? slots : end - begin);
-  }
+    moreOf[v + 1] = moreOf[v] + (first[v + 1] - first[v] > slots ? first[v + 1] - first[v] - slots : 0);
+  ids.resize(slots * zero);
+  inverseCount.resize(zero);
+  more.resize(moreOf[zero]);
+  parallelForRanges(zero, threads,
+                    [&](std::size_t firstVertex, std::size_t lastVertex)
+                    {
+                      for (std::size_t v = firstVertex; v < lastVertex; ++v)
+                      {
+                        const std::size_t begin = first[v], end = first[v + 1];
+                        // Unused slots name the extra point (at the origin); an isolated vertex's, itself.
+                        std::fill_n(ids.begin() + static_cast<std::ptrdiff_t>(slots * v), slots,
+                                    static_cast<std::int32_t>(begin == end ? v : zero));
+                        for (std::size_t i = begin; i < end; ++i)
+                          if (i - begin < slots)
+                            ids[slots * v + (i - begin)] = neighbours[i];
+                          else
+                            more[moreOf[v] + (i - begin - slots)] = neighbours[i];
+                        inverseCount[v] = 1.0f / static_cast<float>(begin == end ? slots : end - begin);
+                      }
+                    });
 }
 
 PackedBound::PackedBound(const std::vector<Float4>& start, const std::array<double, 3>& bound, bool active)
@@ -114,11 +123,11 @@ void packedUmbrellaStep(std::vector<Float4>& points, const NeighbourSlots& neigh
 
 TaubinPairs::TaubinPairs(const std::vector<Point3>& startPoints, const std::vector<std::size_t>& first,
                          const std::vector<std::int32_t>& ids, const std::array<double, 3>& displacementBound,
-                         bool bounded, std::vector<std::size_t> heldVertices)
+                         bool bounded, std::vector<std::size_t> heldVertices, unsigned int threads)
   : packed(startPoints)
   , start(packed.data())
   , scratch(packed.data())
-  , neighbours(first, ids)
+  , neighbours(first, ids, threads)
   , free(start, {}, false)
   , bound(start, displacementBound, bounded)
   , held(std::move(heldVertices))

@@ -48,8 +48,10 @@ private:
 struct NeighbourSlots
 {
   static constexpr std::size_t slots = 8;
-  /** From compressed rows: the neighbours of v are ids[first[v]] .. ids[first[v + 1]] - 1. */
-  NeighbourSlots(const std::vector<std::size_t>& first, const std::vector<std::int32_t>& ids);
+  /** From compressed rows: the neighbours of v are ids[first[v]] .. ids[first[v + 1]] - 1. The
+   *  vertices side by side on `threads` threads (the same slots for any number). */
+  NeighbourSlots(const std::vector<std::size_t>& first, const std::vector<std::int32_t>& ids,
+                 unsigned int threads = 1);
 
   std::vector<std::int32_t> ids;   ///< vertex v's slots are ids[slots * v] .. ids[slots * v + slots - 1]
   std::vector<float> inverseCount; ///< 1 / the number of neighbours (1 / slots when isolated)
@@ -103,10 +105,11 @@ class TaubinPairs
 {
 public:
   /** `first`/`ids`: the vertices' neighbours in compressed rows; `bound`, `bounded`: the smoothing's
-   *  displacement bound; `held`: vertices put back where they started after every pair. */
+   *  displacement bound; `held`: vertices put back where they started after every pair; `threads`:
+   *  for laying out the neighbours. */
   TaubinPairs(const std::vector<Point3>& start, const std::vector<std::size_t>& first,
               const std::vector<std::int32_t>& ids, const std::array<double, 3>& bound, bool bounded,
-              std::vector<std::size_t> held);
+              std::vector<std::size_t> held, unsigned int threads = 1);
   // Its bounds refer to its own start points: not to be copied.
   TaubinPairs(const TaubinPairs&) = delete;
   TaubinPairs& operator=(const TaubinPairs&) = delete;

@@ -91,15 +91,13 @@ VertexNeighbours neighboursOf(const TriangleMesh& mesh, const std::vector<std::i
  *  (In Morton order of a grid over the bounding box, 1% of the edges joined vertices tens of
  *  thousands of rows apart, and a step waited on memory for them; in the remesh's own order,
  *  splits appended at the end, far more.) */
-std::vector<std::int32_t> breadthFirstOrder(const TriangleMesh& mesh, unsigned int threads)
+std::vector<std::int32_t> breadthFirstOrder(const VertexNeighbours& neighbours)
 {
-  std::vector<std::int32_t> identity(mesh.points.size());
-  std::iota(identity.begin(), identity.end(), 0);
-  const VertexNeighbours neighbours = neighboursOf(mesh, identity, threads);
-  std::vector<char> reached(mesh.points.size(), 0);
+  const std::size_t vertices = neighbours.first.size() - 1;
+  std::vector<char> reached(vertices, 0);
   std::vector<std::int32_t> order;
-  order.reserve(mesh.points.size());
-  for (std::size_t seed = 0; seed < mesh.points.size(); ++seed)
+  order.reserve(vertices);
+  for (std::size_t seed = 0; seed < vertices; ++seed)
   {
     if (reached[seed])
       continue;
@@ -120,6 +118,39 @@ std::vector<std::int32_t> breadthFirstOrder(const TriangleMesh& mesh, unsigned i
     }
   }
   return order;
+}
+
+/** The neighbours by vertex (`byVertex`) with the rows in `order` and numbered by rank (row i holds
+ *  vertex order[i]'s, as the ranks of their vertices): what neighboursOf(mesh, rank) gives, from the
+ *  table already made rather than from the triangles again, whose two passes ran on one thread. */
+VertexNeighbours renumbered(const VertexNeighbours& byVertex, const std::vector<std::int32_t>& order,
+                            const std::vector<std::int32_t>& rank, unsigned int threads)
+{
+  const std::size_t vertices = order.size();
+  VertexNeighbours rows;
+  rows.first.assign(vertices + 1, 0);
+  rows.inverseCount.resize(vertices);
+  for (std::size_t row = 0; row < vertices; ++row)
+  {
+    const auto v = static_cast<std::size_t>(order[row]);
+    rows.first[row + 1] = rows.first[row] + (byVertex.first[v + 1] - byVertex.first[v]);
+    rows.inverseCount[row] = byVertex.inverseCount[v];
+  }
+  rows.ids.resize(rows.first[vertices]);
+  parallelForRanges(vertices, threads,
+                    [&](std::size_t firstRow, std::size_t lastRow)
+                    {
+                      for (std::size_t row = firstRow; row < lastRow; ++row)
+                      {
+                        const auto v = static_cast<std::size_t>(order[row]);
+                        const auto to = rows.ids.begin() + static_cast<std::ptrdiff_t>(rows.first[row]);
+                        for (std::size_t k = byVertex.first[v]; k < byVertex.first[v + 1]; ++k)
+                          to[static_cast<std::ptrdiff_t>(k - byVertex.first[v])] =
+                            rank[static_cast<std::size_t>(byVertex.ids[k])];
+                        std::sort(to, rows.ids.begin() + static_cast<std::ptrdiff_t>(rows.first[row + 1]));
+                      }
+                    });
+  return rows;
 }
 
 /** Where a vertex may go: within the ellipsoid of semi-axes `bound` around its start (inactive:
@@ -543,11 +574,13 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
                               [](double axis) { return axis > 0.0 && std::isfinite(axis); }))
     throw Error("surface smoothing: the displacement bound must be positive along every axis, or 0 along all");
   // The steps run on the vertices in breadth-first order (points[i] is vertex order[i]).
-  const std::vector<std::int32_t> order = breadthFirstOrder(mesh, threads);
-  std::vector<std::int32_t> rank(order.size());
+  std::vector<std::int32_t> rank(mesh.points.size());
+  std::iota(rank.begin(), rank.end(), 0);
+  VertexNeighbours neighbours = neighboursOf(mesh, rank, threads); // by vertex, then by rank below
+  const std::vector<std::int32_t> order = breadthFirstOrder(neighbours);
   for (std::size_t i = 0; i < order.size(); ++i)
     rank[static_cast<std::size_t>(order[i])] = static_cast<std::int32_t>(i);
-  const VertexNeighbours neighbours = neighboursOf(mesh, rank, threads);
+  neighbours = renumbered(neighbours, order, rank, threads);
   std::vector<Point3> start(order.size());
   for (std::size_t i = 0; i < order.size(); ++i)
     start[i] = mesh.points[static_cast<std::size_t>(order[i])];
@@ -573,7 +606,7 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
   std::vector<char> sharp;
   {
     // On a packed copy of the points (PackedTaubinSteps.h), freed before the relaxation's.
-    TaubinPairs pairs(start, neighbours.first, neighbours.ids, options.maxDisplacement, bounded, heldRows);
+    TaubinPairs pairs(start, neighbours.first, neighbours.ids, options.maxDisplacement, bounded, heldRows, threads);
     pairs.run(wholePairs, lambda, mu, threads);
     if (options.iterations > wholePairs)
     {

@@ -1,6 +1,7 @@
 #include "Measures/SelfIntersections.h"
 
 #include "Core/BoundingBox.h"
+#include "Core/DefaultInitAllocator.h"
 #include "Core/GridCellSize.h"
 #include "Core/ParallelFor.h"
 #include "Measures/TrianglesMeetingBoxes.h"
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <mutex>
+#include <numeric>
 
 namespace slicemesh
 {
@@ -70,7 +72,7 @@ private:
 };
 
 /** The grid over the boxes (chooseCellSize), at most 2^21 cells along an axis as a key names. */
-CellGrid gridFor(const std::vector<BoundingBox>& boxes, const BoundingBox& all)
+CellGrid gridFor(const std::vector<BoundingBox>& boxes, const BoundingBox& all, unsigned int threads)
 {
   const double extent = std::max({ all.high[0] - all.low[0], all.high[1] - all.low[1], all.high[2] - all.low[2] });
   std::vector<double> sides;
@@ -81,13 +83,26 @@ CellGrid gridFor(const std::vector<BoundingBox>& boxes, const BoundingBox& all)
                                                [&](double size)
                                                {
                                                  const CellGrid grid(all.low, size);
-                                                 std::uint64_t covered = 0;
-                                                 for (const BoundingBox& box : boxes)
-                                                   covered += grid.cellsOf(box);
-                                                 return covered;
+                                                 const std::vector<std::uint64_t> covered =
+                                                   fixedRangeResults<std::uint64_t>(
+                                                     boxes.size(), 65536, threads,
+                                                     [&](std::uint64_t& sum, std::size_t first, std::size_t last)
+                                                     {
+                                                       for (std::size_t b = first; b < last; ++b)
+                                                         sum += grid.cellsOf(boxes[b]);
+                                                     });
+                                                 return std::accumulate(covered.begin(), covered.end(), std::uint64_t(0));
                                                });
   return CellGrid(all.low, choice.size);
 }
+
+/** A box filed under one cell of the grid (the cell's key), in the order of cell, then box. */
+struct CellEntry
+{
+  std::uint64_t key;
+  std::uint32_t box;
+  bool operator<(const CellEntry& other) const { return key != other.key ? key < other.key : box < other.box; }
+};
 
 /** A triangle as the pair test reads it: its corners' vertex numbers and points. */
 struct TriangleCorners
@@ -234,7 +249,7 @@ std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(c
   // Every box in every cell it covers, grouped by cell: the entries are dealt into a fixed number of
   // bins by their cell, each bin sorted on its own. Which bin a cell falls in does not matter, since
   // the pairs found are sorted at the end.
-  const CellGrid grid = gridFor(boxes, all);
+  const CellGrid grid = gridFor(boxes, all, threads);
   constexpr std::size_t bins = 256;
   auto binOf = [](std::uint64_t key) { return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 56); };
   // Ranges of boxes fixed by the count alone, so that the layout does not depend on the threads.
@@ -262,7 +277,7 @@ std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(c
     }
     binStart[bin + 1] = at;
   }
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> entries(binStart[bins]);
+  std::vector<CellEntry, DefaultInitAllocator<CellEntry>> entries(binStart[bins]); // filled on every thread below
   parallelForFixedRanges(boxes.size(), boxesPerRange, threads,
                          [&](std::size_t r, std::size_t firstBox, std::size_t lastBox)
                          {
@@ -278,11 +293,6 @@ std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(c
                 std::sort(entries.begin() + static_cast<std::ptrdiff_t>(binStart[bin]),
                           entries.begin() + static_cast<std::ptrdiff_t>(binStart[bin + 1]));
               });
-  std::vector<std::size_t> groupStart;
-  for (std::size_t e = 0; e < entries.size(); ++e)
-    if (e == 0 || entries[e].first != entries[e - 1].first)
-      groupStart.push_back(e);
-  groupStart.push_back(entries.size());
   // Each pair of overlapping boxes is tested once: in the cell of the lower corner of their overlap,
   // which is the larger of the two boxes' lower cells along each axis (a cell index only grows with
   // the coordinate), taken per box once here rather than per pair.
@@ -293,39 +303,41 @@ std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(c
                       for (std::size_t b = first; b < last; ++b)
                         lowCell[b] = grid.cellOf(boxes[b].low);
                     });
+  // Bin by bin side by side: a cell's entries all lie in its bin, together once the bin is sorted.
   std::mutex found;
-  parallelForRanges(groupStart.size() - 1, threads,
-                    [&](std::size_t firstGroup, std::size_t lastGroup)
+  parallelFor(bins, threads,
+              [&](std::size_t bin)
+              {
+                std::vector<std::pair<std::size_t, std::size_t>> local;
+                std::vector<CellMember> members;
+                for (std::size_t e = binStart[bin]; e < binStart[bin + 1];)
+                {
+                  const std::uint64_t cell = entries[e].key;
+                  members.clear(); // the cell's triangles, copied side by side (CellMember)
+                  for (; e < binStart[bin + 1] && entries[e].key == cell; ++e)
+                  {
+                    const std::uint32_t b = entries[e].box;
+                    members.push_back({ boxes[b], lowCell[b], boxed[b], cornersOf(mesh, boxed[b]) });
+                  }
+                  for (std::size_t i = 0; i < members.size(); ++i)
+                    for (std::size_t j = i + 1; j < members.size(); ++j)
                     {
-                      std::vector<std::pair<std::size_t, std::size_t>> local;
-                      std::vector<CellMember> members;
-                      for (std::size_t g = firstGroup; g < lastGroup; ++g)
-                      {
-                        members.clear(); // the cell's triangles, copied side by side (CellMember)
-                        for (std::size_t e = groupStart[g]; e < groupStart[g + 1]; ++e)
-                        {
-                          const std::uint32_t b = entries[e].second;
-                          members.push_back({ boxes[b], lowCell[b], boxed[b], cornersOf(mesh, boxed[b]) });
-                        }
-                        const std::uint64_t cell = entries[groupStart[g]].first;
-                        for (std::size_t i = 0; i < members.size(); ++i)
-                          for (std::size_t j = i + 1; j < members.size(); ++j)
-                          {
-                            const CellMember& a = members[i];
-                            const CellMember& b = members[j];
-                            if (!overlap(a.box, b.box))
-                              continue;
-                            if (CellGrid::key(std::max(a.lowCell[0], b.lowCell[0]), std::max(a.lowCell[1], b.lowCell[1]),
-                                              std::max(a.lowCell[2], b.lowCell[2])) != cell)
-                              continue;
-                            if (crossing(a.corners, b.corners))
-                              local.emplace_back(std::min(a.triangle, b.triangle), std::max(a.triangle, b.triangle));
-                          }
-                      }
-                      const std::lock_guard<std::mutex> lock(found);
-                      pairs.insert(pairs.end(), local.begin(), local.end());
-                    },
-                    64);
+                      const CellMember& a = members[i];
+                      const CellMember& b = members[j];
+                      if (!overlap(a.box, b.box))
+                        continue;
+                      if (CellGrid::key(std::max(a.lowCell[0], b.lowCell[0]), std::max(a.lowCell[1], b.lowCell[1]),
+                                        std::max(a.lowCell[2], b.lowCell[2])) != cell)
+                        continue;
+                      if (crossing(a.corners, b.corners))
+                        local.emplace_back(std::min(a.triangle, b.triangle), std::max(a.triangle, b.triangle));
+                    }
+                }
+                if (local.empty())
+                  return;
+                const std::lock_guard<std::mutex> lock(found);
+                pairs.insert(pairs.end(), local.begin(), local.end());
+              });
   std::sort(pairs.begin(), pairs.end());
   return pairs;
 }
