@@ -7,6 +7,8 @@
 #ifndef MappedAllocator_h
 #define MappedAllocator_h
 
+#include "Core/HugePages.h"
+
 #include <cstddef>
 #include <memory>
 #include <new>
@@ -41,6 +43,7 @@ struct MappedAllocator
       void* p = mmap(nullptr, n * sizeof(T), PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
       if (p == MAP_FAILED)
         throw std::bad_alloc();
+      adviseHugePages(p, n * sizeof(T));
       return static_cast<T*>(p);
     }
 #endif

@@ -3,6 +3,7 @@
 
 #include "Core/Determinant3.h"
 #include "Core/Lowercase.h"
+#include "Core/ParallelFor.h"
 #include "DeflateCompressor.h"
 
 #include <vtkAlgorithm.h>
@@ -378,25 +379,35 @@ TriangleMesh mapToPhysicalSpace(const TriangleMesh& stackMesh, const SliceFrame&
   // LPS -> RAS negates x and y: a rotation by 180 degrees (determinant +1), so only the
   // direction matrix can mirror the mesh.
   const double sign = system == CoordinateSystem::RAS ? -1.0 : 1.0;
+  // A mirror turns outward normals inward; swapping two corners turns them back.
+  const bool mirrored = determinant3(d) < 0.0;
   TriangleMesh physical;
-  physical.points.reserve(stackMesh.points.size());
-  for (const Point3& s : stackMesh.points)
-  {
-    Point3 p;
-    p.x = sign * (frame.origin[0] + d[0][0] * s.x + d[0][1] * s.y + d[0][2] * s.z);
-    p.y = sign * (frame.origin[1] + d[1][0] * s.x + d[1][1] * s.y + d[1][2] * s.z);
-    p.z = frame.origin[2] + d[2][0] * s.x + d[2][1] * s.y + d[2][2] * s.z;
-    physical.points.push_back(p);
-  }
-  physical.triangles = stackMesh.triangles;
-  if (determinant3(d) < 0.0)
-  {
-    // A mirror turns outward normals inward; swapping two corners turns them back.
-    for (Triangle& t : physical.triangles)
-    {
-      std::swap(t[1], t[2]);
-    }
-  }
+  physical.points.resize(stackMesh.points.size());
+  physical.triangles.resize(stackMesh.triangles.size());
+  // On every thread: a large surface's copy ran on one while the other waited before the writing.
+  parallelForRanges(stackMesh.points.size(), 0,
+                    [&](std::size_t first, std::size_t last)
+                    {
+                      for (std::size_t v = first; v < last; ++v)
+                      {
+                        const Point3& s = stackMesh.points[v];
+                        Point3& p = physical.points[v];
+                        p.x = sign * (frame.origin[0] + d[0][0] * s.x + d[0][1] * s.y + d[0][2] * s.z);
+                        p.y = sign * (frame.origin[1] + d[1][0] * s.x + d[1][1] * s.y + d[1][2] * s.z);
+                        p.z = frame.origin[2] + d[2][0] * s.x + d[2][1] * s.y + d[2][2] * s.z;
+                      }
+                    });
+  parallelForRanges(stackMesh.triangles.size(), 0,
+                    [&](std::size_t first, std::size_t last)
+                    {
+                      for (std::size_t t = first; t < last; ++t)
+                      {
+                        Triangle& triangle = physical.triangles[t];
+                        triangle = stackMesh.triangles[t];
+                        if (mirrored)
+                          std::swap(triangle[1], triangle[2]);
+                      }
+                    });
   return physical;
 }
 
