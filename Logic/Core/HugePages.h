@@ -6,6 +6,7 @@
 #ifndef HugePages_h
 #define HugePages_h
 
+#include <cerrno>
 #include <cstddef>
 #include <cstdint>
 
@@ -28,7 +29,11 @@ inline void adviseHugePages(void* p, std::size_t size) noexcept
   const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(p) + hugePage - 1) & ~(hugePage - 1);
   const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(p) + size) & ~(hugePage - 1);
   if (end > begin)
+  {
+    const int savedErrno = errno; // advice from within an allocation must not leave an error behind
     madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+    errno = savedErrno;
+  }
 #else
   (void)p;
   (void)size;

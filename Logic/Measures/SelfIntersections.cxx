@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <mutex>
 #include <numeric>
 
@@ -247,14 +248,21 @@ std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(c
     return pairs;
 
   // Every box in every cell it covers, grouped by cell: the entries are dealt into a fixed number of
-  // bins by their cell, each bin sorted on its own. A bin is a slab of cells across x, so that the
-  // cells walked one after another are neighbours in space, whose triangles (and the mesh's data for
-  // them) are mostly the same: dealt by a hash of the cell, each cell's triangles were read from
-  // memory afresh, and that wait was most of the test's time. The pairs found are sorted at the end.
+  // bins by their cell, each bin sorted on its own. A bin is a run of the grid's rows of cells along
+  // z, taken in the order of x then y, so that the cells walked one after another are neighbours in
+  // space, whose triangles (and the mesh's data for them) are mostly the same: dealt by a hash of the
+  // cell, each cell's triangles were read from memory afresh, and that wait was most of the test's
+  // time. (Runs of rows, not slabs across x: a surface one cell wide along x would be one bin.) The
+  // pairs found are sorted at the end.
   const CellGrid grid = gridFor(boxes, all, threads);
   constexpr std::size_t bins = 256;
-  const std::uint64_t cellsAlongX = grid.cellOf(all.high)[0] + 1;
-  auto binOf = [&](std::uint64_t key) { return static_cast<std::size_t>((key >> 42) * bins / cellsAlongX); };
+  const std::array<std::uint64_t, 3> lastCell = grid.cellOf(all.high);
+  const std::uint64_t rowsAlongY = lastCell[1] + 1, rows = (lastCell[0] + 1) * rowsAlongY;
+  auto binOf = [&](std::uint64_t key)
+  {
+    const std::uint64_t row = (key >> 42) * rowsAlongY + ((key >> 21) & ((std::uint64_t(1) << 21) - 1));
+    return static_cast<std::size_t>(row * bins / rows);
+  };
   // Ranges of boxes fixed by the count alone, so that the layout does not depend on the threads.
   constexpr std::size_t boxesPerRange = 16384;
   const std::size_t ranges = fixedRangeCount(boxes.size(), boxesPerRange);
@@ -328,8 +336,10 @@ std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(c
                   // next ones until one starts past its high x (every pair of a cell of a few dozen
                   // boxes compared was most of the test's time).
                   byLowX.clear();
-                  for (std::size_t i = 0; i < members.size(); ++i)
-                    byLowX.emplace_back(members[i].box.low[0], static_cast<std::uint32_t>(i));
+                  for (std::size_t i = 0; i < members.size(); ++i) // a box of no number first: it meets none
+                    byLowX.emplace_back(std::isnan(members[i].box.low[0]) ? -std::numeric_limits<double>::infinity()
+                                                                           : members[i].box.low[0],
+                                        static_cast<std::uint32_t>(i));
                   std::sort(byLowX.begin(), byLowX.end());
                   for (std::size_t i = 0; i < byLowX.size(); ++i)
                     for (std::size_t j = i + 1; j < byLowX.size() && byLowX[j].first <= members[byLowX[i].second].box.high[0]; ++j)

@@ -18,7 +18,7 @@ namespace slicemesh
 namespace
 {
 
-#if defined(__linux__)
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
 /** The kernel's flags of the mapping that holds `address` (VmFlags of /proc/self/smaps), or "" if
  *  none is found. */
 std::string mappingFlags(std::uintptr_t address)
@@ -66,8 +66,12 @@ TEST(HugePages, TheAlignedPagesOfALargeBlockAreMarkedAndASmallBlockIsLeftAlone)
   adviseHugePages(reinterpret_cast<void*>(firstWhole), hugePage);
   EXPECT_FALSE(markedForHugePages(firstWhole));
 
-  // A kernel built without transparent huge pages refuses the advice: nothing is marked there.
-  const bool kernelHasThem = std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled").good();
+  // A kernel without transparent huge pages (or a sandbox's) refuses the advice: asked directly on
+  // a mapping of its own, the kernel says which it does, and nothing is marked where it refuses.
+  void* probe = mmap(nullptr, 2 * hugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  ASSERT_NE(probe, MAP_FAILED);
+  const bool kernelHasThem = madvise(probe, 2 * hugePage, MADV_HUGEPAGE) == 0;
+  munmap(probe, 2 * hugePage);
   adviseHugePages(block, size);
   EXPECT_EQ(markedForHugePages(firstWhole), kernelHasThem);
   EXPECT_EQ(markedForHugePages(firstWhole + 3 * hugePage), kernelHasThem);
