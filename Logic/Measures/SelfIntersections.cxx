@@ -44,6 +44,9 @@ public:
   }
 
   static std::uint64_t key(std::uint64_t x, std::uint64_t y, std::uint64_t z) { return (x << 42) | (y << 21) | z; }
+  /** The cell's x and y indices from its key (key's inverse, but for z). */
+  static std::uint64_t xOfKey(std::uint64_t key) { return key >> 42; }
+  static std::uint64_t yOfKey(std::uint64_t key) { return (key >> 21) & ((std::uint64_t(1) << 21) - 1); }
 
   /** How many cells the box covers. */
   std::uint64_t cellsOf(const BoundingBox& box) const
@@ -260,7 +263,7 @@ std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(c
   const std::uint64_t rowsAlongY = lastCell[1] + 1, rows = (lastCell[0] + 1) * rowsAlongY;
   auto binOf = [&](std::uint64_t key)
   {
-    const std::uint64_t row = (key >> 42) * rowsAlongY + ((key >> 21) & ((std::uint64_t(1) << 21) - 1));
+    const std::uint64_t row = CellGrid::xOfKey(key) * rowsAlongY + CellGrid::yOfKey(key);
     return static_cast<std::size_t>(row * bins / rows);
   };
   // Ranges of boxes fixed by the count alone, so that the layout does not depend on the threads.
