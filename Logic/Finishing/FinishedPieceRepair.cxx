@@ -50,7 +50,7 @@ void resmoothedAfterRepair(TriangleMesh& mesh, const std::vector<Point3>& smooth
   const MeshValidation repairedValidation = validation;
   const std::vector<char> moved = movedVertices(repaired, smoothed);
   mesh.points = smoothed;
-  validation = validateMeshAfterMoving(mesh, validation.selfIntersectionChecked, moved, crossings);
+  validation = validateMeshAfterMovingPoints(mesh, validation, moved, crossings);
   unsmoothCrossings(mesh, unsmoothed, validation, crossings);
   if (!rejection(validation, repairedValidation).empty()) // as repaired, then
   {

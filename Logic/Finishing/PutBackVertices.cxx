@@ -56,7 +56,7 @@ std::size_t unsmoothCrossings(TriangleMesh& mesh, const std::vector<Point3>& uns
   {
     std::vector<char> movedBack(mesh.points.size(), 0);
     moved += unsmoothAround(mesh, unsmoothed, crossings, rings, movedBack);
-    validation = validateMeshAfterMoving(mesh, validation.selfIntersectionChecked, movedBack, crossings);
+    validation = validateMeshAfterMovingPoints(mesh, validation, movedBack, crossings);
   }
   return moved;
 }

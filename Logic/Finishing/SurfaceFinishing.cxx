@@ -193,7 +193,7 @@ void relaxBesidePutBack(TriangleMesh& mesh, const std::vector<Point3>& unsmoothe
   // The piece as it was had no crossings (validation): only the relaxed vertices' triangles are tested.
   std::vector<std::pair<std::size_t, std::size_t>> crossings;
   MeshValidation after =
-    validateMeshAfterMoving(relaxed, validation.selfIntersectionChecked, movedVertices(mesh.points, relaxed.points), crossings);
+    validateMeshAfterMovingPoints(relaxed, validation, movedVertices(mesh.points, relaxed.points), crossings);
   // Where the relaxation made sheets meet, its vertices go back to where they were before it.
   unsmoothCrossings(relaxed, mesh.points, after, crossings);
   if (after.selfIntersections == 0 && rejection(after, validation).empty())

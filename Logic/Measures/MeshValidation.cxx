@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <sstream>
 
@@ -22,6 +23,152 @@ namespace
 
 /** Triangles or vertices per range of the validation's parallel passes. */
 constexpr std::size_t rangeSize = 8192;
+
+/** Two triangles on one edge fold onto each other: their unit normals within a degree of opposite. */
+bool folded(const std::array<float, 3>& m, const std::array<float, 3>& n)
+{
+  const double foldCosine = std::cos(M_PI / 180.0);
+  return static_cast<double>(m[0]) * n[0] + static_cast<double>(m[1]) * n[1] + static_cast<double>(m[2]) * n[2] <
+         -foldCosine;
+}
+
+/** A triangle's unit normal in single precision (they only tell folds, far above its rounding);
+ *  zero without area. `n`: its area normal, `twiceArea` that normal's length. */
+std::array<float, 3> unitNormal(const Point3& n, double twiceArea)
+{
+  return twiceArea > 0.0 ? std::array<float, 3>{ static_cast<float>(n.x / twiceArea), static_cast<float>(n.y / twiceArea),
+                                                 static_cast<float>(n.z / twiceArea) }
+                         : std::array<float, 3>{ 0.0F, 0.0F, 0.0F };
+}
+
+std::array<float, 3> unitNormalOf(const TriangleMesh& mesh, std::size_t f)
+{
+  const Triangle& t = mesh.triangles[f];
+  const Point3 n = areaNormal(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+  return unitNormal(n, std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z));
+}
+
+/** What the points alone decide of a validation, triangle by triangle: degenerate triangles, area,
+ *  smallest angles; and each triangle's unit normal into `normals` when given. On every core, in
+ *  ranges fixed by the mesh, added in range order: the same sums whatever the threads. */
+void measureTriangles(const TriangleMesh& mesh, MeshValidation& v, std::vector<std::array<float, 3>>* normals)
+{
+  const double cos30 = std::cos(M_PI / 6.0);
+  const std::size_t nTriangles = mesh.triangles.size();
+  struct TriangleSums
+  {
+    std::size_t degenerate = 0, below30 = 0;
+    double area = 0.0, largestCosine = -1.0; // of the smallest angle of any triangle
+  };
+  const std::vector<TriangleSums> triangleSums = fixedRangeResults<TriangleSums>(
+    nTriangles, rangeSize, 0,
+    [&](TriangleSums& sums, std::size_t firstTriangle, std::size_t lastTriangle)
+    {
+      for (std::size_t f = firstTriangle; f < lastTriangle; ++f)
+      {
+        const Triangle& t = mesh.triangles[f];
+        const Point3* p[3] = { &mesh.points[t[0]], &mesh.points[t[1]], &mesh.points[t[2]] };
+        const Point3 n = areaNormal(*p[0], *p[1], *p[2]);
+        const double twiceArea = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || twiceArea == 0.0)
+          ++sums.degenerate;
+        if (normals)
+          (*normals)[f] = unitNormal(n, twiceArea);
+        sums.area += 0.5 * twiceArea;
+        const double cosine = smallestAngleCosine(*p[0], *p[1], *p[2]);
+        sums.largestCosine = std::max(sums.largestCosine, cosine);
+        sums.below30 += cosine > cos30;
+      }
+    });
+  double largestCosine = -1.0;
+  std::size_t below30 = 0;
+  v.degenerateTriangles = 0;
+  v.area = 0.0;
+  for (const TriangleSums& sums : triangleSums)
+  {
+    v.degenerateTriangles += sums.degenerate;
+    v.area += sums.area;
+    largestCosine = std::max(largestCosine, sums.largestCosine);
+    below30 += sums.below30;
+  }
+  v.minAngleDegrees = nTriangles == 0 ? 0.0 : std::acos(std::clamp(largestCosine, -1.0, 1.0)) * 180.0 / M_PI;
+  v.fractionAnglesBelow30 = nTriangles == 0 ? 0.0 : static_cast<double>(below30) / static_cast<double>(nTriangles);
+}
+
+/** The volume and the components' orientation, once the rest of `v` is known. */
+void measureVolumeAndOrientation(const TriangleMesh& mesh, MeshValidation& v)
+{
+  v.volume = signedVolume(mesh);
+  v.misorientedComponents = 0;
+  if (v.closed() && v.manifold() && v.inconsistentEdges == 0)
+    v.misorientedComponents = v.components == 1 ? (v.volume > 0.0 ? 0 : 1) : misorientedComponents(mesh);
+}
+
+/** The folded edges among the edges of the triangles with a corner flagged in `moved`, on a closed
+ *  mesh whose every edge has two triangles. Both triangles of such an edge have a corner among the
+ *  corners of those triangles: only the triangles with one are gathered, and their edges sorted. */
+std::size_t foldedEdgesAroundMoved(const TriangleMesh& mesh, const std::vector<char>& moved)
+{
+  const std::size_t nTriangles = mesh.triangles.size();
+  auto withCornerIn = [&](const std::vector<char>& flags)
+  {
+    std::vector<std::uint32_t> found;
+    for (const std::vector<std::uint32_t>& range : fixedRangeResults<std::vector<std::uint32_t>>(
+           nTriangles, rangeSize, 0,
+           [&](std::vector<std::uint32_t>& triangles, std::size_t first, std::size_t last)
+           {
+             for (std::size_t f = first; f < last; ++f)
+             {
+               const Triangle& t = mesh.triangles[f];
+               if (flags[static_cast<std::size_t>(t[0])] || flags[static_cast<std::size_t>(t[1])] ||
+                   flags[static_cast<std::size_t>(t[2])])
+                 triangles.push_back(static_cast<std::uint32_t>(f));
+             }
+           }))
+      found.insert(found.end(), range.begin(), range.end());
+    return found;
+  };
+  const std::vector<std::uint32_t> touched = withCornerIn(moved);
+  if (touched.empty())
+    return 0;
+  std::vector<char> near(mesh.points.size(), 0);
+  for (const std::uint32_t f : touched)
+    for (const std::int32_t v : mesh.triangles[f])
+      near[static_cast<std::size_t>(v)] = 1;
+  // Each edge of the triangles around, keyed by its ends, with its triangle and whether that one moved.
+  struct EdgeOfTriangle
+  {
+    std::uint64_t key;
+    std::uint32_t triangle;
+    bool operator<(const EdgeOfTriangle& other) const
+    {
+      return key < other.key || (key == other.key && triangle < other.triangle);
+    }
+  };
+  std::vector<EdgeOfTriangle> edges;
+  for (const std::uint32_t f : withCornerIn(near))
+  {
+    const Triangle& t = mesh.triangles[f];
+    for (int i = 0; i < 3; ++i)
+    {
+      const auto a = static_cast<std::uint32_t>(t[i]), b = static_cast<std::uint32_t>(t[(i + 1) % 3]);
+      edges.push_back({ static_cast<std::uint64_t>(std::min(a, b)) << 32 | std::max(a, b), f });
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  std::size_t count = 0;
+  for (std::size_t e = 0; e + 1 < edges.size(); ++e)
+  {
+    if (edges[e].key != edges[e + 1].key)
+      continue;
+    const std::uint32_t f = edges[e].triangle, g = edges[e + 1].triangle;
+    ++e;
+    if (!std::binary_search(touched.begin(), touched.end(), f) && !std::binary_search(touched.begin(), touched.end(), g))
+      continue; // neither moved: as it was
+    count += folded(unitNormalOf(mesh, f), unitNormalOf(mesh, g));
+  }
+  return count;
+}
 
 } // namespace
 
@@ -55,8 +202,6 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
   // cosine at the end). The passes over triangles and over vertices run on every core, in ranges
   // fixed by the mesh alone, their counts and sums added in range order: the same result for any
   // number of threads.
-  const double foldCosine = std::cos(M_PI / 180.0); // a dihedral angle under 1 degree
-  const double cos30 = std::cos(M_PI / 6.0);
   MeshValidation v;
   const std::size_t nTriangles = mesh.triangles.size();
   v.triangles = nTriangles;
@@ -67,45 +212,9 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
         throw Error("mesh: a triangle refers to a vertex that does not exist");
 
   // Per triangle: degeneracy, area, unit normal, smallest angle.
-  // Unit normals in single precision: they only tell folds (normals within a degree of opposite,
-  // far above its rounding), and a large piece's array is held while its edges are gathered.
+  // A large piece's normals are held while its edges are gathered: single precision.
   std::vector<std::array<float, 3>> normals(nTriangles);
-  struct TriangleSums
-  {
-    std::size_t degenerate = 0, below30 = 0;
-    double area = 0.0, largestCosine = -1.0; // of the smallest angle of any triangle
-  };
-  const std::vector<TriangleSums> triangleSums = fixedRangeResults<TriangleSums>(
-    nTriangles, rangeSize, 0,
-    [&](TriangleSums& sums, std::size_t firstTriangle, std::size_t lastTriangle)
-    {
-      for (std::size_t f = firstTriangle; f < lastTriangle; ++f)
-      {
-        const Triangle& t = mesh.triangles[f];
-        const Point3* p[3] = { &mesh.points[t[0]], &mesh.points[t[1]], &mesh.points[t[2]] };
-        const Point3 n = areaNormal(*p[0], *p[1], *p[2]);
-        const double twiceArea = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || twiceArea == 0.0)
-          ++sums.degenerate;
-        normals[f] = twiceArea > 0.0 ? std::array<float, 3>{ static_cast<float>(n.x / twiceArea),
-                                                             static_cast<float>(n.y / twiceArea),
-                                                             static_cast<float>(n.z / twiceArea) }
-                                     : std::array<float, 3>{ 0.0F, 0.0F, 0.0F };
-        sums.area += 0.5 * twiceArea;
-        const double cosine = smallestAngleCosine(*p[0], *p[1], *p[2]);
-        sums.largestCosine = std::max(sums.largestCosine, cosine);
-        sums.below30 += cosine > cos30;
-      }
-    });
-  double largestCosine = -1.0;
-  std::size_t below30 = 0;
-  for (const TriangleSums& sums : triangleSums)
-  {
-    v.degenerateTriangles += sums.degenerate;
-    v.area += sums.area;
-    largestCosine = std::max(largestCosine, sums.largestCosine);
-    below30 += sums.below30;
-  }
+  measureTriangles(mesh, v, &normals);
 
   // Edges, gathered by their smaller vertex (EdgeUses): the uses of one undirected edge tell boundary
   // and non-manifold edges, their directions orientation (two uses the same way), and their
@@ -130,13 +239,9 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
               std::size_t forward = first->forward ? 1 : 0;
               const std::array<float, 3>& m = normals[first->triangle];
               for (const EdgeUse* j = first + 1; j != last; ++j)
-              { // unit normals nearly opposite: the triangles lie on top of each other
+              {
                 forward += j->forward ? 1 : 0;
-                const std::array<float, 3>& n = normals[j->triangle];
-                if (static_cast<double>(m[0]) * n[0] + static_cast<double>(m[1]) * n[1] +
-                      static_cast<double>(m[2]) * n[2] <
-                    -foldCosine)
-                  ++counts.folded;
+                counts.folded += folded(m, normals[j->triangle]);
               }
               const auto count = static_cast<std::size_t>(last - first);
               const std::size_t backward = count - forward;
@@ -234,13 +339,9 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
       v.components += pieces.find(p) == p;
     }
   v.vertices = usedCount;
-  v.volume = signedVolume(mesh);
-  if (v.closed() && v.manifold() && v.inconsistentEdges == 0)
-    v.misorientedComponents = v.components == 1 ? (v.volume > 0.0 ? 0 : 1) : misorientedComponents(mesh);
+  measureVolumeAndOrientation(mesh, v);
   v.eulerCharacteristic =
     static_cast<long>(usedCount) - static_cast<long>(edges) + static_cast<long>(nTriangles);
-  v.minAngleDegrees = nTriangles == 0 ? 0.0 : std::acos(std::clamp(largestCosine, -1.0, 1.0)) * 180.0 / M_PI;
-  v.fractionAnglesBelow30 = nTriangles == 0 ? 0.0 : static_cast<double>(below30) / static_cast<double>(nTriangles);
   return v;
 }
 
@@ -279,6 +380,29 @@ MeshValidation validateMeshAfterMoving(const TriangleMesh& mesh, bool checkedBef
     return validateMesh(mesh, crossings);
   return validatedWith(mesh, crossings,
                        [&] { return selfIntersectingTrianglePairsAfterMoving(mesh, crossings, moved); });
+}
+
+MeshValidation validateMeshAfterMovingPoints(const TriangleMesh& mesh, const MeshValidation& before,
+                                             const std::vector<char>& moved,
+                                             std::vector<std::pair<std::size_t, std::size_t>>& crossings)
+{
+  // The triangles are as they were: their edges and vertices' fans, the components and the Euler
+  // characteristic too. On a closed mesh with two triangles on every edge and no folds before, a
+  // fold can only be new, on an edge of a moved triangle.
+  const bool sameEdgesAsBefore = before.triangles == mesh.triangles.size() && moved.size() == mesh.points.size() &&
+                                 before.closed() && before.manifold() && before.inconsistentEdges == 0 &&
+                                 before.foldedEdges == 0;
+  if (!sameEdgesAsBefore)
+    return validateMeshAfterMoving(mesh, before.selfIntersectionChecked, moved, crossings);
+  MeshValidation v = before;
+  measureTriangles(mesh, v, nullptr);
+  v.foldedEdges = foldedEdgesAroundMoved(mesh, moved);
+  measureVolumeAndOrientation(mesh, v);
+  crossings = before.selfIntersectionChecked ? selfIntersectingTrianglePairsAfterMoving(mesh, crossings, moved)
+                                             : selfIntersectingTrianglePairs(mesh);
+  v.selfIntersections = crossings.size();
+  v.selfIntersectionChecked = true;
+  return v;
 }
 
 MeshValidation validateMesh(const TriangleMesh& mesh)

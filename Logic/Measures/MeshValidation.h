@@ -62,6 +62,17 @@ MeshValidation validateMesh(const TriangleMesh& mesh, std::vector<std::pair<std:
 MeshValidation validateMeshAfterMoving(const TriangleMesh& mesh, bool checkedBefore, const std::vector<char>& moved,
                                        std::vector<std::pair<std::size_t, std::size_t>>& crossings);
 
+/** validateMeshAfterMoving for a mesh whose triangles are those `before` validated and whose points
+ *  flagged in `moved` alone have moved since (`crossings`: that validation's pairs, replaced by the
+ *  new ones). What the triangles alone decide (closed, manifold, wound, components, Euler
+ *  characteristic) is `before`'s; the rest is measured again, folds only around the moved points.
+ *  The same result as validateMesh; the edges are not gathered again, which was most of a put-back
+ *  piece's validation. A `before` not closed, manifold and wound alike, or with folds, is validated
+ *  as validateMeshAfterMoving does. */
+MeshValidation validateMeshAfterMovingPoints(const TriangleMesh& mesh, const MeshValidation& before,
+                                             const std::vector<char>& moved,
+                                             std::vector<std::pair<std::size_t, std::size_t>>& crossings);
+
 /** validateMesh without the self-intersection test (selfIntersectionChecked false): the topology,
  *  orientation and measures, in time linear in the triangles (and, for a mesh of several components
  *  whose boxes nest, O(n log n) to tell which component lies inside which). */
