@@ -10,6 +10,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
+#include <numeric>
 
 namespace slicemesh
 {
@@ -38,6 +41,76 @@ Kernel::Triangle_3 triangle(const TriangleMesh& mesh, std::size_t t)
 
 /** Meshes of this many triangles are searched one at a time, each on every thread. */
 constexpr std::size_t largeMesh = 1 << 16;
+
+/** Pairs of meshes with this many triangles within each other's boxes are searched in slabs across x,
+ *  side by side. */
+constexpr std::size_t largePair = 1 << 16;
+
+/** The triangles of `inA` (of one mesh) that cross triangles of `inB` (of another), added to
+ *  `crossing`: CGAL's box intersection, then the exact triangle test, for the pairs `report` takes. */
+template <typename Report>
+void addCrossings(const std::vector<const TriangleMesh*>& meshes, std::vector<Box>& inA, std::vector<Box>& inB,
+                  Report&& report, std::vector<TrianglePair>& crossing)
+{
+  CGAL::box_intersection_d(inA.begin(), inA.end(), inB.begin(), inB.end(),
+                           [&](const Box& x, const Box& y)
+                           {
+                             if (!report(x, y))
+                               return;
+                             const MeshTriangle tx{ x.info().first, x.info().second };
+                             const MeshTriangle ty{ y.info().first, y.info().second };
+                             if (CGAL::do_intersect(triangle(*meshes[tx.mesh], tx.triangle),
+                                                    triangle(*meshes[ty.mesh], ty.triangle)))
+                               crossing.push_back(tx.mesh < ty.mesh ? TrianglePair{ tx, ty } : TrianglePair{ ty, tx });
+                           });
+}
+
+/** addCrossings for a large pair, in slabs across x on every thread: each box goes to every slab it
+ *  reaches, and a pair of boxes is taken only in the slab of the low x of their overlap, where both
+ *  are. The body and the skin of a whole-body segmentation lie within each other's boxes whole, and
+ *  their pair alone was searched on one thread while the others waited. */
+void addCrossingsInSlabs(const std::vector<const TriangleMesh*>& meshes, std::vector<Box>& inA, std::vector<Box>& inB,
+                         unsigned int threads, std::vector<TrianglePair>& crossing)
+{
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (const std::vector<Box>* boxes : { &inA, &inB })
+    for (const Box& box : *boxes)
+    {
+      low = std::min(low, box.min_coord(0));
+      high = std::max(high, box.max_coord(0));
+    }
+  const std::size_t slabs = 4 * static_cast<std::size_t>(threadCount(threads));
+  if (!(std::isfinite(low) && std::isfinite(high) && high > low))
+  {
+    addCrossings(meshes, inA, inB, [](const Box&, const Box&) { return true; }, crossing);
+    return;
+  }
+  const double width = (high - low) / static_cast<double>(slabs);
+  auto slabOf = [&](double x)
+  {
+    const double s = std::floor((x - low) / width);
+    return static_cast<std::size_t>(std::clamp(s, 0.0, static_cast<double>(slabs - 1))); // NaN: slab 0
+  };
+  std::vector<std::array<std::vector<Box>, 2>> inSlab(slabs);
+  for (int side = 0; side < 2; ++side)
+    for (const Box& box : side == 0 ? inA : inB)
+      for (std::size_t s = slabOf(box.min_coord(0)); s <= slabOf(box.max_coord(0)); ++s)
+        inSlab[s][static_cast<std::size_t>(side)].push_back(box);
+  inA = std::vector<Box>();
+  inB = std::vector<Box>();
+  std::vector<std::vector<TrianglePair>> crossingInSlab(slabs);
+  parallelFor(slabs, threads,
+              [&](std::size_t s)
+              {
+                addCrossings(meshes, inSlab[s][0], inSlab[s][1],
+                             [&](const Box& x, const Box& y)
+                             { return slabOf(std::max(x.min_coord(0), y.min_coord(0))) == s; },
+                             crossingInSlab[s]);
+                inSlab[s] = {};
+              });
+  for (const std::vector<TrianglePair>& pairs : crossingInSlab)
+    crossing.insert(crossing.end(), pairs.begin(), pairs.end());
+}
 
 } // namespace
 
@@ -84,29 +157,25 @@ std::vector<TrianglePair> crossingTriangles(const std::vector<const TriangleMesh
   largeOnesFirst(withPartners, threads, [&](std::size_t m) { return meshes[m]->triangles.size() >= largeMesh; },
                  findWithin);
   // Pair by pair, side by side: the triangles of each mesh within the other's box, against each
-  // other (CGAL's box intersection), then the exact triangle test. Pairs within one mesh never come
-  // up, where the box intersection of all triangles together went through every pair of
-  // neighbouring triangles of every mesh only to pass them over.
+  // other (CGAL's box intersection), then the exact triangle test; a large pair in slabs on every
+  // thread first. Pairs within one mesh never come up, where the box intersection of all triangles
+  // together went through every pair of neighbouring triangles of every mesh only to pass them over.
   std::vector<std::vector<TrianglePair>> crossingByPair(meshPairs.size());
-  parallelFor(meshPairs.size(), threads,
-              [&](std::size_t pair)
-              {
-                std::vector<Box>& inA = within[pair][0];
-                std::vector<Box>& inB = within[pair][1];
-                std::vector<TrianglePair>& crossing = crossingByPair[pair];
-                CGAL::box_intersection_d(inA.begin(), inA.end(), inB.begin(), inB.end(),
-                                         [&](const Box& x, const Box& y)
-                                         {
-                                           const MeshTriangle tx{ x.info().first, x.info().second };
-                                           const MeshTriangle ty{ y.info().first, y.info().second };
-                                           if (CGAL::do_intersect(triangle(*meshes[tx.mesh], tx.triangle),
-                                                                  triangle(*meshes[ty.mesh], ty.triangle)))
-                                             crossing.push_back(tx.mesh < ty.mesh ? TrianglePair{ tx, ty }
-                                                                                  : TrianglePair{ ty, tx });
-                                         });
-                inA = std::vector<Box>(); // not held beside the other pairs'
-                inB = std::vector<Box>();
-              });
+  std::vector<std::size_t> allPairs(meshPairs.size());
+  std::iota(allPairs.begin(), allPairs.end(), 0);
+  largeOnesFirst(allPairs, threads,
+                 [&](std::size_t pair) { return within[pair][0].size() + within[pair][1].size() >= largePair; },
+                 [&](std::size_t pair, unsigned int pairThreads)
+                 {
+                   std::vector<Box>& inA = within[pair][0];
+                   std::vector<Box>& inB = within[pair][1];
+                   if (threadCount(pairThreads) > 1)
+                     addCrossingsInSlabs(meshes, inA, inB, pairThreads, crossingByPair[pair]);
+                   else
+                     addCrossings(meshes, inA, inB, [](const Box&, const Box&) { return true; }, crossingByPair[pair]);
+                   inA = std::vector<Box>(); // not held beside the other pairs'
+                   inB = std::vector<Box>();
+                 });
   std::vector<TrianglePair> crossing;
   for (const std::vector<TrianglePair>& pairs : crossingByPair)
     crossing.insert(crossing.end(), pairs.begin(), pairs.end());

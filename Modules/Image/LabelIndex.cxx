@@ -1,6 +1,7 @@
 // Label bounding boxes in one raster pass; per-label cropping.
 #include "LabelIndex.h"
 
+#include "Core/ParallelFor.h"
 #include "Core/SliceMeshTypes.h"
 
 #include <algorithm>
@@ -121,17 +122,25 @@ MaskVolume::Pointer cropLabelMask(const TImage* labelMap, const LabelExtent& ext
   // A float label map compares as it always did; integers compare exactly.
   const Pixel wanted = static_cast<Pixel>(extent.label);
   const auto full = region.GetSize();
-  unsigned char* out = mask->GetBufferPointer();
-  for (std::size_t k = 0; k < size[2]; ++k)
-    for (std::size_t j = 0; j < size[1]; ++j)
+  // Slices side by side: the body of a whole-body segmentation is most of the volume, and its mask
+  // was cut on one thread while the other cores waited.
+  parallelForRanges(
+    size[2], 0,
+    [&](std::size_t firstSlice, std::size_t lastSlice)
     {
-      const std::size_t row = ((k + index[2] - region.GetIndex()[2]) * full[1] + (j + index[1] - region.GetIndex()[1])) *
-                                full[0] +
-                              (index[0] - region.GetIndex()[0]);
-      const Pixel* in = labelMap->GetBufferPointer() + row;
-      for (std::size_t i = 0; i < size[0]; ++i)
-        *out++ = in[i] == wanted ? 1 : 0;
-    }
+      unsigned char* out = mask->GetBufferPointer() + firstSlice * size[1] * size[0];
+      for (std::size_t k = firstSlice; k < lastSlice; ++k)
+        for (std::size_t j = 0; j < size[1]; ++j)
+        {
+          const std::size_t row =
+            ((k + index[2] - region.GetIndex()[2]) * full[1] + (j + index[1] - region.GetIndex()[1])) * full[0] +
+            (index[0] - region.GetIndex()[0]);
+          const Pixel* in = labelMap->GetBufferPointer() + row;
+          for (std::size_t i = 0; i < size[0]; ++i)
+            *out++ = in[i] == wanted ? 1 : 0;
+        }
+    },
+    /*minimumRange=*/std::max<std::size_t>(1, (std::size_t(1) << 20) / std::max<std::size_t>(1, size[0] * size[1])));
   return mask;
 }
 

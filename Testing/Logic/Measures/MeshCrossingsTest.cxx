@@ -208,4 +208,36 @@ TEST(MeshCrossings, ALargePieceAmongSpecksAndABroadNeighbour)
 }
 
 } // namespace
+TEST(MeshCrossings, TwoLargeMeshesWithinEachOthersBoxesOnAnyNumberOfThreads)
+{
+  // Two balls of radius 30 mm and over 65,536 triangles each, 10 mm apart along y: each lies almost
+  // whole in the other's box, and their surfaces cross along a circle across the whole width in x.
+  // On several threads their pair is searched in slabs across x; the pairs found are those of the
+  // whole search on one thread (the test above checks that one against every pair of triangles).
+  auto ballAt = [](double cy)
+  {
+    ContourStack stack;
+    stack.sliceSpacing = 0.5;
+    for (double z = -29.75; z < 30.0; z += 0.5)
+      stack.slices.push_back({ z, { circle(0.0, cy, std::sqrt(900.0 - z * z), 360) } });
+    return reconstructSurface(stack);
+  };
+  const TriangleMesh a = ballAt(0.0), b = ballAt(10.0);
+  ASSERT_GE(a.triangles.size(), 65536u);
+  const std::vector<TrianglePair> whole = crossingTriangles({ &a, &b }, 1);
+  ASSERT_GT(whole.size(), 1000u);
+  // The crossings reach across x, so across every slab and their borders.
+  double low = 1e9, high = -1e9;
+  for (const auto& [first, second] : whole)
+    for (const std::int32_t v : a.triangles[first.triangle])
+    {
+      low = std::min(low, a.points[static_cast<std::size_t>(v)].x);
+      high = std::max(high, a.points[static_cast<std::size_t>(v)].x);
+    }
+  EXPECT_LT(low, -25.0);
+  EXPECT_GT(high, 25.0);
+  for (unsigned int threads : { 2u, 3u, 8u })
+    EXPECT_EQ(crossingTriangles({ &a, &b }, threads), whole) << threads << " threads";
+}
+
 } // namespace slicemesh::testing
