@@ -68,13 +68,19 @@ vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh, CoordinateSyst
   vtkNew<vtkDoubleArray> coordinates;
   coordinates->SetNumberOfComponents(3);
   coordinates->SetNumberOfTuples(static_cast<vtkIdType>(mesh.points.size()));
+  // The copies on every thread: the first touch of a whole-body model's arrays (page faults) and
+  // the copying were a second of its run on one thread, before the writing.
   double* xyz = coordinates->GetPointer(0);
-  for (const Point3& p : mesh.points)
-  {
-    *xyz++ = p.x;
-    *xyz++ = p.y;
-    *xyz++ = p.z;
-  }
+  parallelForRanges(mesh.points.size(), 0,
+                    [&](std::size_t first, std::size_t last)
+                    {
+                      for (std::size_t v = first; v < last; ++v)
+                      {
+                        xyz[3 * v] = mesh.points[v].x;
+                        xyz[3 * v + 1] = mesh.points[v].y;
+                        xyz[3 * v + 2] = mesh.points[v].z;
+                      }
+                    });
   vtkNew<vtkPoints> points;
   points->SetData(coordinates);
   const std::size_t triangles = mesh.triangles.size(); // at most what 32-bit offsets hold (writeMesh)
@@ -84,14 +90,17 @@ vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh, CoordinateSyst
   connectivity->SetNumberOfValues(static_cast<vtkIdType>(3 * triangles));
   std::int32_t* offset = offsets->GetPointer(0);
   std::int32_t* corner = connectivity->GetPointer(0);
-  for (std::size_t t = 0; t <= triangles; ++t)
-    offset[t] = static_cast<std::int32_t>(3 * t);
-  for (const Triangle& t : mesh.triangles)
-  {
-    *corner++ = t[0];
-    *corner++ = t[1];
-    *corner++ = t[2];
-  }
+  offset[triangles] = static_cast<std::int32_t>(3 * triangles);
+  parallelForRanges(triangles, 0,
+                    [&](std::size_t first, std::size_t last)
+                    {
+                      for (std::size_t t = first; t < last; ++t)
+                      {
+                        offset[t] = static_cast<std::int32_t>(3 * t);
+                        for (int k = 0; k < 3; ++k)
+                          corner[3 * t + static_cast<std::size_t>(k)] = mesh.triangles[t][k];
+                      }
+                    });
   vtkNew<vtkCellArray> polys;
   polys->SetData(offsets, connectivity);
   auto polyData = vtkSmartPointer<vtkPolyData>::New();
@@ -114,8 +123,13 @@ void addAttributes(vtkPolyData* polyData, const MeshAttributes& attributes)
     vtkNew<vtkIntArray> labels;
     labels->SetName("Label");
     labels->SetNumberOfValues(cells);
-    for (vtkIdType c = 0; c < cells; ++c)
-      labels->SetValue(c, attributes.cellLabels[static_cast<std::size_t>(c)]);
+    int* label = labels->GetPointer(0);
+    parallelForRanges(static_cast<std::size_t>(cells), 0,
+                      [&](std::size_t first, std::size_t last)
+                      {
+                        std::copy(attributes.cellLabels.begin() + static_cast<std::ptrdiff_t>(first),
+                                  attributes.cellLabels.begin() + static_cast<std::ptrdiff_t>(last), label + first);
+                      });
     polyData->GetCellData()->AddArray(labels);
   }
   if (!attributes.cellColors.empty())
@@ -124,9 +138,14 @@ void addAttributes(vtkPolyData* polyData, const MeshAttributes& attributes)
     colors->SetName("Color");
     colors->SetNumberOfComponents(3);
     colors->SetNumberOfTuples(cells);
-    for (vtkIdType c = 0; c < cells; ++c)
-      for (int k = 0; k < 3; ++k)
-        colors->SetTypedComponent(c, k, attributes.cellColors[static_cast<std::size_t>(c)][k]);
+    unsigned char* rgb = colors->GetPointer(0);
+    parallelForRanges(static_cast<std::size_t>(cells), 0,
+                      [&](std::size_t first, std::size_t last)
+                      {
+                        for (std::size_t c = first; c < last; ++c)
+                          for (std::size_t k = 0; k < 3; ++k)
+                            rgb[3 * c + k] = attributes.cellColors[c][k];
+                      });
     polyData->GetCellData()->SetScalars(colors);
   }
   if (!attributes.structures.empty())
