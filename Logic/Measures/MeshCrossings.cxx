@@ -46,15 +46,28 @@ constexpr std::size_t largeMesh = 1 << 16;
  *  side by side. */
 constexpr std::size_t largePair = 1 << 16;
 
+const Box& boxOf(const Box& box)
+{
+  return box;
+}
+
+const Box& boxOf(const Box* box)
+{
+  return *box;
+}
+
 /** The triangles of `inA` (of one mesh) that cross triangles of `inB` (of another), added to
- *  `crossing`: CGAL's box intersection, then the exact triangle test, for the pairs `report` takes. */
-template <typename Report>
-void addCrossings(const std::vector<const TriangleMesh*>& meshes, std::vector<Box>& inA, std::vector<Box>& inB,
+ *  `crossing`: CGAL's box intersection, then the exact triangle test, for the pairs `report` takes.
+ *  The boxes are held by value or by pointer (`Handle`). */
+template <typename Handle, typename Report>
+void addCrossings(const std::vector<const TriangleMesh*>& meshes, std::vector<Handle>& inA, std::vector<Handle>& inB,
                   Report&& report, std::vector<TrianglePair>& crossing)
 {
   CGAL::box_intersection_d(inA.begin(), inA.end(), inB.begin(), inB.end(),
-                           [&](const Box& x, const Box& y)
+                           [&](const Handle& handleX, const Handle& handleY)
                            {
+                             const Box& x = boxOf(handleX);
+                             const Box& y = boxOf(handleY);
                              if (!report(x, y))
                                return;
                              const MeshTriangle tx{ x.info().first, x.info().second };
@@ -91,13 +104,12 @@ void addCrossingsInSlabs(const std::vector<const TriangleMesh*>& meshes, std::ve
     const double s = std::floor((x - low) / width);
     return static_cast<std::size_t>(std::clamp(s, 0.0, static_cast<double>(slabs - 1))); // NaN: slab 0
   };
-  std::vector<std::array<std::vector<Box>, 2>> inSlab(slabs);
+  // Pointers to the boxes: copies of a large pair's boxes were as much memory again.
+  std::vector<std::array<std::vector<const Box*>, 2>> inSlab(slabs);
   for (int side = 0; side < 2; ++side)
     for (const Box& box : side == 0 ? inA : inB)
       for (std::size_t s = slabOf(box.min_coord(0)); s <= slabOf(box.max_coord(0)); ++s)
-        inSlab[s][static_cast<std::size_t>(side)].push_back(box);
-  inA = std::vector<Box>();
-  inB = std::vector<Box>();
+        inSlab[s][static_cast<std::size_t>(side)].push_back(&box);
   std::vector<std::vector<TrianglePair>> crossingInSlab(slabs);
   parallelFor(slabs, threads,
               [&](std::size_t s)
