@@ -93,16 +93,18 @@ void addCrossingsInSlabs(const std::vector<const TriangleMesh*>& meshes, std::ve
       high = std::max(high, box.max_coord(0));
     }
   const std::size_t slabs = 4 * static_cast<std::size_t>(threadCount(threads));
-  if (!(std::isfinite(low) && std::isfinite(high) && high > low))
+  const double width = (high - low) / static_cast<double>(slabs);
+  // Coordinates near the largest double (an extent that overflows) or an extent of a few subnormals
+  // give no usable width: the whole search.
+  if (!(std::isfinite(low) && std::isfinite(high) && std::isfinite(width) && width > 0.0))
   {
     addCrossings(meshes, inA, inB, [](const Box&, const Box&) { return true; }, crossing);
     return;
   }
-  const double width = (high - low) / static_cast<double>(slabs);
-  auto slabOf = [&](double x)
+  auto slabOf = [&](double x) // x within [low, high]: a finite quotient
   {
     const double s = std::floor((x - low) / width);
-    return static_cast<std::size_t>(std::clamp(s, 0.0, static_cast<double>(slabs - 1))); // NaN: slab 0
+    return static_cast<std::size_t>(std::clamp(s, 0.0, static_cast<double>(slabs - 1)));
   };
   // Pointers to the boxes: copies of a large pair's boxes were as much memory again.
   std::vector<std::array<std::vector<const Box*>, 2>> inSlab(slabs);

@@ -27,7 +27,7 @@ constexpr std::size_t rangeSize = 8192;
 /** Two triangles on one edge fold onto each other: their unit normals within a degree of opposite. */
 bool folded(const std::array<float, 3>& m, const std::array<float, 3>& n)
 {
-  const double foldCosine = std::cos(M_PI / 180.0);
+  static const double foldCosine = std::cos(M_PI / 180.0);
   return static_cast<double>(m[0]) * n[0] + static_cast<double>(m[1]) * n[1] + static_cast<double>(m[2]) * n[2] <
          -foldCosine;
 }

@@ -62,9 +62,9 @@ MeshValidation validateMesh(const TriangleMesh& mesh, std::vector<std::pair<std:
 MeshValidation validateMeshAfterMoving(const TriangleMesh& mesh, bool checkedBefore, const std::vector<char>& moved,
                                        std::vector<std::pair<std::size_t, std::size_t>>& crossings);
 
-/** validateMeshAfterMoving for a mesh whose triangles are those `before` validated and whose points
- *  flagged in `moved` alone have moved since (`crossings`: that validation's pairs, replaced by the
- *  new ones). What the triangles alone decide (closed, manifold, wound, components, Euler
+/** validateMeshAfterMoving for a mesh whose triangles are those `before` validated, the same in the
+ *  same order (only their count is checked), and whose points flagged in `moved` alone have moved
+ *  since (`crossings`: that validation's pairs, replaced by the new ones). What the triangles alone decide (closed, manifold, wound, components, Euler
  *  characteristic) is `before`'s; the rest is measured again, folds only around the moved points.
  *  The same result as validateMesh; the edges are not gathered again, which was most of a put-back
  *  piece's validation. A `before` not closed, manifold and wound alike, or with folds, is validated
