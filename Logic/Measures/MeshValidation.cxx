@@ -6,6 +6,7 @@
 #include "Core/MeasureText.h"
 #include "Measures/ComponentOrientation.h"
 #include "Measures/EdgeUses.h"
+#include "Measures/MeshComponents.h"
 #include "Measures/SelfIntersections.h"
 #include "Measures/TriangleAngles.h"
 
@@ -109,33 +110,13 @@ void measureVolumeAndOrientation(const TriangleMesh& mesh, MeshValidation& v)
  *  corners of those triangles: only the triangles with one are gathered, and their edges sorted. */
 std::size_t foldedEdgesAroundMoved(const TriangleMesh& mesh, const std::vector<char>& moved)
 {
-  const std::size_t nTriangles = mesh.triangles.size();
-  auto withCornerIn = [&](const std::vector<char>& flags)
-  {
-    std::vector<std::uint32_t> found;
-    for (const std::vector<std::uint32_t>& range : fixedRangeResults<std::vector<std::uint32_t>>(
-           nTriangles, rangeSize, 0,
-           [&](std::vector<std::uint32_t>& triangles, std::size_t first, std::size_t last)
-           {
-             for (std::size_t f = first; f < last; ++f)
-             {
-               const Triangle& t = mesh.triangles[f];
-               if (flags[static_cast<std::size_t>(t[0])] || flags[static_cast<std::size_t>(t[1])] ||
-                   flags[static_cast<std::size_t>(t[2])])
-                 triangles.push_back(static_cast<std::uint32_t>(f));
-             }
-           }))
-      found.insert(found.end(), range.begin(), range.end());
-    return found;
-  };
-  const std::vector<std::uint32_t> touched = withCornerIn(moved);
-  if (touched.empty())
+  if (std::none_of(moved.begin(), moved.end(), [](char flag) { return flag != 0; }))
     return 0;
-  std::vector<char> near(mesh.points.size(), 0);
-  for (const std::uint32_t f : touched)
-    for (const std::int32_t v : mesh.triangles[f])
-      near[static_cast<std::size_t>(v)] = 1;
-  // Each edge of the triangles around, keyed by its ends, with its triangle and whether that one moved.
+  auto hasCornerIn = [](const std::vector<char>& flags, const Triangle& t)
+  { return flags[static_cast<std::size_t>(t[0])] || flags[static_cast<std::size_t>(t[1])] || flags[static_cast<std::size_t>(t[2])]; };
+  std::vector<char> near = moved;
+  growByRings(mesh, near, 1); // the corners of the moved triangles
+  // Each edge of the triangles with a corner near, keyed by its ends, with its triangle.
   struct EdgeOfTriangle
   {
     std::uint64_t key;
@@ -146,15 +127,24 @@ std::size_t foldedEdgesAroundMoved(const TriangleMesh& mesh, const std::vector<c
     }
   };
   std::vector<EdgeOfTriangle> edges;
-  for (const std::uint32_t f : withCornerIn(near))
-  {
-    const Triangle& t = mesh.triangles[f];
-    for (int i = 0; i < 3; ++i)
-    {
-      const auto a = static_cast<std::uint32_t>(t[i]), b = static_cast<std::uint32_t>(t[(i + 1) % 3]);
-      edges.push_back({ static_cast<std::uint64_t>(std::min(a, b)) << 32 | std::max(a, b), f });
-    }
-  }
+  for (const std::vector<EdgeOfTriangle>& range : fixedRangeResults<std::vector<EdgeOfTriangle>>(
+         mesh.triangles.size(), rangeSize, 0,
+         [&](std::vector<EdgeOfTriangle>& found, std::size_t first, std::size_t last)
+         {
+           for (std::size_t f = first; f < last; ++f)
+           {
+             const Triangle& t = mesh.triangles[f];
+             if (!hasCornerIn(near, t))
+               continue;
+             for (int i = 0; i < 3; ++i)
+             {
+               const auto a = static_cast<std::uint32_t>(t[i]), b = static_cast<std::uint32_t>(t[(i + 1) % 3]);
+               found.push_back({ static_cast<std::uint64_t>(std::min(a, b)) << 32 | std::max(a, b),
+                                 static_cast<std::uint32_t>(f) });
+             }
+           }
+         }))
+    edges.insert(edges.end(), range.begin(), range.end());
   std::sort(edges.begin(), edges.end());
   std::size_t count = 0;
   for (std::size_t e = 0; e + 1 < edges.size(); ++e)
@@ -163,7 +153,7 @@ std::size_t foldedEdgesAroundMoved(const TriangleMesh& mesh, const std::vector<c
       continue;
     const std::uint32_t f = edges[e].triangle, g = edges[e + 1].triangle;
     ++e;
-    if (!std::binary_search(touched.begin(), touched.end(), f) && !std::binary_search(touched.begin(), touched.end(), g))
+    if (!hasCornerIn(moved, mesh.triangles[f]) && !hasCornerIn(moved, mesh.triangles[g]))
       continue; // neither moved: as it was
     count += folded(unitNormalOf(mesh, f), unitNormalOf(mesh, g));
   }

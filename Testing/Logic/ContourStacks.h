@@ -66,6 +66,17 @@ inline ContourStack sliceStack(double z0, double z1, double dz, const std::funct
   return stack;
 }
 
+/** A ball of radius r about (cx, cy, cz) as circles of n points on slices dz apart, the first half a
+ *  slice above its lowest point. */
+inline ContourStack ballStack(double cx, double cy, double cz, double r, int n, double dz)
+{
+  ContourStack stack;
+  stack.sliceSpacing = dz;
+  for (double z = -r + dz / 2.0; z < r; z += dz)
+    stack.slices.push_back({ cz + z, { circle(cx, cy, std::sqrt(r * r - z * z), n) } });
+  return stack;
+}
+
 /** Distance from p to a sphere's surface. */
 inline double sphereDistance(const Point3& p, const Point3& c, double r)
 {

@@ -19,12 +19,7 @@ namespace
 /** A closed ball of `radius` mm about (cx, 0, 0), sliced every radius / 4 mm, facing out. */
 TriangleMesh ball(double cx, double radius)
 {
-  const double dz = radius / 4.0;
-  ContourStack stack;
-  stack.sliceSpacing = dz;
-  for (double z = -radius + dz / 2.0; z < radius; z += dz)
-    stack.slices.push_back({ z, { circle(cx, 0.0, std::sqrt(radius * radius - z * z), 48) } });
-  return reconstructSurface(stack);
+  return reconstructSurface(ballStack(cx, 0.0, 0.0, radius, 48, radius / 4.0));
 }
 
 TriangleMesh insideOut(TriangleMesh mesh)

@@ -19,11 +19,7 @@ namespace
 /** A closed ball of radius 6 mm about (cx, 0, 0), sliced every 1.5 mm. */
 TriangleMesh ball(double cx)
 {
-  ContourStack stack;
-  stack.sliceSpacing = 1.5;
-  for (double z = -5.25; z <= 5.3; z += 1.5)
-    stack.slices.push_back({ z, { circle(cx, 0.0, std::sqrt(36.0 - z * z), 48) } });
-  return reconstructSurface(stack);
+  return reconstructSurface(ballStack(cx, 0.0, 0.0, 6.0, 48, 1.5));
 }
 
 /** The pairs of meshes the pairs of triangles belong to, each once, in increasing order. */
@@ -148,13 +144,7 @@ TEST(MeshCrossings, ALargePieceAmongSpecksAndABroadNeighbour)
   // many of the specks' cells (tested by every triangle, not filed): the pairs are every pair of
   // triangles of different meshes that meet, each mesh's triangles filtered by the other's box alone.
   auto ballAt = [](double cx, double cy, double cz, double r, int points, double dz)
-  {
-    ContourStack stack;
-    stack.sliceSpacing = dz;
-    for (double z = -r + dz / 2.0; z < r; z += dz)
-      stack.slices.push_back({ cz + z, { circle(cx, cy, std::sqrt(r * r - z * z), points) } });
-    return reconstructSurface(stack);
-  };
+  { return reconstructSurface(ballStack(cx, cy, cz, r, points, dz)); };
   std::vector<TriangleMesh> pieces{ ballAt(0.0, 0.0, 0.0, 30.0, 360, 0.5), ballAt(0.0, 0.0, 33.0, 8.0, 48, 1.0) };
   ASSERT_GE(pieces[0].triangles.size(), 65536u);
   for (int k = 0; k < 60; ++k)
@@ -214,14 +204,7 @@ TEST(MeshCrossings, TwoLargeMeshesWithinEachOthersBoxesOnAnyNumberOfThreads)
   // whole in the other's box, and their surfaces cross along a circle across the whole width in x.
   // On several threads their pair is searched in slabs across x; the pairs found are those of the
   // whole search on one thread (the test above checks that one against every pair of triangles).
-  auto ballAt = [](double cy)
-  {
-    ContourStack stack;
-    stack.sliceSpacing = 0.5;
-    for (double z = -29.75; z < 30.0; z += 0.5)
-      stack.slices.push_back({ z, { circle(0.0, cy, std::sqrt(900.0 - z * z), 360) } });
-    return reconstructSurface(stack);
-  };
+  auto ballAt = [](double cy) { return reconstructSurface(ballStack(0.0, cy, 0.0, 30.0, 360, 0.5)); };
   const TriangleMesh a = ballAt(0.0), b = ballAt(10.0);
   ASSERT_GE(a.triangles.size(), 65536u);
   const std::vector<TrianglePair> whole = crossingTriangles({ &a, &b }, 1);

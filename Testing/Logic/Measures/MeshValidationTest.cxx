@@ -100,12 +100,7 @@ namespace
 /** A closed ball of `radius` mm about (cx, 0, 0), sliced every radius / 4 mm, facing out (or in). */
 TriangleMesh tiledBall(double cx, double radius, bool facingIn = false)
 {
-  const double dz = radius / 4.0;
-  ContourStack stack;
-  stack.sliceSpacing = dz;
-  for (double z = -radius + dz / 2.0; z < radius; z += dz)
-    stack.slices.push_back({ z, { slicemesh::testing::circle(cx, 0.0, std::sqrt(radius * radius - z * z), 48) } });
-  TriangleMesh mesh = reconstructSurface(stack);
+  TriangleMesh mesh = reconstructSurface(slicemesh::testing::ballStack(cx, 0.0, 0.0, radius, 48, radius / 4.0));
   if (facingIn)
     for (Triangle& t : mesh.triangles)
       std::swap(t[1], t[2]);
