@@ -217,6 +217,12 @@ bool trianglesCross(const std::vector<Point3>& points, const Triangle& s, const 
 std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(const TriangleMesh& mesh,
                                                                                unsigned int threads)
 {
+  return selfIntersectingTrianglePairsInGroups(mesh, 0, threads);
+}
+
+std::vector<std::pair<std::size_t, std::size_t>>
+selfIntersectingTrianglePairsInGroups(const TriangleMesh& mesh, std::size_t entriesPerGroup, unsigned int threads)
+{
   // Every step runs on ranges of triangles or cells side by side: on one thread, building the grid
   // took as long as testing the pairs on two.
   const std::size_t nTriangles = mesh.triangles.size();
@@ -279,90 +285,117 @@ std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(c
                                return false;
                              });
                          });
-  // Bin by bin, range by range: where each range's entries of each bin go.
-  std::vector<std::size_t> binStart(bins + 1, 0), next(ranges * bins);
-  for (std::size_t bin = 0, at = 0; bin < bins; ++bin)
-  {
-    binStart[bin] = at;
+  // The bins are filed and tested a group at a time, each group of about as many entries as there
+  // are boxes: all at once, the entries (a box in each of the one to eight cells it covers) were
+  // most of the test's memory, and a run's peak came when a large piece was tested beside another
+  // piece's smoothing. Filing a group costs one more walk over the boxes' cells.
+  std::vector<std::size_t> entriesOfBin(bins, 0);
+  for (std::size_t bin = 0; bin < bins; ++bin)
     for (std::size_t r = 0; r < ranges; ++r)
+      entriesOfBin[bin] += counts[r * bins + bin];
+  if (entriesPerGroup == 0)
+    entriesPerGroup = std::max<std::size_t>(boxes.size(), std::size_t{ 1 } << 20);
+  std::vector<std::size_t> groupStart{ 0 };
+  for (std::size_t bin = 0, inGroup = 0; bin < bins; ++bin)
+  {
+    if (inGroup > 0 && inGroup + entriesOfBin[bin] > entriesPerGroup)
     {
-      next[r * bins + bin] = at;
-      at += counts[r * bins + bin];
+      groupStart.push_back(bin);
+      inGroup = 0;
     }
-    binStart[bin + 1] = at;
+    inGroup += entriesOfBin[bin];
   }
-  std::vector<CellEntry, DefaultInitAllocator<CellEntry>> entries(binStart[bins]); // filled on every thread below
-  parallelForFixedRanges(boxes.size(), boxesPerRange, threads,
-                         [&](std::size_t r, std::size_t firstBox, std::size_t lastBox)
-                         {
-                           for (std::size_t b = firstBox; b < lastBox; ++b)
-                             grid.anyCovered(boxes[b], [&](std::uint64_t key) {
-                               entries[next[r * bins + binOf(key)]++] = { key, static_cast<std::uint32_t>(b) };
-                               return false;
-                             });
-                         });
-  parallelFor(bins, threads,
-              [&](std::size_t bin)
-              {
-                std::sort(entries.begin() + static_cast<std::ptrdiff_t>(binStart[bin]),
-                          entries.begin() + static_cast<std::ptrdiff_t>(binStart[bin + 1]));
-              });
-  // Each pair of overlapping boxes is tested once: in the cell of the lower corner of their overlap,
-  // which is the larger of the two boxes' lower cells along each axis (a cell index only grows with
-  // the coordinate), taken per box once here rather than per pair.
-  std::vector<std::array<std::uint64_t, 3>> lowCell(boxes.size());
-  parallelForRanges(boxes.size(), threads,
-                    [&](std::size_t first, std::size_t last)
-                    {
-                      for (std::size_t b = first; b < last; ++b)
-                        lowCell[b] = grid.cellOf(boxes[b].low);
-                    });
-  // Bin by bin side by side: a cell's entries all lie in its bin, together once the bin is sorted.
+  groupStart.push_back(bins);
+  std::size_t largestGroup = 0;
+  for (std::size_t g = 0; g + 1 < groupStart.size(); ++g)
+    largestGroup = std::max(largestGroup, std::accumulate(entriesOfBin.begin() + static_cast<std::ptrdiff_t>(groupStart[g]),
+                                                          entriesOfBin.begin() + static_cast<std::ptrdiff_t>(groupStart[g + 1]),
+                                                          std::size_t{ 0 }));
+  std::vector<CellEntry, DefaultInitAllocator<CellEntry>> entries(largestGroup); // filled on every thread below
+  std::vector<std::size_t> binStart(bins + 1, 0), next(ranges * bins);
   std::mutex found;
-  parallelFor(bins, threads,
-              [&](std::size_t bin)
-              {
-                std::vector<std::pair<std::size_t, std::size_t>> local;
-                std::vector<CellMember> members;
-                std::vector<std::pair<double, std::uint32_t>> byLowX;
-                for (std::size_t e = binStart[bin]; e < binStart[bin + 1];)
+  for (std::size_t g = 0; g + 1 < groupStart.size(); ++g)
+  {
+    const std::size_t firstBin = groupStart[g], lastBin = groupStart[g + 1];
+    // Bin by bin, range by range: where each range's entries of each bin of the group go.
+    for (std::size_t bin = firstBin, at = 0; bin < lastBin; ++bin)
+    {
+      binStart[bin] = at;
+      for (std::size_t r = 0; r < ranges; ++r)
+      {
+        next[r * bins + bin] = at;
+        at += counts[r * bins + bin];
+      }
+      binStart[bin + 1] = at;
+    }
+    parallelForFixedRanges(boxes.size(), boxesPerRange, threads,
+                           [&](std::size_t r, std::size_t firstBox, std::size_t lastBox)
+                           {
+                             for (std::size_t b = firstBox; b < lastBox; ++b)
+                               grid.anyCovered(boxes[b], [&](std::uint64_t key) {
+                                 const std::size_t bin = binOf(key);
+                                 if (bin >= firstBin && bin < lastBin)
+                                   entries[next[r * bins + bin]++] = { key, static_cast<std::uint32_t>(b) };
+                                 return false;
+                               });
+                           });
+    parallelFor(lastBin - firstBin, threads,
+                [&](std::size_t i)
                 {
-                  const std::uint64_t cell = entries[e].key;
-                  members.clear(); // the cell's triangles, copied side by side (CellMember)
-                  for (; e < binStart[bin + 1] && entries[e].key == cell; ++e)
+                  const std::size_t bin = firstBin + i;
+                  std::sort(entries.begin() + static_cast<std::ptrdiff_t>(binStart[bin]),
+                            entries.begin() + static_cast<std::ptrdiff_t>(binStart[bin + 1]));
+                });
+    // Bin by bin side by side: a cell's entries all lie in its bin, together once the bin is sorted.
+    // Each pair of overlapping boxes is tested once: in the cell of the lower corner of their
+    // overlap, which is the larger of the two boxes' lower cells along each axis (a cell index only
+    // grows with the coordinate).
+    parallelFor(lastBin - firstBin, threads,
+                [&](std::size_t i)
+                {
+                  const std::size_t bin = firstBin + i;
+                  std::vector<std::pair<std::size_t, std::size_t>> local;
+                  std::vector<CellMember> members;
+                  std::vector<std::pair<double, std::uint32_t>> byLowX;
+                  for (std::size_t e = binStart[bin]; e < binStart[bin + 1];)
                   {
-                    const std::uint32_t b = entries[e].box;
-                    members.push_back({ boxes[b], lowCell[b], boxed[b], cornersOf(mesh, boxed[b]) });
-                  }
-                  // Swept along x: each box meets only those that start before it ends, so the
-                  // pairs are taken from the cell's boxes in order of their low x, each against the
-                  // next ones until one starts past its high x (every pair of a cell of a few dozen
-                  // boxes compared was most of the test's time).
-                  byLowX.clear();
-                  for (std::size_t i = 0; i < members.size(); ++i) // a box of no number first: it meets none
-                    byLowX.emplace_back(std::isnan(members[i].box.low[0]) ? -std::numeric_limits<double>::infinity()
-                                                                           : members[i].box.low[0],
-                                        static_cast<std::uint32_t>(i));
-                  std::sort(byLowX.begin(), byLowX.end());
-                  for (std::size_t i = 0; i < byLowX.size(); ++i)
-                    for (std::size_t j = i + 1; j < byLowX.size() && byLowX[j].first <= members[byLowX[i].second].box.high[0]; ++j)
+                    const std::uint64_t cell = entries[e].key;
+                    members.clear(); // the cell's triangles, copied side by side (CellMember)
+                    for (; e < binStart[bin + 1] && entries[e].key == cell; ++e)
                     {
-                      const CellMember& a = members[byLowX[i].second];
-                      const CellMember& b = members[byLowX[j].second];
-                      if (!overlap(a.box, b.box))
-                        continue;
-                      if (CellGrid::key(std::max(a.lowCell[0], b.lowCell[0]), std::max(a.lowCell[1], b.lowCell[1]),
-                                        std::max(a.lowCell[2], b.lowCell[2])) != cell)
-                        continue;
-                      if (crossing(a.corners, b.corners))
-                        local.emplace_back(std::min(a.triangle, b.triangle), std::max(a.triangle, b.triangle));
+                      const std::uint32_t b = entries[e].box;
+                      members.push_back({ boxes[b], grid.cellOf(boxes[b].low), boxed[b], cornersOf(mesh, boxed[b]) });
                     }
-                }
-                if (local.empty())
-                  return;
-                const std::lock_guard<std::mutex> lock(found);
-                pairs.insert(pairs.end(), local.begin(), local.end());
-              });
+                    // Swept along x: each box meets only those that start before it ends, so the
+                    // pairs are taken from the cell's boxes in order of their low x, each against the
+                    // next ones until one starts past its high x (every pair of a cell of a few dozen
+                    // boxes compared was most of the test's time).
+                    byLowX.clear();
+                    for (std::size_t m = 0; m < members.size(); ++m) // a box of no number first: it meets none
+                      byLowX.emplace_back(std::isnan(members[m].box.low[0]) ? -std::numeric_limits<double>::infinity()
+                                                                             : members[m].box.low[0],
+                                          static_cast<std::uint32_t>(m));
+                    std::sort(byLowX.begin(), byLowX.end());
+                    for (std::size_t m = 0; m < byLowX.size(); ++m)
+                      for (std::size_t n = m + 1; n < byLowX.size() && byLowX[n].first <= members[byLowX[m].second].box.high[0]; ++n)
+                      {
+                        const CellMember& a = members[byLowX[m].second];
+                        const CellMember& b = members[byLowX[n].second];
+                        if (!overlap(a.box, b.box))
+                          continue;
+                        if (CellGrid::key(std::max(a.lowCell[0], b.lowCell[0]), std::max(a.lowCell[1], b.lowCell[1]),
+                                          std::max(a.lowCell[2], b.lowCell[2])) != cell)
+                          continue;
+                        if (crossing(a.corners, b.corners))
+                          local.emplace_back(std::min(a.triangle, b.triangle), std::max(a.triangle, b.triangle));
+                      }
+                  }
+                  if (local.empty())
+                    return;
+                  const std::lock_guard<std::mutex> lock(found);
+                  pairs.insert(pairs.end(), local.begin(), local.end());
+                });
+  }
   std::sort(pairs.begin(), pairs.end());
   return pairs;
 }

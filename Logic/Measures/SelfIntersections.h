@@ -27,6 +27,14 @@ namespace slicemesh
 std::vector<std::pair<std::size_t, std::size_t>> selfIntersectingTrianglePairs(const TriangleMesh& mesh,
                                                                                unsigned int threads = 0);
 
+/** selfIntersectingTrianglePairs with the grid's boxes filed into its cells a group of cells at a
+ *  time, each group of at most about `entriesPerGroup` filings (a box is filed in each cell it
+ *  covers; a group holds at least one run of cells, however many filings that is). Fewer at a time
+ *  hold less memory and walk the boxes once more per group; the same pairs for any value. 0: as
+ *  many as there are boxes, and at least about a million (what selfIntersectingTrianglePairs does). */
+std::vector<std::pair<std::size_t, std::size_t>>
+selfIntersectingTrianglePairsInGroups(const TriangleMesh& mesh, std::size_t entriesPerGroup, unsigned int threads = 0);
+
 /** Whether triangles s and t, corners numbered into `points`, intersect by the rule of
  *  selfIntersectingTrianglePairs (exact). For a repair that tries triangles before making them. */
 bool trianglesCross(const std::vector<Point3>& points, const Triangle& s, const Triangle& t);

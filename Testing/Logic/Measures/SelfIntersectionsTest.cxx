@@ -31,6 +31,35 @@ TriangleMesh joined(const TriangleMesh& a, const TriangleMesh& b)
   return mesh;
 }
 
+/** Numbers spread evenly over [low, high), the same sequence on every platform. */
+class Uniform
+{
+public:
+  double operator()(double low, double high)
+  {
+    m_State = m_State * 6364136223846793005ull + 1442695040888963407ull;
+    return low + (high - low) * static_cast<double>(m_State >> 11) / static_cast<double>(1ull << 53);
+  }
+
+private:
+  std::uint64_t m_State = 12345;
+};
+
+/** `count` unit tetrahedra at random places in a cube of side `side`, many through each other. */
+TriangleMesh scatteredTetrahedra(int count, double side, Uniform& uniform)
+{
+  TriangleMesh mesh;
+  for (int i = 0; i < count; ++i)
+  {
+    TriangleMesh one = tetrahedron();
+    const Point3 at{ uniform(0, side), uniform(0, side), uniform(0, side) };
+    for (Point3& p : one.points)
+      p = { p.x + at.x, p.y + at.y, p.z + at.z };
+    mesh = joined(mesh, one);
+  }
+  return mesh;
+}
+
 /** A row of 200 small triangles across the x axis (at x = 0.5, 1.5, ...) and one sliver along it,
  *  `y` off the axis: at y = 0 it passes through every small triangle. */
 TriangleMesh rowAndSliver(double y)
@@ -143,21 +172,8 @@ TEST(SelfIntersections, AfterMovingSomeVerticesTheSamePairsAsTheWholeTest)
   // few vertices (some onto a line with two others: degenerate triangles, some by several sizes of
   // a tetrahedron: new crossings far away) and, every fifth round, a quarter of them (the whole test
   // then). Each round's pairs from the last round's must be the whole test's.
-  TriangleMesh mesh;
-  std::uint64_t state = 12345;
-  auto uniform = [&state](double low, double high)
-  {
-    state = state * 6364136223846793005ull + 1442695040888963407ull;
-    return low + (high - low) * static_cast<double>(state >> 11) / static_cast<double>(1ull << 53);
-  };
-  for (int i = 0; i < 300; ++i)
-  {
-    TriangleMesh one = tetrahedron();
-    const Point3 at{ uniform(0, 10), uniform(0, 10), uniform(0, 10) };
-    for (Point3& p : one.points)
-      p = { p.x + at.x, p.y + at.y, p.z + at.z };
-    mesh = joined(mesh, one);
-  }
+  Uniform uniform;
+  TriangleMesh mesh = scatteredTetrahedra(300, 10.0, uniform);
   Pairs before = selfIntersectingTrianglePairs(mesh);
   ASSERT_GT(before.size(), 10u); // the test means something only if some cross
   std::size_t degenerateSeen = 0;
@@ -210,4 +226,19 @@ TEST(SelfIntersections, AfterMovingALongTriangleEverySmallOneItNowPassesIsFound)
   const Pairs after = selfIntersectingTrianglePairsAfterMoving(mesh, before, moved);
   EXPECT_EQ(after.size(), 200u);
   EXPECT_EQ(after, selfIntersectingTrianglePairs(mesh));
+}
+
+TEST(SelfIntersections, CellsFiledAGroupAtATimeGiveTheSamePairs)
+{
+  // Tetrahedra through each other, and a sliver through a row of small triangles (a box in 200
+  // cells): the pairs of the whole test, whatever the group size (1: a group per run of cells)
+  // and the number of threads.
+  Uniform uniform;
+  const TriangleMesh mesh = joined(scatteredTetrahedra(600, 12.0, uniform), rowAndSliver(0.0));
+  const Pairs whole = selfIntersectingTrianglePairs(mesh, 1);
+  ASSERT_GT(whole.size(), 400u); // the tetrahedra's crossings and the sliver's 200
+  for (std::size_t perGroup : { 1, 50, 700, 5000 })
+    for (unsigned int threads : { 1u, 2u, 8u })
+      EXPECT_EQ(selfIntersectingTrianglePairsInGroups(mesh, perGroup, threads), whole)
+        << perGroup << " filings a group, " << threads << " threads";
 }
