@@ -86,6 +86,36 @@ NeighbourSlots::NeighbourSlots(const std::vector<std::size_t>& first, const std:
                     });
 }
 
+void NeighbourSlots::rowsInto(std::vector<std::size_t>& first, std::vector<std::int32_t>& rowIds,
+                              unsigned int threads) const
+{
+  // A vertex's own neighbours fill its slots from the first; the rest name the extra point. An
+  // isolated vertex names itself in every slot (a vertex is at most once its own neighbour).
+  auto inSlots = [&](std::size_t v) -> std::size_t
+  {
+    const std::int32_t* own = ids.data() + slots * v;
+    const auto self = static_cast<std::int32_t>(v);
+    if (own[0] == self && own[1] == self)
+      return 0;
+    return static_cast<std::size_t>(std::find(own, own + slots, static_cast<std::int32_t>(zero)) - own);
+  };
+  first.assign(zero + 1, 0);
+  for (std::size_t v = 0; v < zero; ++v)
+    first[v + 1] = first[v] + inSlots(v) + (moreOf[v + 1] - moreOf[v]);
+  rowIds.resize(first[zero]);
+  parallelForRanges(zero, threads,
+                    [&](std::size_t firstVertex, std::size_t lastVertex)
+                    {
+                      for (std::size_t v = firstVertex; v < lastVertex; ++v)
+                      {
+                        const auto to = rowIds.begin() + static_cast<std::ptrdiff_t>(first[v]);
+                        const auto slotted = std::copy_n(ids.begin() + static_cast<std::ptrdiff_t>(slots * v), inSlots(v), to);
+                        std::copy(more.begin() + static_cast<std::ptrdiff_t>(moreOf[v]),
+                                  more.begin() + static_cast<std::ptrdiff_t>(moreOf[v + 1]), slotted);
+                      }
+                    });
+}
+
 PackedBound::PackedBound(const std::vector<Float4>& start, const std::array<double, 3>& bound, bool active)
   : start(start)
   , active(active)
@@ -121,13 +151,13 @@ void packedUmbrellaStep(std::vector<Float4>& points, const NeighbourSlots& neigh
   points.swap(scratch);
 }
 
-TaubinPairs::TaubinPairs(const std::vector<Point3>& startPoints, const std::vector<std::size_t>& first,
-                         const std::vector<std::int32_t>& ids, const std::array<double, 3>& displacementBound,
-                         bool bounded, std::vector<std::size_t> heldVertices, unsigned int threads)
+TaubinPairs::TaubinPairs(const std::vector<Point3>& startPoints, const NeighbourSlots& neighbours,
+                         const std::array<double, 3>& displacementBound, bool bounded,
+                         std::vector<std::size_t> heldVertices)
   : packed(startPoints)
   , start(packed.data())
   , scratch(packed.data())
-  , neighbours(first, ids, threads)
+  , neighbours(neighbours)
   , free(start, {}, false)
   , bound(start, displacementBound, bounded)
   , held(std::move(heldVertices))

@@ -52,6 +52,8 @@ struct NeighbourSlots
    *  vertices side by side on `threads` threads (the same slots for any number). */
   NeighbourSlots(const std::vector<std::size_t>& first, const std::vector<std::int32_t>& ids,
                  unsigned int threads = 1);
+  /** The compressed rows they were made from, read back (the same neighbours in the same order). */
+  void rowsInto(std::vector<std::size_t>& first, std::vector<std::int32_t>& ids, unsigned int threads = 1) const;
 
   std::vector<std::int32_t> ids;   ///< vertex v's slots are ids[slots * v] .. ids[slots * v + slots - 1]
   std::vector<float> inverseCount; ///< 1 / the number of neighbours (1 / slots when isolated)
@@ -104,12 +106,13 @@ void packedUmbrellaStep(std::vector<Float4>& points, const NeighbourSlots& neigh
 class TaubinPairs
 {
 public:
-  /** `first`/`ids`: the vertices' neighbours in compressed rows; `bound`, `bounded`: the smoothing's
-   *  displacement bound; `held`: vertices put back where they started after every pair; `threads`:
-   *  for laying out the neighbours. */
-  TaubinPairs(const std::vector<Point3>& start, const std::vector<std::size_t>& first,
-              const std::vector<std::int32_t>& ids, const std::array<double, 3>& bound, bool bounded,
-              std::vector<std::size_t> held, unsigned int threads = 1);
+  /** `neighbours`: the vertices' neighbours, held by reference (the caller keeps them, and may drop
+   *  its other copies of them meanwhile); `bound`, `bounded`: the smoothing's displacement bound;
+   *  `held`: vertices put back where they started after every pair. */
+  TaubinPairs(const std::vector<Point3>& start, const NeighbourSlots& neighbours, const std::array<double, 3>& bound,
+              bool bounded, std::vector<std::size_t> held);
+  TaubinPairs(const std::vector<Point3>& start, NeighbourSlots&& neighbours, const std::array<double, 3>& bound,
+              bool bounded, std::vector<std::size_t> held) = delete; // would outlive them
   // Its bounds refer to its own start points: not to be copied.
   TaubinPairs(const TaubinPairs&) = delete;
   TaubinPairs& operator=(const TaubinPairs&) = delete;
@@ -128,7 +131,7 @@ private:
   PackedPoints packed;
   std::vector<Float4> start;
   std::vector<Float4> scratch;
-  NeighbourSlots neighbours;
+  const NeighbourSlots& neighbours;
   PackedBound free;
   PackedBound bound;
   std::vector<std::size_t> held;

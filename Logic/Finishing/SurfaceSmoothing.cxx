@@ -120,6 +120,20 @@ std::vector<std::int32_t> breadthFirstOrder(const VertexNeighbours& neighbours)
   return order;
 }
 
+/** The neighbours read back from the slots made of them (NeighbourSlots), as they were. */
+VertexNeighbours fromSlots(const NeighbourSlots& slots, unsigned int threads)
+{
+  VertexNeighbours neighbours;
+  slots.rowsInto(neighbours.first, neighbours.ids, threads);
+  neighbours.inverseCount.resize(neighbours.first.size() - 1);
+  for (std::size_t v = 0; v + 1 < neighbours.first.size(); ++v)
+  {
+    const std::size_t count = neighbours.first[v + 1] - neighbours.first[v];
+    neighbours.inverseCount[v] = count > 0 ? 1.0 / static_cast<double>(count) : 0.0;
+  }
+  return neighbours;
+}
+
 /** The neighbours by vertex (`byVertex`) with the rows in `order` and numbered by rank (row i holds
  *  vertex order[i]'s, as the ranks of their vertices): what neighboursOf(mesh, rank) gives, from the
  *  table already made rather than from the triangles again, whose two passes ran on one thread. */
@@ -605,23 +619,30 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
   const RowTriangles around = trianglesOfRows(mesh, rank);
   std::vector<char> sharp;
   {
-    // On a packed copy of the points (PackedTaubinSteps.h), freed before the relaxation's.
-    TaubinPairs pairs(start, neighbours.first, neighbours.ids, options.maxDisplacement, bounded, heldRows, threads);
-    pairs.run(wholePairs, lambda, mu, threads);
-    if (options.iterations > wholePairs)
+    // The neighbours' rows are dropped while the pairs run on their slots, and read back from them
+    // after: held side by side, both were part of a large piece's peak memory.
+    const NeighbourSlots slots(neighbours.first, neighbours.ids, threads);
+    neighbours = {};
     {
-      // Found after the first pairs, which take the staircase's own creases out. A held vertex still
-      // takes each pair's steps, so that its neighbours see the filter's shrinking and inflating steps
-      // alike, and is put back after it: held through both, a feature pulled its neighbours outwards
-      // in every inflating step (a torus's mean distance 7% up, where this gives 2.5% down).
+      // On a packed copy of the points (PackedTaubinSteps.h), freed before the relaxation's.
+      TaubinPairs pairs(start, slots, options.maxDisplacement, bounded, heldRows);
+      pairs.run(wholePairs, lambda, mu, threads);
+      if (options.iterations > wholePairs)
+      {
+        // Found after the first pairs, which take the staircase's own creases out. A held vertex still
+        // takes each pair's steps, so that its neighbours see the filter's shrinking and inflating steps
+        // alike, and is put back after it: held through both, a feature pulled its neighbours outwards
+        // in every inflating step (a torus's mean distance 7% up, where this gives 2.5% down).
+        pairs.unpackInto(points);
+        sharp = sharpFeatureRows(points, mesh, rank, around, options.featureAngle, 2, threads);
+        bound.holdFeatures(sharp, boundAwayFromFeatures(options)); // the relaxation below keeps the plain bound on them
+        pairs.holdFeatures(sharp, boundAwayFromFeatures(options));
+        pairs.run(options.iterations - wholePairs, lambda, mu, threads);
+      }
       pairs.unpackInto(points);
-      sharp = sharpFeatureRows(points, mesh, rank, around, options.featureAngle, 2, threads);
-      bound.holdFeatures(sharp, boundAwayFromFeatures(options)); // the relaxation below keeps the plain bound on them
-      pairs.holdFeatures(sharp, boundAwayFromFeatures(options));
-      pairs.run(options.iterations - wholePairs, lambda, mu, threads);
+      putBackHeld(); // exactly, not as rounded in the packed copy
     }
-    pairs.unpackInto(points);
-    putBackHeld(); // exactly, not as rounded in the packed copy
+    neighbours = fromSlots(slots, threads);
   }
   std::vector<Point3> scratch(order.size());
   // The filter moves vertices along the surface too, and where it folds sharply (a tract a voxel or

@@ -90,7 +90,7 @@ TEST(PackedTaubinSteps, ABoundedStepStopsOnItsEllipsoid)
   EXPECT_NEAR(packed.unpack(0).y, 2.0, 1e-6);
 
   // The pairs keep a held vertex where it started.
-  TaubinPairs pairs(points, rows.first, rows.ids, { 0.5, 2.0, 2.0 }, true, { 1 });
+  TaubinPairs pairs(points, slots, { 0.5, 2.0, 2.0 }, true, { 1 });
   pairs.run(3, 0.63, -0.64, 1);
   std::vector<Point3> after(points.size());
   pairs.unpackInto(after);
@@ -114,11 +114,12 @@ TEST(PackedTaubinSteps, PairsStopOnceTheyChangeNothingWithTheSamePoints)
     rows.add(around);
   }
   const double lambda = 0.63, mu = 1.0 / (0.01 - 1.0 / lambda);
-  TaubinPairs early(points, rows.first, rows.ids, { 0.1, 0.1, 0.1 }, true, {});
+  const NeighbourSlots slots(rows.first, rows.ids);
+  TaubinPairs early(points, slots, { 0.1, 0.1, 0.1 }, true, {});
   const int ran = early.run(200, lambda, mu, 1);
   EXPECT_LT(ran, 200);
   EXPECT_EQ(ran % TaubinPairs::fixedPointCheck, 0);
-  TaubinPairs oneByOne(points, rows.first, rows.ids, { 0.1, 0.1, 0.1 }, true, {});
+  TaubinPairs oneByOne(points, slots, { 0.1, 0.1, 0.1 }, true, {});
   for (int i = 0; i < 200; ++i)
     ASSERT_EQ(oneByOne.run(1, lambda, mu, 1), 1); // a single pair is never checked
   std::vector<Point3> a(points.size()), b(points.size());
@@ -132,6 +133,32 @@ TEST(PackedTaubinSteps, PairsStopOnceTheyChangeNothingWithTheSamePoints)
     EXPECT_NEAR(std::sqrt(a[v].x * a[v].x + a[v].y * a[v].y + a[v].z * a[v].z), 0.9, 1e-6) << v; // on its bound
   }
   // Unbounded, the filter keeps moving the points (towards their middle) all the pairs.
-  TaubinPairs unbounded(points, rows.first, rows.ids, {}, false, {});
+  TaubinPairs unbounded(points, slots, {}, false, {});
   EXPECT_EQ(unbounded.run(200, lambda, mu, 1), 200);
+}
+
+TEST(PackedTaubinSteps, SlotsGiveBackTheRowsTheyWereMadeFrom)
+{
+  // Every case of filling the slots: more neighbours than slots, exactly eight, a few, none
+  // (isolated: itself in every slot), a vertex that is its own neighbour (a triangle that repeats a
+  // corner), alone or first among others, and seven, whose last slot names the extra point.
+  Rows rows;
+  rows.add({ 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11 });
+  rows.add({ 0, 2, 3, 4, 5, 6, 7, 8 });
+  rows.add({ 0, 5 });
+  rows.add({});
+  rows.add({ 4 });
+  rows.add({ 5, 0 });
+  rows.add({ 0, 1, 2, 3, 4, 5, 7 });
+  for (int v = 7; v < 12; ++v)
+    rows.add({ 0, static_cast<std::int32_t>(v == 11 ? 7 : v + 1) });
+  for (unsigned int threads : { 1u, 3u })
+  {
+    const NeighbourSlots slots(rows.first, rows.ids, threads);
+    std::vector<std::size_t> first;
+    std::vector<std::int32_t> ids;
+    slots.rowsInto(first, ids, threads);
+    EXPECT_EQ(first, rows.first) << threads << " threads";
+    EXPECT_EQ(ids, rows.ids) << threads << " threads";
+  }
 }
