@@ -598,6 +598,9 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
   std::vector<Point3> start(order.size());
   for (std::size_t i = 0; i < order.size(); ++i)
     start[i] = mesh.points[static_cast<std::size_t>(order[i])];
+  // The mesh's points are `start` by row now, and are written back from `points` at the end: held
+  // beside both, they were part of a large piece's peak memory.
+  mesh.points = std::vector<Point3>();
   std::vector<Point3> points(order.size());
   DisplacementBound bound(start, options.maxDisplacement, bounded);
   // Vertices held where they are (drawn contours' own), by row: they take each pair's steps, as a
@@ -654,6 +657,7 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
   }
   relaxAroundNarrowTriangles(points, mesh, rank, neighbours, around, bound, options.narrowTriangleRelaxations, threads,
                              heldRow);
+  mesh.points.resize(order.size());
   for (std::size_t i = 0; i < order.size(); ++i)
     mesh.points[static_cast<std::size_t>(order[i])] = points[i];
   // A component a few edges across has no shape below the pass band: the filter collapses it, and
