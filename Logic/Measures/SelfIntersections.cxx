@@ -75,25 +75,29 @@ private:
   double m_Size;
 };
 
-/** The grid over the boxes (chooseCellSize), at most 2^21 cells along an axis as a key names. */
-CellGrid gridFor(const std::vector<BoundingBox>& boxes, const BoundingBox& all, unsigned int threads)
+/** The grid over `count` boxes, box b being boxOf(b) (chooseCellSize), at most 2^21 cells along an
+ *  axis as a key names. */
+template <typename BoxOf>
+CellGrid gridFor(BoxOf&& boxOf, std::size_t count, const BoundingBox& all, unsigned int threads)
 {
   const double extent = std::max({ all.high[0] - all.low[0], all.high[1] - all.low[1], all.high[2] - all.low[2] });
   std::vector<double> sides;
-  for (std::size_t b = 0; b < boxes.size(); b += cellSizeSampleStride(boxes.size()))
-    sides.push_back(std::max(
-      { boxes[b].high[0] - boxes[b].low[0], boxes[b].high[1] - boxes[b].low[1], boxes[b].high[2] - boxes[b].low[2] }));
-  const CellSizeChoice choice = chooseCellSize(std::move(sides), boxes.size(), extent, extent / double(1 << 20),
+  for (std::size_t b = 0; b < count; b += cellSizeSampleStride(count))
+  {
+    const BoundingBox box = boxOf(b);
+    sides.push_back(std::max({ box.high[0] - box.low[0], box.high[1] - box.low[1], box.high[2] - box.low[2] }));
+  }
+  const CellSizeChoice choice = chooseCellSize(std::move(sides), count, extent, extent / double(1 << 20),
                                                [&](double size)
                                                {
                                                  const CellGrid grid(all.low, size);
                                                  const std::vector<std::uint64_t> covered =
                                                    fixedRangeResults<std::uint64_t>(
-                                                     boxes.size(), 65536, threads,
+                                                     count, 65536, threads,
                                                      [&](std::uint64_t& sum, std::size_t first, std::size_t last)
                                                      {
                                                        for (std::size_t b = first; b < last; ++b)
-                                                         sum += grid.cellsOf(boxes[b]);
+                                                         sum += grid.cellsOf(boxOf(b));
                                                      });
                                                  return std::accumulate(covered.begin(), covered.end(), std::uint64_t(0));
                                                });
@@ -226,7 +230,6 @@ selfIntersectingTrianglePairsInGroups(const TriangleMesh& mesh, std::size_t entr
   // Every step runs on ranges of triangles or cells side by side: on one thread, building the grid
   // took as long as testing the pairs on two.
   const std::size_t nTriangles = mesh.triangles.size();
-  std::vector<BoundingBox> boxes(nTriangles);
   std::vector<char> degenerate(nTriangles, 0);
   parallelForRanges(nTriangles, threads,
                     [&](std::size_t first, std::size_t last)
@@ -236,25 +239,34 @@ selfIntersectingTrianglePairsInGroups(const TriangleMesh& mesh, std::size_t entr
                         const Triangle& triangle = mesh.triangles[t];
                         degenerate[t] = CGAL::collinear(corner(mesh, triangle[0]), corner(mesh, triangle[1]),
                                                         corner(mesh, triangle[2]));
-                        boxes[t] = boxOfTriangle(mesh, t);
                       }
                     });
   // Degenerate triangles are reported with themselves and left out of the boxes (as CGAL does).
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   std::vector<std::uint32_t> boxed;
-  BoundingBox all;
+  boxed.reserve(nTriangles);
   for (std::size_t t = 0; t < nTriangles; ++t)
     if (degenerate[t])
       pairs.emplace_back(t, t);
     else
-    {
-      boxes[boxed.size()] = boxes[t];
-      all.add(boxes[t]);
       boxed.push_back(static_cast<std::uint32_t>(t));
-    }
-  boxes.resize(boxed.size());
-  if (boxes.size() < 2)
+  std::vector<char>().swap(degenerate); // freed: not held through the test
+  if (boxed.size() < 2)
     return pairs;
+  // A box is taken from its triangle's corners each time it is needed rather than held for every
+  // triangle (48 bytes a triangle, a large piece's peak memory): the walks over the boxes read the
+  // corners instead, at about the same speed.
+  auto boxOf = [&](std::size_t b) { return boxOfTriangle(mesh, boxed[b]); };
+  const std::vector<BoundingBox> rangeBoxes =
+    fixedRangeResults<BoundingBox>(boxed.size(), 65536, threads,
+                                   [&](BoundingBox& box, std::size_t first, std::size_t last)
+                                   {
+                                     for (std::size_t b = first; b < last; ++b)
+                                       box.add(boxOf(b));
+                                   });
+  BoundingBox all;
+  for (const BoundingBox& box : rangeBoxes)
+    all.add(box);
 
   // Every box in every cell it covers, grouped by cell: the entries are dealt into a fixed number of
   // bins by their cell, each bin sorted on its own. A bin is a run of the grid's rows of cells along
@@ -263,7 +275,7 @@ selfIntersectingTrianglePairsInGroups(const TriangleMesh& mesh, std::size_t entr
   // cell, each cell's triangles were read from memory afresh, and that wait was most of the test's
   // time. (Runs of rows, not slabs across x: a surface one cell wide along x would be one bin.) The
   // pairs found are sorted at the end.
-  const CellGrid grid = gridFor(boxes, all, threads);
+  const CellGrid grid = gridFor(boxOf, boxed.size(), all, threads);
   constexpr std::size_t bins = 256;
   const std::array<std::uint64_t, 3> lastCell = grid.cellOf(all.high);
   const std::uint64_t rowsAlongY = lastCell[1] + 1, rows = (lastCell[0] + 1) * rowsAlongY;
@@ -274,13 +286,13 @@ selfIntersectingTrianglePairsInGroups(const TriangleMesh& mesh, std::size_t entr
   };
   // Ranges of boxes fixed by the count alone, so that the layout does not depend on the threads.
   constexpr std::size_t boxesPerRange = 16384;
-  const std::size_t ranges = fixedRangeCount(boxes.size(), boxesPerRange);
+  const std::size_t ranges = fixedRangeCount(boxed.size(), boxesPerRange);
   std::vector<std::size_t> counts(ranges * bins, 0);
-  parallelForFixedRanges(boxes.size(), boxesPerRange, threads,
+  parallelForFixedRanges(boxed.size(), boxesPerRange, threads,
                          [&](std::size_t r, std::size_t firstBox, std::size_t lastBox)
                          {
                            for (std::size_t b = firstBox; b < lastBox; ++b)
-                             grid.anyCovered(boxes[b], [&](std::uint64_t key) {
+                             grid.anyCovered(boxOf(b), [&](std::uint64_t key) {
                                ++counts[r * bins + binOf(key)];
                                return false;
                              });
@@ -294,7 +306,7 @@ selfIntersectingTrianglePairsInGroups(const TriangleMesh& mesh, std::size_t entr
     for (std::size_t r = 0; r < ranges; ++r)
       entriesOfBin[bin] += counts[r * bins + bin];
   if (entriesPerGroup == 0)
-    entriesPerGroup = std::max<std::size_t>(boxes.size(), std::size_t{ 1 } << 20);
+    entriesPerGroup = std::max<std::size_t>(boxed.size(), std::size_t{ 1 } << 20);
   std::vector<std::size_t> groupStart{ 0 };
   for (std::size_t bin = 0, inGroup = 0; bin < bins; ++bin)
   {
@@ -328,11 +340,11 @@ selfIntersectingTrianglePairsInGroups(const TriangleMesh& mesh, std::size_t entr
       }
       binStart[bin + 1] = at;
     }
-    parallelForFixedRanges(boxes.size(), boxesPerRange, threads,
+    parallelForFixedRanges(boxed.size(), boxesPerRange, threads,
                            [&](std::size_t r, std::size_t firstBox, std::size_t lastBox)
                            {
                              for (std::size_t b = firstBox; b < lastBox; ++b)
-                               grid.anyCovered(boxes[b], [&](std::uint64_t key) {
+                               grid.anyCovered(boxOf(b), [&](std::uint64_t key) {
                                  const std::size_t bin = binOf(key);
                                  if (bin >= firstBin && bin < lastBin)
                                    entries[next[r * bins + bin]++] = { key, static_cast<std::uint32_t>(b) };
@@ -364,7 +376,8 @@ selfIntersectingTrianglePairsInGroups(const TriangleMesh& mesh, std::size_t entr
                     for (; e < binStart[bin + 1] && entries[e].key == cell; ++e)
                     {
                       const std::uint32_t b = entries[e].box;
-                      members.push_back({ boxes[b], grid.cellOf(boxes[b].low), boxed[b], cornersOf(mesh, boxed[b]) });
+                      const BoundingBox box = boxOf(b);
+                      members.push_back({ box, grid.cellOf(box.low), boxed[b], cornersOf(mesh, boxed[b]) });
                     }
                     // Swept along x: each box meets only those that start before it ends, so the
                     // pairs are taken from the cell's boxes in order of their low x, each against the
