@@ -151,13 +151,13 @@ void packedUmbrellaStep(std::vector<Float4>& points, const NeighbourSlots& neigh
   points.swap(scratch);
 }
 
-TaubinPairs::TaubinPairs(const std::vector<Point3>& startPoints, const NeighbourSlots& neighbours,
+TaubinPairs::TaubinPairs(const std::vector<Point3>& startPoints, const NeighbourSlots& slots,
                          const std::array<double, 3>& displacementBound, bool bounded,
                          std::vector<std::size_t> heldVertices)
   : packed(startPoints)
   , start(packed.data())
   , scratch(packed.data())
-  , neighbours(neighbours)
+  , neighbours(slots)
   , free(start, {}, false)
   , bound(start, displacementBound, bounded)
   , held(std::move(heldVertices))

@@ -52,7 +52,8 @@ struct NeighbourSlots
    *  vertices side by side on `threads` threads (the same slots for any number). */
   NeighbourSlots(const std::vector<std::size_t>& first, const std::vector<std::int32_t>& ids,
                  unsigned int threads = 1);
-  /** The compressed rows they were made from, read back (the same neighbours in the same order). */
+  /** The compressed rows they were made from, read back (the same neighbours in the same order), for
+   *  rows that name no vertex twice (as neighbour rows do: a vertex is at most once its own). */
   void rowsInto(std::vector<std::size_t>& first, std::vector<std::int32_t>& ids, unsigned int threads = 1) const;
 
   std::vector<std::int32_t> ids;   ///< vertex v's slots are ids[slots * v] .. ids[slots * v + slots - 1]

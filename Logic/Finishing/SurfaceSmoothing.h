@@ -71,7 +71,8 @@ std::array<double, 3> boundAwayFromFeatures(const SurfaceSmoothingOptions& optio
  *  `threads` threads (0: every core), each from the previous step's positions, so the result does
  *  not depend on the number. The vertices flagged in `held` (one flag per vertex; empty: none) take
  *  each step pair and are put back after it, as sharp features are, and neither the relaxation nor
- *  the volume offset moves them: a drawn contour's vertices stay on it.
+ *  the volume offset moves them: a drawn contour's vertices stay on it. Should it throw (out of
+ *  memory), the mesh may be left without its points: the smoothing works on its own copies of them.
  *  G. Taubin, "A signal processing approach to fair surface design", SIGGRAPH 1995. */
 void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, unsigned int threads = 1,
                    const std::vector<char>& held = {});

@@ -298,7 +298,7 @@ selfIntersectingTrianglePairsInGroups(const TriangleMesh& mesh, std::size_t entr
                              });
                          });
   // The bins are filed and tested a group at a time, each group of about as many entries as there
-  // are boxes: all at once, the entries (a box in each of the one to eight cells it covers) were
+  // are boxes: all at once, the entries (a box in each cell it covers, at most eight on average) were
   // most of the test's memory, and a run's peak came when a large piece was tested beside another
   // piece's smoothing. Filing a group costs one more walk over the boxes' cells.
   std::vector<std::size_t> entriesOfBin(bins, 0);

@@ -3,6 +3,10 @@
 // some vertices moved, against the whole one.
 #include "Measures/SelfIntersections.h"
 
+#include "Core/BoundingBox.h"
+
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 using namespace slicemesh;
@@ -51,11 +55,13 @@ TriangleMesh scatteredTetrahedra(int count, double side, Uniform& uniform)
   TriangleMesh mesh;
   for (int i = 0; i < count; ++i)
   {
-    TriangleMesh one = tetrahedron();
+    const TriangleMesh one = tetrahedron();
     const Point3 at{ uniform(0, side), uniform(0, side), uniform(0, side) };
-    for (Point3& p : one.points)
-      p = { p.x + at.x, p.y + at.y, p.z + at.z };
-    mesh = joined(mesh, one);
+    const auto offset = static_cast<std::int32_t>(mesh.points.size());
+    for (const Point3& p : one.points)
+      mesh.points.push_back({ p.x + at.x, p.y + at.y, p.z + at.z });
+    for (const Triangle& t : one.triangles)
+      mesh.triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
   }
   return mesh;
 }
@@ -230,15 +236,30 @@ TEST(SelfIntersections, AfterMovingALongTriangleEverySmallOneItNowPassesIsFound)
 
 TEST(SelfIntersections, CellsFiledAGroupAtATimeGiveTheSamePairs)
 {
-  // Tetrahedra through each other, and a sliver through a row of small triangles (a box in 200
-  // cells): the pairs of the whole test, whatever the group size (1: a group per run of cells)
-  // and the number of threads.
+  // Tetrahedra through each other (more triangles than one range of the filing: 16,384) and a sliver
+  // through a row of small triangles (a box in 200 cells): the pairs of every pair of triangles
+  // whose boxes meet, tested one by one, whatever the group size (50: about a group per run of
+  // cells) and the number of threads.
   Uniform uniform;
-  const TriangleMesh mesh = joined(scatteredTetrahedra(600, 12.0, uniform), rowAndSliver(0.0));
-  const Pairs whole = selfIntersectingTrianglePairs(mesh, 1);
-  ASSERT_GT(whole.size(), 400u); // the tetrahedra's crossings and the sliver's 200
-  for (std::size_t perGroup : { 1, 50, 700, 5000 })
-    for (unsigned int threads : { 1u, 2u, 8u })
-      EXPECT_EQ(selfIntersectingTrianglePairsInGroups(mesh, perGroup, threads), whole)
+  const TriangleMesh mesh = joined(scatteredTetrahedra(4300, 30.0, uniform), rowAndSliver(0.0));
+  ASSERT_GT(mesh.triangles.size(), 16384u);
+  std::vector<std::pair<BoundingBox, std::size_t>> byLowX;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    byLowX.emplace_back(boxOfTriangle(mesh, t), t);
+  std::sort(byLowX.begin(), byLowX.end(), [](const auto& a, const auto& b) { return a.first.low[0] < b.first.low[0]; });
+  Pairs oneByOne;
+  for (std::size_t i = 0; i < byLowX.size(); ++i)
+    for (std::size_t j = i + 1; j < byLowX.size() && byLowX[j].first.low[0] <= byLowX[i].first.high[0]; ++j)
+    {
+      const std::size_t s = byLowX[i].second, t = byLowX[j].second;
+      if (byLowX[i].first.overlaps(byLowX[j].first) && trianglesCross(mesh.points, mesh.triangles[s], mesh.triangles[t]))
+        oneByOne.emplace_back(std::min(s, t), std::max(s, t));
+    }
+  std::sort(oneByOne.begin(), oneByOne.end());
+  ASSERT_GT(oneByOne.size(), 400u); // the tetrahedra's crossings and the sliver's 200
+  EXPECT_EQ(selfIntersectingTrianglePairs(mesh, 2), oneByOne);
+  for (std::size_t perGroup : { 50, 5000, 40000 })
+    for (unsigned int threads : { 1u, 3u })
+      EXPECT_EQ(selfIntersectingTrianglePairsInGroups(mesh, perGroup, threads), oneByOne)
         << perGroup << " filings a group, " << threads << " threads";
 }
