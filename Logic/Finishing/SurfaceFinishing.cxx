@@ -219,11 +219,11 @@ bool crossesItselfInAFewPlaces(const MeshValidation& v)
 FinishedPiece smoothedRemesh(TriangleMesh remeshed, const SurfaceFinishingOptions& options, double volume,
                              unsigned int threads, const std::vector<Point3>& crossedOthers = {})
 {
-  std::vector<Point3> unsmoothed = remeshed.points; // smoothing moves points only
   const std::vector<char> leftAsTiled =
     crossedOthers.empty() ? std::vector<char>() : verticesNear(remeshed, crossedOthers, keptRadius(options));
   const std::vector<char> held = heldVertices(remeshed, options);
-  smoothSurface(remeshed, options.smoothing, threads, held);
+  std::vector<Point3> unsmoothed; // smoothing moves points only
+  smoothSurface(remeshed, options.smoothing, threads, held, &unsmoothed);
   // The remesh's chords cut the corners of structures a few edges across: the piece gets its volume
   // back (on drawn contours, as far as heldOffset lets it).
   offsetToVolume(remeshed, volume, held, heldOffset(options), threads);

@@ -566,10 +566,14 @@ void offsetToVolume(TriangleMesh& mesh, double volume, const std::vector<char>& 
 }
 
 void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, unsigned int threads,
-                   const std::vector<char>& held)
+                   const std::vector<char>& held, std::vector<Point3>* unsmoothed)
 {
   if (options.iterations <= 0 || mesh.triangles.empty())
+  {
+    if (unsmoothed)
+      *unsmoothed = mesh.points;
     return;
+  }
   if (!(options.passBand > 0.0 && options.passBand < 1.0))
     throw Error("surface smoothing: the pass band must lie between 0 and 1");
   // 0.63 rather than Taubin's 0.5: the same pass band is reached in two thirds of the pairs
@@ -671,6 +675,12 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
   for (std::size_t v = 0; v < mesh.points.size(); ++v)
     if (collapsed[component[v]])
       mesh.points[v] = start[static_cast<std::size_t>(rank[v])];
+  if (unsmoothed)
+  {
+    unsmoothed->resize(mesh.points.size());
+    for (std::size_t v = 0; v < mesh.points.size(); ++v)
+      (*unsmoothed)[v] = start[static_cast<std::size_t>(rank[v])];
+  }
   // Held vertices leave the others to make up the volume, and where they are few (the cap of a wall
   // thinner than an edge) no further than the filter's own bound.
   restoreVolumes(mesh, component, volume, threads, held,

@@ -71,11 +71,13 @@ std::array<double, 3> boundAwayFromFeatures(const SurfaceSmoothingOptions& optio
  *  `threads` threads (0: every core), each from the previous step's positions, so the result does
  *  not depend on the number. The vertices flagged in `held` (one flag per vertex; empty: none) take
  *  each step pair and are put back after it, as sharp features are, and neither the relaxation nor
- *  the volume offset moves them: a drawn contour's vertices stay on it. Should it throw (out of
- *  memory), the mesh may be left without its points: the smoothing works on its own copies of them.
+ *  the volume offset moves them: a drawn contour's vertices stay on it. `unsmoothed`, when given,
+ *  receives the points as they were before (from the smoothing's own copy: a caller that keeps
+ *  them needs no copy of its own held through the smoothing). Should it throw (out of memory), the
+ *  mesh may be left without its points: the smoothing works on its own copies of them.
  *  G. Taubin, "A signal processing approach to fair surface design", SIGGRAPH 1995. */
 void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, unsigned int threads = 1,
-                   const std::vector<char>& held = {});
+                   const std::vector<char>& held = {}, std::vector<Point3>* unsmoothed = nullptr);
 
 /** Only the relaxation around narrow triangles of smoothSurface (options.narrowTriangleRelaxations
  *  steps, options.maxDisplacement around `start`, one point per vertex), with the vertices flagged

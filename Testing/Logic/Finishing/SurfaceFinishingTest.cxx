@@ -791,6 +791,25 @@ TEST(SurfaceFinishing, EveryPieceIsFinishedOnItsOwn)
     EXPECT_EQ(finished.fallback.rfind("1 of 2 pieces", 0), 0u) << finished.fallback;
 }
 
+TEST(SurfaceSmoothing, HandsBackThePointsAsTheyWereBefore)
+{
+  // The points given back are the mesh's before the smoothing, exactly; with no pairs asked, the
+  // mesh as it is. The smoothing itself is the same with or without them.
+  const TriangleMesh rippled = octaSphere(20, 10.0, 0.03, 2.0);
+  TriangleMesh plain = rippled, handing = rippled;
+  std::vector<Point3> before;
+  smoothSurface(plain, SurfaceSmoothingOptions{}, 2);
+  smoothSurface(handing, SurfaceSmoothingOptions{}, 2, {}, &before);
+  EXPECT_TRUE(samePoints(before, rippled.points));
+  EXPECT_TRUE(samePoints(handing.points, plain.points));
+  EXPECT_FALSE(samePoints(handing.points, rippled.points)); // it did smooth
+  SurfaceSmoothingOptions none;
+  none.iterations = 0;
+  TriangleMesh untouched = rippled;
+  smoothSurface(untouched, none, 2, {}, &before);
+  EXPECT_TRUE(samePoints(before, rippled.points));
+}
+
 TEST(SurfaceFinishing, TheSameBitForBitOnOneTwoAndEightThreads)
 {
   // A rippled sphere of about 25,000 vertices: enough for the per-vertex work to be split into
