@@ -78,17 +78,21 @@ std::string gibibytes(double bytes)
  *  DICOM and the snapshot became plugins; kept at 64 MB: the DICOM plugin adds about 20 MB). */
 constexpr double bytesOfTheProgram = 64.0 * 1024.0 * 1024.0;
 
-/** Per voxel besides the volume: the mask (1 byte) and the contours and meshes of a large structure.
- *  The volume is dropped once the masks are cut and each mask once it is traced, so the meshes' share
- *  was measured as the peak less the program (/usr/bin/time, scaling benchmark inputs): 6.7 bytes a
- *  voxel on a 445 x 385 x 269 uchar label map with a large ellipsoid (357 MB peak, 0.92 M triangles),
- *  5.9 on a sphere of 512^3 (848 MB, 1.88 M triangles), 9.7 on the same at 256^3 (213 MB). A
- *  surface's share per voxel shrinks as the volume grows, and the estimate matters for large ones. */
-constexpr double bytesPerVoxelOfARun = 8.0;
+/** Per voxel besides the volume: the mask (1 byte) and the contours and meshes of the structures.
+ *  The volume is dropped once the masks are cut and each mask once it is traced, so the meshes'
+ *  share, the peak less the program (64 MB here) and the volume, was measured per voxel on the
+ *  scaling benchmark's uchar label maps (2 threads, /usr/bin/time and farm-bench): 7.4-8.2 on the
+ *  generated whole-body segmentation of 87 labels (512 x 512 x 400; 847-983 MiB in six runs), 3.1
+ *  and 4.1 on one large ellipsoid (448 x 388 x 268) and a sphere of 256^3, 1.8 on a sphere of 512^3.
+ *  The meshes grow with the surface, not the voxels: a crowded volume decides the figure, kept a
+ *  tenth above the most measured so that no run passes the check only to be killed later (a single
+ *  structure is over-estimated two to four times). */
+constexpr double bytesPerVoxelOfARun = 9.0;
 
 /** Per tiled triangle, through the finishing: the peak less the program on one ROI of two 10 mm
  *  squares 10 m apart (2 million tiled triangles by the estimate, 871 MB peak); 1 m apart, 140 bytes
- *  (0.2 million, 92 MB). */
+ *  (0.2 million, 92 MB). Label maps of one structure, measured again since: 310-400 bytes a tiled
+ *  triangle (spheres of 128^3 to 512^3, the large and the thick ellipsoid). */
 constexpr double bytesPerTiledTriangle = 400.0;
 
 } // namespace

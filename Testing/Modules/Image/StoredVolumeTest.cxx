@@ -277,8 +277,8 @@ TEST_F(StoredVolumeTest, SegmentationIsTheMaskOfTheFloatVolume)
 
 TEST_F(StoredVolumeTest, MemoryEstimateCountsTheVolumeAsItIsHeld)
 {
-  // 4 M voxels: 64 MiB + 4 M x (1 + 8) bytes = 98 MiB as stored bytes; as float, 64 MiB + 4 M x
-  // (4 + 1 + 8) bytes = 110 MiB. Under a limit of 108 MiB the label map of bytes is read as stored,
+  // 4 M voxels: 64 MiB + 4 M x (1 + 9) bytes = 102 MiB as stored bytes; as float, 64 MiB + 4 M x
+  // (4 + 1 + 9) bytes = 117 MiB. Under a limit of 108 MiB the label map of bytes is read as stored,
   // and refused as float.
   auto bytes = testing::makeImage<Uint8Volume>({ 200, 200, 100 });
   bytes->FillBuffer(1);
