@@ -29,6 +29,12 @@ struct VertexNeighbours
   std::vector<double> inverseCount;
 };
 
+/** VertexNeighbours::inverseCount of a vertex with `count` neighbours. */
+double inverseCountOf(std::size_t count)
+{
+  return count > 0 ? 1.0 / static_cast<double>(count) : 0.0;
+}
+
 /** The neighbours of every vertex, numbered by `rank` (the vertex's place in the smoothing's order),
  *  in increasing order. Each corner of a triangle has the two others for neighbours: they are
  *  counted and placed per vertex, then each vertex's few are sorted and made unique, the vertices
@@ -71,7 +77,7 @@ VertexNeighbours neighboursOf(const TriangleMesh& mesh, const std::vector<std::i
   for (std::size_t v = 0; v < vertices; ++v)
   {
     neighbours.first[v + 1] = neighbours.first[v] + distinct[v];
-    neighbours.inverseCount[v] = distinct[v] > 0 ? 1.0 / static_cast<double>(distinct[v]) : 0.0;
+    neighbours.inverseCount[v] = inverseCountOf(distinct[v]);
   }
   neighbours.ids.resize(neighbours.first[vertices]);
   parallelForRanges(vertices, threads,
@@ -127,10 +133,7 @@ VertexNeighbours fromSlots(const NeighbourSlots& slots, unsigned int threads)
   slots.rowsInto(neighbours.first, neighbours.ids, threads);
   neighbours.inverseCount.resize(neighbours.first.size() - 1);
   for (std::size_t v = 0; v + 1 < neighbours.first.size(); ++v)
-  {
-    const std::size_t count = neighbours.first[v + 1] - neighbours.first[v];
-    neighbours.inverseCount[v] = count > 0 ? 1.0 / static_cast<double>(count) : 0.0;
-  }
+    neighbours.inverseCount[v] = inverseCountOf(neighbours.first[v + 1] - neighbours.first[v]);
   return neighbours;
 }
 

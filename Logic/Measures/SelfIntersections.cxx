@@ -308,7 +308,8 @@ selfIntersectingTrianglePairsInGroups(const TriangleMesh& mesh, std::size_t entr
   if (entriesPerGroup == 0)
     entriesPerGroup = std::max<std::size_t>(boxed.size(), std::size_t{ 1 } << 20);
   std::vector<std::size_t> groupStart{ 0 };
-  for (std::size_t bin = 0, inGroup = 0; bin < bins; ++bin)
+  std::size_t largestGroup = 0, inGroup = 0;
+  for (std::size_t bin = 0; bin < bins; ++bin)
   {
     if (inGroup > 0 && inGroup + entriesOfBin[bin] > entriesPerGroup)
     {
@@ -316,13 +317,9 @@ selfIntersectingTrianglePairsInGroups(const TriangleMesh& mesh, std::size_t entr
       inGroup = 0;
     }
     inGroup += entriesOfBin[bin];
+    largestGroup = std::max(largestGroup, inGroup);
   }
   groupStart.push_back(bins);
-  std::size_t largestGroup = 0;
-  for (std::size_t g = 0; g + 1 < groupStart.size(); ++g)
-    largestGroup = std::max(largestGroup, std::accumulate(entriesOfBin.begin() + static_cast<std::ptrdiff_t>(groupStart[g]),
-                                                          entriesOfBin.begin() + static_cast<std::ptrdiff_t>(groupStart[g + 1]),
-                                                          std::size_t{ 0 }));
   std::vector<CellEntry, DefaultInitAllocator<CellEntry>> entries(largestGroup); // filled on every thread below
   std::vector<std::size_t> binStart(bins + 1, 0), next(ranges * bins);
   std::mutex found;
