@@ -1,10 +1,13 @@
 #include "Finishing/RemeshingRegions.h"
 
+#include "Core/AreaNormal.h"
 #include "Core/DisjointSets.h"
 #include "Measures/MeshComponents.h"
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <numeric>
 
 namespace slicemesh
 {
@@ -38,6 +41,23 @@ std::vector<int> slabRegions(const TriangleMesh& mesh, std::size_t trianglesPerR
   for (std::size_t t = 0; t < n; ++t)
     regionOf[t] = static_cast<int>(std::upper_bound(cuts.begin(), cuts.end(), height[t]) - cuts.begin());
   return regionOf;
+}
+
+std::vector<std::size_t> mostWorkFirst(const TriangleMesh& mesh, const std::vector<int>& regionOf, int count,
+                                       double targetEdgeLength)
+{
+  const double targetArea = 0.25 * std::sqrt(3.0) * targetEdgeLength * targetEdgeLength;
+  std::vector<double> work(static_cast<std::size_t>(std::max(count, 0)), 0.0);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (regionOf[t] >= 0)
+    {
+      const Point3 n = areaNormal(mesh, mesh.triangles[t]);
+      work[static_cast<std::size_t>(regionOf[t])] += 1.0 + 0.5 * std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z) / targetArea;
+    }
+  std::vector<std::size_t> order(work.size());
+  std::iota(order.begin(), order.end(), std::size_t{ 0 });
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return work[a] > work[b]; });
+  return order;
 }
 
 std::vector<char> seamVertices(const TriangleMesh& mesh, const std::vector<int>& regionOf)

@@ -26,6 +26,14 @@ struct MeshRegion
 std::vector<int> slabRegions(const TriangleMesh& mesh, std::size_t trianglesPerRegion, double minimumHeight,
                              int& count);
 
+/** The regions in the order to remesh them side by side: the most work first, so that no large
+ *  region is left to run alone on one thread at the end. A region's work is taken as its triangles
+ *  plus the triangles of `targetEdgeLength` its area holds (what the remesh collapses and what it
+ *  makes): a slab holding a flat cap, tiled with few large triangles, is split into four to five
+ *  times as many and took seven times as long as a slab of as many tiled triangles on a wall. */
+std::vector<std::size_t> mostWorkFirst(const TriangleMesh& mesh, const std::vector<int>& regionOf, int count,
+                                       double targetEdgeLength);
+
 /** Whether each vertex lies on a seam: between triangles of two regions, or of a region and the
  *  rest (region -1). */
 std::vector<char> seamVertices(const TriangleMesh& mesh, const std::vector<int>& regionOf);

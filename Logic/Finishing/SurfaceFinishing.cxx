@@ -182,13 +182,13 @@ FinishedPiece keptAsTiled(const TriangleMesh& piece, const MeshValidation& tiled
  *  piece is kept so only if it crosses itself nowhere; `validation` (no crossings) is then the new
  *  piece's. */
 void relaxBesidePutBack(TriangleMesh& mesh, const std::vector<Point3>& unsmoothed, MeshValidation& validation,
-                        const SurfaceFinishingOptions& options)
+                        const SurfaceFinishingOptions& options, unsigned int threads)
 {
   std::vector<char> putBack(mesh.points.size(), 0);
   for (std::size_t v = 0; v < mesh.points.size(); ++v)
     putBack[v] = samePoint(mesh.points[v], unsmoothed[v]);
   TriangleMesh relaxed = mesh;
-  if (!relaxNarrowTriangles(relaxed, unsmoothed, putBack, options.smoothing))
+  if (!relaxNarrowTriangles(relaxed, unsmoothed, putBack, options.smoothing, threads))
     return; // nothing narrow beside them: the piece as it is, already validated
   // The piece as it was had no crossings (validation): only the relaxed vertices' triangles are tested.
   std::vector<std::pair<std::size_t, std::size_t>> crossings;
@@ -244,7 +244,7 @@ FinishedPiece smoothedRemesh(TriangleMesh remeshed, const SurfaceFinishingOption
                               leftAsTiled.empty(), unsmoothedVertices);
   }
   if (unsmoothedVertices > 0 && validation.selfIntersections == 0)
-    relaxBesidePutBack(remeshed, unsmoothed, validation, options);
+    relaxBesidePutBack(remeshed, unsmoothed, validation, options, threads);
   // Last, on the valid piece: its narrow triangles where a structure is as thin as an edge. The
   // vertices on drawn contours and those left as tiled beside another piece stay, found again on the
   // piece as it is now: a local repair above renumbers its vertices (and the widening does too, so

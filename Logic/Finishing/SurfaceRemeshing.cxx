@@ -539,7 +539,8 @@ MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions&
 /** Remeshes the regions of `mesh` (regionOf, -1: left alone) side by side; a region that cannot be
  *  remeshed is kept as it was when `keepFailed`, else the whole call throws. A region whose rounds
  *  end before the grid is built waits for its finish until all have had their rounds: the threads
- *  go on with other regions meanwhile instead of waiting with the one building the grid. */
+ *  go on with other regions meanwhile instead of waiting with the one building the grid. The regions
+ *  start most work first (mostWorkFirst); each goes into its own slot, whatever the order. */
 TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& regionOf, int count,
                            const SurfaceRemeshingOptions& options, const ProjectionGrid& grid, unsigned int threads,
                            bool keepFailed, const ContourStack* heldContours)
@@ -560,9 +561,11 @@ TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& reg
       regions[r] = extractRegion(mesh, regionOf, static_cast<int>(r));
     }
   };
+  const std::vector<std::size_t> order = mostWorkFirst(mesh, regionOf, count, options.targetEdgeLength);
   parallelFor(regions.size(), threads,
-              [&](std::size_t r)
+              [&](std::size_t i)
               {
+                const std::size_t r = order[i];
                 remeshed(r,
                          [&]
                          {
@@ -576,8 +579,9 @@ TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& reg
                          });
               });
   parallelFor(regions.size(), threads,
-              [&](std::size_t r)
+              [&](std::size_t i)
               {
+                const std::size_t r = order[i];
                 if (waiting[r])
                   remeshed(r, [&] { regions[r] = waiting[r]->finish(grid.get(), 1); });
                 waiting[r].reset();

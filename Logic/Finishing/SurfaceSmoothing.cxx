@@ -545,7 +545,7 @@ std::array<double, 3> boundAwayFromFeatures(const SurfaceSmoothingOptions& optio
 }
 
 bool relaxNarrowTriangles(TriangleMesh& mesh, const std::vector<Point3>& start, const std::vector<char>& fixed,
-                          const SurfaceSmoothingOptions& options)
+                          const SurfaceSmoothingOptions& options, unsigned int threads)
 {
   if (mesh.triangles.empty() || start.size() != mesh.points.size() || fixed.size() != mesh.points.size())
     return false;
@@ -556,8 +556,8 @@ bool relaxNarrowTriangles(TriangleMesh& mesh, const std::vector<Point3>& start, 
   const DisplacementBound bound(start, options.maxDisplacement, bounded);
   std::vector<std::int32_t> rank(mesh.points.size()); // the mesh's own order: vertex v is row v
   std::iota(rank.begin(), rank.end(), 0);
-  return relaxAroundNarrowTriangles(mesh.points, mesh, rank, neighboursOf(mesh, rank, 1), trianglesOfRows(mesh, rank),
-                                    bound, options.narrowTriangleRelaxations, 1, fixed);
+  return relaxAroundNarrowTriangles(mesh.points, mesh, rank, neighboursOf(mesh, rank, threads), trianglesOfRows(mesh, rank),
+                                    bound, options.narrowTriangleRelaxations, threads, fixed);
 }
 
 void offsetToVolume(TriangleMesh& mesh, double volume, const std::vector<char>& held, double maxOffset,

@@ -82,9 +82,10 @@ void smoothSurface(TriangleMesh& mesh, const SurfaceSmoothingOptions& options, u
 /** Only the relaxation around narrow triangles of smoothSurface (options.narrowTriangleRelaxations
  *  steps, options.maxDisplacement around `start`, one point per vertex), with the vertices flagged
  *  in `fixed` kept where they are: for a smoothed surface some of whose vertices were put back where
- *  they were before the smoothing. Returns whether any vertex was relaxed (false: mesh untouched). */
+ *  they were before the smoothing. Returns whether any vertex was relaxed (false: mesh untouched).
+ *  The same points on any number of threads. */
 bool relaxNarrowTriangles(TriangleMesh& mesh, const std::vector<Point3>& start, const std::vector<char>& fixed,
-                          const SurfaceSmoothingOptions& options);
+                          const SurfaceSmoothingOptions& options, unsigned int threads = 1);
 
 /** Moves every vertex of a closed, consistently oriented mesh along its vertex normal by one common
  *  distance so that its signed volume becomes `volume` (a few Newton steps: the volume grows by the

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <set>
 #include <utility>
@@ -104,4 +105,38 @@ TEST(SeamBands, MatchTheirDefinitionOnRandomMeshes)
     ASSERT_EQ(regions, expected) << "trial " << trial;
     ASSERT_EQ(count, expectedCount) << "trial " << trial;
   }
+}
+
+TEST(RegionOrder, MostWorkFirstCountsTheAreaToFillAsWellAsTheTriangles)
+{
+  // Region 1 is two triangles of 50 target triangles' area each (a cap tiled with a few large
+  // triangles); regions 0 and 2 are ten small triangles each, region 3 twelve; region 4 is empty and
+  // region -1 is left alone (not counted). By triangles alone region 1 would come last.
+  const double edge = 1.0;
+  // A right triangle of legs s has area s^2 / 2: 2 * 50 * sqrt(3) / 4 * edge^2 when s^2 is that.
+  const double side = std::sqrt(25.0 * std::sqrt(3.0)) * edge;
+  TriangleMesh mesh;
+  auto addTriangle = [&mesh](double x, double y, double size, int z)
+  {
+    const auto first = static_cast<std::int32_t>(mesh.points.size());
+    mesh.points.push_back({ x, y, static_cast<double>(z) });
+    mesh.points.push_back({ x + size, y, static_cast<double>(z) });
+    mesh.points.push_back({ x, y + size, static_cast<double>(z) });
+    mesh.triangles.push_back({ first, first + 1, first + 2 });
+  };
+  std::vector<int> regionOf;
+  auto add = [&](int region, int count, double size)
+  {
+    for (int i = 0; i < count; ++i)
+    {
+      addTriangle(i, 0.0, size, region);
+      regionOf.push_back(region);
+    }
+  };
+  add(0, 10, 0.1 * edge);
+  add(1, 2, side);
+  add(2, 10, 0.1 * edge);
+  add(3, 12, 0.1 * edge);
+  add(-1, 100, 10.0 * edge);
+  EXPECT_EQ(mostWorkFirst(mesh, regionOf, 5, edge), (std::vector<std::size_t>{ 1, 3, 0, 2, 4 }));
 }

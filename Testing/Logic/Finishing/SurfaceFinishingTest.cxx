@@ -5,6 +5,7 @@
 #include "Measures/MeshValidation.h"
 #include "Measures/TriangleAngles.h"
 #include "Finishing/RemeshingRegions.h"
+#include "Finishing/PutBackVertices.h"
 #include "Finishing/SurfaceFinishing.h"
 #include "Finishing/SurfaceSmoothing.h"
 #include "Tiling/SurfaceReconstruction.h"
@@ -594,10 +595,10 @@ namespace
 /** octaSphere(24, 10) with its vertices pushed along the sphere (each by up to `fraction` of an
  *  edge, in a fixed pattern), as the filter crowds them where a surface folds; only the vertices
  *  above height `above` are pushed. */
-TriangleMesh crowdedSphere(double fraction, double above = -20.0)
+TriangleMesh crowdedSphere(double fraction, double above = -20.0, int subdivisions = 24)
 {
-  TriangleMesh crowded = octaSphere(24, 10.0);
-  const double edge = 10.0 * M_PI / 2.0 / 24.0;
+  TriangleMesh crowded = octaSphere(subdivisions, 10.0);
+  const double edge = 10.0 * M_PI / 2.0 / subdivisions;
   for (std::size_t v = 0; v < crowded.points.size(); ++v)
   {
     Point3& p = crowded.points[v];
@@ -689,6 +690,33 @@ TEST(SurfaceSmoothing, RelaxationAroundNarrowTrianglesOpensThemAndLeavesTheRestA
   std::printf("largest difference below the equator %.2g mm, in the cap %.2g mm\n", far, cap);
   EXPECT_LT(far, 1e-3);
   EXPECT_GT(cap, 0.05);
+}
+
+TEST(SurfaceSmoothing, RelaxingNarrowTrianglesGivesTheSamePointsOnAnyNumberOfThreads)
+{
+  // A sphere crowded all over, every seventh vertex fixed: enough moving vertices for several
+  // ranges of them (over 2,048), each vertex's step reading the points of the step before.
+  TriangleMesh crowded = crowdedSphere(0.7, -20.0, 48);
+  smoothSurface(crowded, onePairOnly());
+  std::vector<char> fixed(crowded.points.size(), 0);
+  for (std::size_t v = 0; v < crowded.points.size(); v += 7)
+    fixed[v] = 1;
+  SurfaceSmoothingOptions options;
+  options.maxDisplacement = { 0.3, 0.3, 0.3 };
+  TriangleMesh one = crowded;
+  ASSERT_TRUE(relaxNarrowTriangles(one, crowded.points, fixed, options, 1));
+  std::size_t moved = 0;
+  for (std::size_t v = 0; v < crowded.points.size(); ++v)
+    moved += !samePoint(one.points[v], crowded.points[v]);
+  std::printf("%zu of %zu vertices relaxed\n", moved, crowded.points.size());
+  ASSERT_GT(moved, 2048u);
+  for (unsigned int threads : { 2u, 3u, 8u })
+  {
+    TriangleMesh several = crowded;
+    ASSERT_TRUE(relaxNarrowTriangles(several, crowded.points, fixed, options, threads));
+    for (std::size_t v = 0; v < crowded.points.size(); ++v)
+      ASSERT_TRUE(samePoint(several.points[v], one.points[v])) << threads << " threads, vertex " << v;
+  }
 }
 
 TEST(SurfaceSmoothing, RelaxingNarrowTrianglesKeepsTheFixedVerticesWhereTheyAre)
