@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace slicemesh
@@ -136,30 +137,57 @@ std::vector<int> seamBands(const TriangleMesh& mesh, const std::vector<char>& se
   return regionOf;
 }
 
-MeshRegion extractRegion(const TriangleMesh& mesh, const std::vector<int>& regionOf, int region)
+RegionTriangles trianglesByRegion(const std::vector<int>& regionOf, int count)
+{
+  if (regionOf.size() > std::numeric_limits<std::uint32_t>::max())
+    throw Error("remeshing regions: more triangles than a region's list can name");
+  RegionTriangles regions;
+  regions.first.assign(static_cast<std::size_t>(std::max(count, 0)) + 1, 0);
+  for (int r : regionOf)
+    if (r >= 0)
+      ++regions.first[static_cast<std::size_t>(r) + 1];
+  std::partial_sum(regions.first.begin(), regions.first.end(), regions.first.begin());
+  regions.ids.resize(regions.first.back());
+  std::vector<std::size_t> next(regions.first.begin(), regions.first.end() - 1);
+  for (std::size_t t = 0; t < regionOf.size(); ++t)
+    if (regionOf[t] >= 0)
+      regions.ids[next[static_cast<std::size_t>(regionOf[t])]++] = static_cast<std::uint32_t>(t);
+  return regions;
+}
+
+MeshRegion extractRegion(const TriangleMesh& mesh, const std::uint32_t* begin, const std::uint32_t* end)
 {
   MeshRegion result;
-  std::vector<std::int32_t> local(mesh.points.size(), -1);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+  result.mesh.triangles.reserve(static_cast<std::size_t>(end - begin));
+  // Each mesh vertex's number in the region plus one (0: not in it yet).
+  std::vector<std::int32_t> local(mesh.points.size());
+  for (const std::uint32_t* t = begin; t != end; ++t)
   {
-    if (regionOf[t] != region)
-      continue;
     Triangle tri{};
     for (int corner = 0; corner < 3; ++corner)
     {
-      const std::int32_t v = mesh.triangles[t][corner];
+      const std::int32_t v = mesh.triangles[*t][corner];
       std::int32_t& id = local[static_cast<std::size_t>(v)];
-      if (id < 0)
+      if (id == 0)
       {
-        id = static_cast<std::int32_t>(result.mesh.points.size());
         result.mesh.points.push_back(mesh.points[static_cast<std::size_t>(v)]);
         result.origin.push_back(v);
+        id = static_cast<std::int32_t>(result.mesh.points.size());
       }
-      tri[corner] = id;
+      tri[corner] = id - 1;
     }
     result.mesh.triangles.push_back(tri);
   }
   return result;
+}
+
+MeshRegion extractRegion(const TriangleMesh& mesh, const std::vector<int>& regionOf, int region)
+{
+  std::vector<std::uint32_t> triangles;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (regionOf[t] == region)
+      triangles.push_back(static_cast<std::uint32_t>(t));
+  return extractRegion(mesh, triangles.data(), triangles.data() + triangles.size());
 }
 
 TriangleMesh reassembleRegions(const TriangleMesh& mesh, const std::vector<int>& regionOf,

@@ -42,6 +42,20 @@ std::vector<char> seamVertices(const TriangleMesh& mesh, const std::vector<int>&
  *  triangles joined by edges, numbered in the order of their first triangle; -1 elsewhere. */
 std::vector<int> seamBands(const TriangleMesh& mesh, const std::vector<char>& seam, int rings, int& count);
 
+/** The triangles of every region, in mesh order: region r's are ids[first[r]] .. ids[first[r + 1] - 1]
+ *  (region -1's are not listed). From one pass over `regionOf`, so that each region is cut out in a
+ *  time of its own size, not of the whole mesh's. */
+struct RegionTriangles
+{
+  std::vector<std::size_t> first;
+  std::vector<std::uint32_t> ids;
+};
+RegionTriangles trianglesByRegion(const std::vector<int>& regionOf, int count);
+
+/** The region made of the mesh's triangles [begin, end) (indices in increasing order), its vertices
+ *  numbered in the order they first appear. */
+MeshRegion extractRegion(const TriangleMesh& mesh, const std::uint32_t* begin, const std::uint32_t* end);
+
 /** The triangles of region `region`, its vertices numbered in the order they first appear. */
 MeshRegion extractRegion(const TriangleMesh& mesh, const std::vector<int>& regionOf, int region);
 

@@ -547,6 +547,9 @@ TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& reg
 {
   std::vector<MeshRegion> regions(static_cast<std::size_t>(count));
   std::vector<std::unique_ptr<RegionRemesh>> waiting(regions.size());
+  const RegionTriangles byRegion = trianglesByRegion(regionOf, count);
+  auto cutOut = [&](std::size_t r)
+  { return extractRegion(mesh, byRegion.ids.data() + byRegion.first[r], byRegion.ids.data() + byRegion.first[r + 1]); };
   auto remeshed = [&](std::size_t r, auto&& step)
   {
     try
@@ -558,7 +561,7 @@ TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& reg
       if (!keepFailed)
         throw;
       waiting[r].reset();
-      regions[r] = extractRegion(mesh, regionOf, static_cast<int>(r));
+      regions[r] = cutOut(r);
     }
   };
   const std::vector<std::size_t> order = mostWorkFirst(mesh, regionOf, count, options.targetEdgeLength);
@@ -569,8 +572,7 @@ TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& reg
                 remeshed(r,
                          [&]
                          {
-                           auto remesh = std::make_unique<RegionRemesh>(
-                             extractRegion(mesh, regionOf, static_cast<int>(r)), options, heldContours);
+                           auto remesh = std::make_unique<RegionRemesh>(cutOut(r), options, heldContours);
                            remesh->rounds(grid, 1);
                            if (grid.built())
                              regions[r] = remesh->finish(grid.get(), 1);

@@ -140,3 +140,59 @@ TEST(RegionOrder, MostWorkFirstCountsTheAreaToFillAsWellAsTheTriangles)
   add(-1, 100, 10.0 * edge);
   EXPECT_EQ(mostWorkFirst(mesh, regionOf, 5, edge), (std::vector<std::size_t>{ 1, 3, 0, 2, 4 }));
 }
+
+TEST(RegionTriangles, EachRegionCutOutFromItsListIsItsTrianglesNumberedByFirstAppearance)
+{
+  // Random meshes and regions (some triangles in none, some regions empty): every region cut out from
+  // its list holds the mesh's triangles of that region in mesh order, each corner mapped through
+  // `origin` to the mesh's own, its points the mesh's, and its vertices numbered as they first appear.
+  std::mt19937 random(11);
+  for (int trial = 0; trial < 500; ++trial)
+  {
+    const int vertices = 3 + static_cast<int>(random() % 40), triangles = static_cast<int>(random() % 60);
+    const int count = 1 + static_cast<int>(random() % 5);
+    TriangleMesh mesh;
+    for (int v = 0; v < vertices; ++v)
+      mesh.points.push_back({ double(v), double(v % 7), double(v % 3) });
+    std::vector<int> regionOf;
+    for (int t = 0; t < triangles; ++t)
+    {
+      Triangle tri{};
+      for (std::int32_t& v : tri)
+        v = static_cast<std::int32_t>(random() % static_cast<unsigned>(vertices));
+      mesh.triangles.push_back(tri);
+      regionOf.push_back(static_cast<int>(random() % static_cast<unsigned>(count + 1)) - 1);
+    }
+    const RegionTriangles byRegion = trianglesByRegion(regionOf, count);
+    ASSERT_EQ(byRegion.first.size(), static_cast<std::size_t>(count) + 1);
+    for (int r = 0; r < count; ++r)
+    {
+      const MeshRegion region = extractRegion(mesh, byRegion.ids.data() + byRegion.first[r],
+                                              byRegion.ids.data() + byRegion.first[r + 1]);
+      std::vector<std::size_t> expected;
+      for (std::size_t t = 0; t < regionOf.size(); ++t)
+        if (regionOf[t] == r)
+          expected.push_back(t);
+      ASSERT_EQ(region.mesh.triangles.size(), expected.size()) << "trial " << trial << " region " << r;
+      ASSERT_EQ(region.origin.size(), region.mesh.points.size());
+      std::int32_t next = 0; // the next new vertex's number, in order of first appearance
+      for (std::size_t k = 0; k < expected.size(); ++k)
+        for (int corner = 0; corner < 3; ++corner)
+        {
+          const std::int32_t local = region.mesh.triangles[k][corner];
+          ASSERT_LE(local, next);
+          if (local == next)
+            ++next;
+          ASSERT_EQ(region.origin[static_cast<std::size_t>(local)], mesh.triangles[expected[k]][corner]);
+          const Point3& p = region.mesh.points[static_cast<std::size_t>(local)];
+          const Point3& q = mesh.points[static_cast<std::size_t>(mesh.triangles[expected[k]][corner])];
+          ASSERT_TRUE(p.x == q.x && p.y == q.y && p.z == q.z);
+        }
+      ASSERT_EQ(static_cast<std::size_t>(next), region.mesh.points.size());
+      // The whole-mesh form gives the same region.
+      const MeshRegion scanned = extractRegion(mesh, regionOf, r);
+      ASSERT_EQ(scanned.origin, region.origin);
+      ASSERT_EQ(scanned.mesh.triangles, region.mesh.triangles);
+    }
+  }
+}
