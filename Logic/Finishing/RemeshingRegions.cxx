@@ -53,7 +53,9 @@ std::vector<std::size_t> mostWorkFirst(const TriangleMesh& mesh, const std::vect
     if (regionOf[t] >= 0)
     {
       const Point3 n = areaNormal(mesh, mesh.triangles[t]);
-      work[static_cast<std::size_t>(regionOf[t])] += 1.0 + 0.5 * std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z) / targetArea;
+      const double targets = 0.5 * std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z) / targetArea;
+      // A finite order whatever the points: the sort's comparison must stay a strict weak ordering.
+      work[static_cast<std::size_t>(regionOf[t])] += 1.0 + (std::isfinite(targets) ? targets : 0.0);
     }
   std::vector<std::size_t> order(work.size());
   std::iota(order.begin(), order.end(), std::size_t{ 0 });
