@@ -11,9 +11,11 @@
 
 #include "itkOtsuThresholdCalculator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <type_traits>
@@ -35,43 +37,114 @@ constexpr std::size_t fewLabels = 16;
 constexpr double leastEqualNeighbours = 0.5;
 
 /** The share of pairs of face neighbours, along the three axes, holding equal values, among the
- *  pairs of two non-zero voxels (1 when there is none). */
+ *  pairs of two non-zero voxels (1 when there is none). Slices side by side on every thread; the
+ *  counts are whole numbers, the same in any order. */
 template <typename TImage>
 double equalNeighbourFraction(const TImage* volume)
 {
   const auto size = volume->GetBufferedRegion().GetSize();
   const std::size_t nx = size[0], ny = size[1], nz = size[2];
   const auto* voxels = volume->GetBufferPointer();
-  std::size_t equal = 0, pairs = 0;
-  const auto count = [&](std::size_t a, std::size_t b)
+  struct Pairs
   {
-    if (voxels[a] == 0 || voxels[b] == 0)
-      return;
-    ++pairs;
-    equal += voxels[a] == voxels[b];
+    std::size_t equal = 0, pairs = 0;
   };
-  for (std::size_t k = 0; k < nz; ++k)
-    for (std::size_t j = 0; j < ny; ++j)
-      for (std::size_t i = 0; i < nx; ++i)
+  const std::size_t slicesPerRange = std::max<std::size_t>(1, (std::size_t(1) << 20) / std::max<std::size_t>(1, nx * ny));
+  const std::vector<Pairs> ranges = fixedRangeResults<Pairs>(
+    nz, slicesPerRange, 0,
+    [&](Pairs& counted, std::size_t firstSlice, std::size_t lastSlice)
+    {
+      const auto count = [&](std::size_t a, std::size_t b)
       {
-        const std::size_t at = (k * ny + j) * nx + i;
-        if (i + 1 < nx)
-          count(at, at + 1);
-        if (j + 1 < ny)
-          count(at, at + nx);
-        if (k + 1 < nz)
-          count(at, at + nx * ny);
-      }
+        if (voxels[a] == 0 || voxels[b] == 0)
+          return;
+        ++counted.pairs;
+        counted.equal += voxels[a] == voxels[b];
+      };
+      for (std::size_t k = firstSlice; k < lastSlice; ++k)
+        for (std::size_t j = 0; j < ny; ++j)
+          for (std::size_t i = 0; i < nx; ++i)
+          {
+            const std::size_t at = (k * ny + j) * nx + i;
+            if (i + 1 < nx)
+              count(at, at + 1);
+            if (j + 1 < ny)
+              count(at, at + nx);
+            if (k + 1 < nz)
+              count(at, at + nx * ny);
+          }
+    });
+  std::size_t equal = 0, pairs = 0;
+  for (const Pairs& range : ranges)
+  {
+    equal += range.equal;
+    pairs += range.pairs;
+  }
   return pairs == 0 ? 1.0 : static_cast<double>(equal) / static_cast<double>(pairs);
 }
 
-/** The distinct voxel values of a label map, or nothing when the volume is not one: a voxel that
- *  is negative, fractional or non-finite, more than 65535 distinct values, or more than a few
- *  values that change from voxel to voxel as intensities do (then `whyNot`, when given, says
- *  which). One pass over the voxels, a second for many values; the common small labels are tallied
- *  in a table, rare large ones in a set. */
+/** Why a voxel's value cannot be a label (null: it can): not finite, negative, or not whole. */
+template <typename Pixel>
+const char* whyNotALabel(Pixel value)
+{
+  // NaN fails the first test, fractions the second (std::floor keeps infinities, so test them).
+  if constexpr (std::is_floating_point_v<Pixel>)
+  {
+    if (std::isnan(value) || std::isinf(value))
+      return "a voxel is not finite";
+    if (value < 0.0f)
+      return "a voxel is negative";
+    if (std::floor(value) != value)
+      return "a voxel is not a whole number";
+  }
+  else if constexpr (std::is_signed_v<Pixel>)
+  {
+    if (value < 0)
+      return "a voxel is negative";
+  }
+  return nullptr;
+}
+
+constexpr std::size_t maxLabels = 65535;
+constexpr std::size_t tableSize = 65536;
+
+/** The distinct values of voxels [first, last), the small ones flagged in a table, the others in a
+ *  set; false (stopped early) at a value that cannot be a label or past maxLabels large ones. */
+template <typename Pixel>
+bool tallyValues(const Pixel* first, const Pixel* last, std::vector<unsigned char>& seenSmall, std::set<Pixel>& seenLarge)
+{
+  seenSmall.assign(tableSize, 0);
+  for (const Pixel* voxel = first; voxel != last; ++voxel)
+  {
+    const Pixel value = *voxel;
+    if (whyNotALabel(value))
+      return false;
+    if (static_cast<double>(value) < static_cast<double>(tableSize))
+      seenSmall[static_cast<std::size_t>(value)] = 1;
+    else if (seenLarge.insert(value).second && seenLarge.size() > maxLabels)
+      return false;
+  }
+  return true;
+}
+
+/** The values flagged in the table, then those in the set, in increasing order each. */
+template <typename Pixel>
+std::vector<double> valuesOf(const std::vector<unsigned char>& seenSmall, const std::set<Pixel>& seenLarge)
+{
+  std::vector<double> values;
+  for (std::size_t value = 0; value < tableSize; ++value)
+    if (seenSmall[value])
+      values.push_back(static_cast<double>(value));
+  for (Pixel value : seenLarge)
+    values.push_back(static_cast<double>(value));
+  return values;
+}
+
+/** The distinct voxel values, in one pass in memory order, or nothing (then `whyNot`, when given,
+ *  says why: the first voxel that cannot be a label, or the value that made more than maxLabels).
+ *  The exact account of a volume that is no label map; distinctValues is the fast way there. */
 template <typename TImage>
-std::optional<std::vector<double>> labelsOf(const TImage* volume, std::string* whyNot = nullptr)
+std::optional<std::vector<double>> distinctValuesInOrder(const TImage* volume, std::string* whyNot)
 {
   auto notLabels = [whyNot](const std::string& reason, double value)
   {
@@ -84,8 +157,6 @@ std::optional<std::vector<double>> labelsOf(const TImage* volume, std::string* w
     return std::nullopt;
   };
   using Pixel = typename TImage::PixelType;
-  constexpr std::size_t maxLabels = 65535;
-  constexpr std::size_t tableSize = 65536;
   std::vector<unsigned char> seenSmall(tableSize, 0);
   std::set<Pixel> seenLarge;
   std::size_t distinct = 0;
@@ -95,21 +166,8 @@ std::optional<std::vector<double>> labelsOf(const TImage* volume, std::string* w
   for (; voxel != end; ++voxel)
   {
     const Pixel value = *voxel;
-    // NaN fails the first test, fractions the second (std::floor keeps infinities, so test them).
-    if constexpr (std::is_floating_point_v<Pixel>)
-    {
-      if (std::isnan(value) || std::isinf(value))
-        return notLabels("a voxel is not finite", value);
-      if (value < 0.0f)
-        return notLabels("a voxel is negative", value);
-      if (std::floor(value) != value)
-        return notLabels("a voxel is not a whole number", value);
-    }
-    else if constexpr (std::is_signed_v<Pixel>)
-    {
-      if (value < 0)
-        return notLabels("a voxel is negative", static_cast<double>(value));
-    }
+    if (const char* reason = whyNotALabel(value))
+      return notLabels(reason, static_cast<double>(value));
     if (static_cast<double>(value) < static_cast<double>(tableSize))
     {
       unsigned char& seen = seenSmall[static_cast<std::size_t>(value)];
@@ -122,6 +180,56 @@ std::optional<std::vector<double>> labelsOf(const TImage* volume, std::string* w
     if (++distinct > maxLabels)
       return notLabels("more than 65535 distinct values, the last", static_cast<double>(value));
   }
+  return valuesOf(seenSmall, seenLarge);
+}
+
+/** distinctValuesInOrder, the volume's ranges tallied side by side on every thread and merged (the
+ *  same values); a volume one of whose ranges stops early is gone through again in order, for the
+ *  exact account of why it is no label map. */
+template <typename TImage>
+std::optional<std::vector<double>> distinctValues(const TImage* volume, std::string* whyNot)
+{
+  using Pixel = typename TImage::PixelType;
+  struct Tally
+  {
+    std::vector<unsigned char> seenSmall;
+    std::set<Pixel> seenLarge;
+    bool complete = false;
+  };
+  const Pixel* voxels = volume->GetBufferPointer();
+  constexpr std::size_t voxelsPerRange = std::size_t(1) << 22;
+  std::vector<Tally> tallies = fixedRangeResults<Tally>(
+    volume->GetBufferedRegion().GetNumberOfPixels(), voxelsPerRange, 0,
+    [&](Tally& tally, std::size_t first, std::size_t last)
+    { tally.complete = tallyValues(voxels + first, voxels + last, tally.seenSmall, tally.seenLarge); });
+  std::vector<unsigned char> seenSmall(tableSize, 0);
+  std::set<Pixel> seenLarge;
+  for (Tally& tally : tallies)
+  {
+    if (!tally.complete)
+      return distinctValuesInOrder(volume, whyNot);
+    for (std::size_t value = 0; value < tableSize; ++value)
+      seenSmall[value] |= tally.seenSmall[value];
+    seenLarge.merge(tally.seenLarge);
+    tally = Tally();
+  }
+  const std::size_t small = static_cast<std::size_t>(std::count(seenSmall.begin(), seenSmall.end(), 1));
+  if (small + seenLarge.size() > maxLabels)
+    return distinctValuesInOrder(volume, whyNot);
+  return valuesOf(seenSmall, seenLarge);
+}
+
+/** The distinct voxel values of a label map, or nothing when the volume is not one: a voxel that
+ *  is negative, fractional or non-finite, more than 65535 distinct values, or more than a few
+ *  values that change from voxel to voxel as intensities do (then `whyNot`, when given, says
+ *  which). One pass over the voxels, a second for many values, each on every thread. */
+template <typename TImage>
+std::optional<std::vector<double>> labelsOf(const TImage* volume, std::string* whyNot = nullptr)
+{
+  std::optional<std::vector<double>> labels = distinctValues(volume, whyNot);
+  if (!labels)
+    return std::nullopt;
+  const std::size_t distinct = labels->size();
 
   // Whole non-negative values alone do not make a label map: an MR of 8 or 16 bits has them too.
   // A label map is piecewise constant; an image's intensities change from voxel to voxel.
@@ -141,12 +249,6 @@ std::optional<std::vector<double>> labelsOf(const TImage* volume, std::string* w
     }
   }
 
-  std::vector<double> labels;
-  for (std::size_t value = 0; value < tableSize; ++value)
-    if (seenSmall[value])
-      labels.push_back(static_cast<double>(value));
-  for (Pixel value : seenLarge)
-    labels.push_back(static_cast<double>(value));
   return labels;
 }
 

@@ -302,6 +302,40 @@ TEST(VolumeSegmentation, WholeNonNegativeIntensitiesAreGrayscale)
   EXPECT_EQ(choice.rfind("input kind LabelMap, chosen from the voxels: 51 whole", 0), 0u) << choice;
 }
 
+TEST(VolumeSegmentation, LabelsTalliedInRangesAreTheWholeVolumesAndItsFirstBadVoxelIsNamed)
+{
+  // 256 x 256 x 80 voxels: more than one of the ranges tallied side by side (4 Mi voxels each).
+  // Label 3 lies only in the last slices, 70000 (tallied in a set, not the table) only in the
+  // first, 12 throughout; each a slab of whole slices, so neighbours are equal.
+  auto volume = makeVolume({ 256, 256, 80 });
+  float* voxels = volume->GetBufferPointer();
+  const std::size_t slice = 256 * 256, count = 80 * slice;
+  for (std::size_t n = 0; n < count; ++n)
+  {
+    const std::size_t k = n / slice;
+    voxels[n] = k < 5 ? 70000.0f : k >= 75 ? 3.0f : k % 2 == 0 ? 12.0f : 0.0f;
+  }
+  std::string choice;
+  segmentVolume(volume, SegmentationOptions{}, &choice);
+  EXPECT_EQ(choice.rfind("input kind LabelMap, chosen from the voxels: 4 whole non-negative values, 0 to 70000", 0), 0u)
+    << choice;
+  SegmentationOptions missing;
+  missing.label = 7;
+  const std::string message = errorMessageOf(volume, missing);
+  EXPECT_NE(message.find("3, 12, 70000"), std::string::npos) << message;
+  // Two voxels that no label can be, in different ranges: the first in the volume's order is named,
+  // whichever range finds its own first.
+  const std::size_t early = 1000000, late = 4500000;
+  voxels[early] = 0.5f;
+  voxels[late] = -1.0f;
+  segmentVolume(volume, SegmentationOptions{}, &choice);
+  EXPECT_NE(choice.find("a voxel is not a whole number (0.5)"), std::string::npos) << choice;
+  voxels[early] = -1.0f;
+  voxels[late] = 0.5f;
+  segmentVolume(volume, SegmentationOptions{}, &choice);
+  EXPECT_NE(choice.find("a voxel is negative (-1)"), std::string::npos) << choice;
+}
+
 TEST(VolumeSegmentation, AGrayscaleOptionChoosesGrayscale)
 {
   // A label map by its voxels (three values), thresholded because a threshold was asked for.
