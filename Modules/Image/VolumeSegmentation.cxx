@@ -108,8 +108,13 @@ const char* whyNotALabel(Pixel value)
 constexpr std::size_t maxLabels = 65535;
 constexpr std::size_t tableSize = 65536;
 
+/** The most values of tableSize and over a range's set holds: each range holds its own set until
+ *  they are merged, and a volume of many such values is gone through in order instead. */
+constexpr std::size_t mostLargeValuesInARange = 4096;
+
 /** The distinct values of voxels [first, last), the small ones flagged in a table, the others in a
- *  set; false (stopped early) at a value that cannot be a label or past maxLabels large ones. */
+ *  set; false (stopped early) at a value that cannot be a label or past mostLargeValuesInARange
+ *  large ones. */
 template <typename Pixel>
 bool tallyValues(const Pixel* first, const Pixel* last, std::vector<unsigned char>& seenSmall, std::set<Pixel>& seenLarge)
 {
@@ -121,7 +126,7 @@ bool tallyValues(const Pixel* first, const Pixel* last, std::vector<unsigned cha
       return false;
     if (static_cast<double>(value) < static_cast<double>(tableSize))
       seenSmall[static_cast<std::size_t>(value)] = 1;
-    else if (seenLarge.insert(value).second && seenLarge.size() > maxLabels)
+    else if (seenLarge.insert(value).second && seenLarge.size() > mostLargeValuesInARange)
       return false;
   }
   return true;
