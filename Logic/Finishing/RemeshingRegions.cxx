@@ -185,7 +185,10 @@ MeshRegion extractRegion(const TriangleMesh& mesh, const std::uint32_t* begin, c
 
 MeshRegion extractRegion(const TriangleMesh& mesh, const std::vector<int>& regionOf, int region)
 {
+  if (mesh.triangles.size() > std::numeric_limits<std::uint32_t>::max())
+    throw Error("remeshing regions: more triangles than a region's list can name");
   std::vector<std::uint32_t> triangles;
+  triangles.reserve(static_cast<std::size_t>(std::count(regionOf.begin(), regionOf.end(), region)));
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     if (regionOf[t] == region)
       triangles.push_back(static_cast<std::uint32_t>(t));

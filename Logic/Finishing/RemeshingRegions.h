@@ -32,7 +32,7 @@ std::vector<int> slabRegions(const TriangleMesh& mesh, std::size_t trianglesPerR
  *  makes): a slab holding a flat cap, tiled with few large triangles, is split into four to five
  *  times as many and took seven times as long as a slab of as many tiled triangles on a wall. */
 std::vector<std::size_t> mostWorkFirst(const TriangleMesh& mesh, const std::vector<int>& regionOf, int count,
-                                       double targetEdgeLength);
+                                       double targetEdgeLength); // regionOf: one per triangle, each -1 or below count
 
 /** Whether each vertex lies on a seam: between triangles of two regions, or of a region and the
  *  rest (region -1). */
@@ -43,8 +43,8 @@ std::vector<char> seamVertices(const TriangleMesh& mesh, const std::vector<int>&
 std::vector<int> seamBands(const TriangleMesh& mesh, const std::vector<char>& seam, int rings, int& count);
 
 /** The triangles of every region, in mesh order: region r's are ids[first[r]] .. ids[first[r + 1] - 1]
- *  (region -1's are not listed). From one pass over `regionOf`, so that each region is cut out in a
- *  time of its own size, not of the whole mesh's. */
+ *  (region -1's are not listed; every other number is below `count`). From one pass over `regionOf`,
+ *  so that cutting a region out goes over its own triangles, not over the whole mesh's. */
 struct RegionTriangles
 {
   std::vector<std::size_t> first;

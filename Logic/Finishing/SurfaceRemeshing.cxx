@@ -540,7 +540,8 @@ MeshRegion remeshRegion(const MeshRegion& region, const SurfaceRemeshingOptions&
  *  remeshed is kept as it was when `keepFailed`, else the whole call throws. A region whose rounds
  *  end before the grid is built waits for its finish until all have had their rounds: the threads
  *  go on with other regions meanwhile instead of waiting with the one building the grid. The regions
- *  start most work first (mostWorkFirst); each goes into its own slot, whatever the order. */
+ *  start most work first (mostWorkFirst); each goes into its own slot, whatever the order. (When
+ *  several throw, the one rethrown is the first in that order: fixed by the mesh, not the threads.) */
 TriangleMesh remeshRegions(const TriangleMesh& mesh, const std::vector<int>& regionOf, int count,
                            const SurfaceRemeshingOptions& options, const ProjectionGrid& grid, unsigned int threads,
                            bool keepFailed, const ContourStack* heldContours)

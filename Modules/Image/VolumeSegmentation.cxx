@@ -87,7 +87,7 @@ double equalNeighbourFraction(const TImage* volume)
 template <typename Pixel>
 const char* whyNotALabel(Pixel value)
 {
-  // NaN fails the first test, fractions the second (std::floor keeps infinities, so test them).
+  // NaN and infinities fail the first test (std::floor keeps infinities), fractions the third.
   if constexpr (std::is_floating_point_v<Pixel>)
   {
     if (std::isnan(value) || std::isinf(value))
@@ -145,11 +145,16 @@ std::vector<double> valuesOf(const std::vector<unsigned char>& seenSmall, const 
   return values;
 }
 
-/** The distinct voxel values, in one pass in memory order, or nothing (then `whyNot`, when given,
- *  says why: the first voxel that cannot be a label, or the value that made more than maxLabels).
- *  The exact account of a volume that is no label map; distinctValues is the fast way there. */
+/** The distinct voxel values, in one pass in memory order from voxel `from` on, those of the
+ *  voxels before it given (`seenSmall`, empty for none, and `seenLarge`), or nothing (then `whyNot`,
+ *  when given, says why: the first voxel that cannot be a label, or the value that made more than
+ *  maxLabels). The exact account of a volume that is no label map; distinctValues is the fast way
+ *  there. */
 template <typename TImage>
-std::optional<std::vector<double>> distinctValuesInOrder(const TImage* volume, std::string* whyNot)
+std::optional<std::vector<double>> distinctValuesInOrder(const TImage* volume, std::string* whyNot,
+                                                         std::size_t from = 0,
+                                                         std::vector<unsigned char> seenSmall = {},
+                                                         std::set<typename TImage::PixelType> seenLarge = {})
 {
   auto notLabels = [whyNot](const std::string& reason, double value)
   {
@@ -162,12 +167,12 @@ std::optional<std::vector<double>> distinctValuesInOrder(const TImage* volume, s
     return std::nullopt;
   };
   using Pixel = typename TImage::PixelType;
-  std::vector<unsigned char> seenSmall(tableSize, 0);
-  std::set<Pixel> seenLarge;
-  std::size_t distinct = 0;
+  if (seenSmall.empty())
+    seenSmall.assign(tableSize, 0);
+  std::size_t distinct = static_cast<std::size_t>(std::count(seenSmall.begin(), seenSmall.end(), 1)) + seenLarge.size();
 
-  const Pixel* voxel = volume->GetBufferPointer();
-  const Pixel* end = voxel + volume->GetBufferedRegion().GetNumberOfPixels();
+  const Pixel* voxel = volume->GetBufferPointer() + from;
+  const Pixel* end = volume->GetBufferPointer() + volume->GetBufferedRegion().GetNumberOfPixels();
   for (; voxel != end; ++voxel)
   {
     const Pixel value = *voxel;
@@ -188,9 +193,10 @@ std::optional<std::vector<double>> distinctValuesInOrder(const TImage* volume, s
   return valuesOf(seenSmall, seenLarge);
 }
 
-/** distinctValuesInOrder, the volume's ranges tallied side by side on every thread and merged (the
- *  same values); a volume one of whose ranges stops early is gone through again in order, for the
- *  exact account of why it is no label map. */
+/** distinctValuesInOrder, the volume's ranges tallied side by side on every thread and merged in
+ *  order (the same values). From the first range that stopped early, or that would take the count
+ *  past maxLabels, the volume is gone through in order, with the values of the ranges before it:
+ *  the exact account of why it is no label map, without going over those ranges again. */
 template <typename TImage>
 std::optional<std::vector<double>> distinctValues(const TImage* volume, std::string* whyNot)
 {
@@ -202,32 +208,41 @@ std::optional<std::vector<double>> distinctValues(const TImage* volume, std::str
     bool complete = false;
   };
   const Pixel* voxels = volume->GetBufferPointer();
+  const std::size_t count = volume->GetBufferedRegion().GetNumberOfPixels();
   constexpr std::size_t voxelsPerRange = std::size_t(1) << 22;
   std::vector<Tally> tallies = fixedRangeResults<Tally>(
-    volume->GetBufferedRegion().GetNumberOfPixels(), voxelsPerRange, 0,
-    [&](Tally& tally, std::size_t first, std::size_t last)
+    count, voxelsPerRange, 0, [&](Tally& tally, std::size_t first, std::size_t last)
     { tally.complete = tallyValues(voxels + first, voxels + last, tally.seenSmall, tally.seenLarge); });
   std::vector<unsigned char> seenSmall(tableSize, 0);
   std::set<Pixel> seenLarge;
-  for (Tally& tally : tallies)
+  std::size_t distinct = 0;
+  for (std::size_t r = 0; r < tallies.size(); ++r)
   {
-    if (!tally.complete)
-      return distinctValuesInOrder(volume, whyNot);
+    Tally& tally = tallies[r];
+    std::size_t added = 0;
+    if (tally.complete)
+    {
+      for (std::size_t value = 0; value < tableSize; ++value)
+        added += tally.seenSmall[value] && !seenSmall[value];
+      for (Pixel value : tally.seenLarge)
+        added += seenLarge.count(value) == 0;
+    }
+    if (!tally.complete || distinct + added > maxLabels)
+      return distinctValuesInOrder(volume, whyNot, r * voxelsPerRange, std::move(seenSmall), std::move(seenLarge));
     for (std::size_t value = 0; value < tableSize; ++value)
       seenSmall[value] |= tally.seenSmall[value];
     seenLarge.merge(tally.seenLarge);
+    distinct += added;
     tally = Tally();
   }
-  const std::size_t small = static_cast<std::size_t>(std::count(seenSmall.begin(), seenSmall.end(), 1));
-  if (small + seenLarge.size() > maxLabels)
-    return distinctValuesInOrder(volume, whyNot);
   return valuesOf(seenSmall, seenLarge);
 }
 
 /** The distinct voxel values of a label map, or nothing when the volume is not one: a voxel that
  *  is negative, fractional or non-finite, more than 65535 distinct values, or more than a few
  *  values that change from voxel to voxel as intensities do (then `whyNot`, when given, says
- *  which). One pass over the voxels, a second for many values, each on every thread. */
+ *  which). One pass over the voxels, a second for many values, each on every thread (but for the
+ *  account of a volume that is no label map, from its first range that stops early). */
 template <typename TImage>
 std::optional<std::vector<double>> labelsOf(const TImage* volume, std::string* whyNot = nullptr)
 {

@@ -189,6 +189,10 @@ TEST(RegionTriangles, EachRegionCutOutFromItsListIsItsTrianglesNumberedByFirstAp
           ASSERT_TRUE(p.x == q.x && p.y == q.y && p.z == q.z);
         }
       ASSERT_EQ(static_cast<std::size_t>(next), region.mesh.points.size());
+      // One vertex of the region for each of the mesh's: no mesh vertex twice.
+      std::vector<std::int32_t> origins = region.origin;
+      std::sort(origins.begin(), origins.end());
+      ASSERT_TRUE(std::adjacent_find(origins.begin(), origins.end()) == origins.end()) << "trial " << trial;
       // The whole-mesh form gives the same region.
       const MeshRegion scanned = extractRegion(mesh, regionOf, r);
       ASSERT_EQ(scanned.origin, region.origin);

@@ -334,6 +334,23 @@ TEST(VolumeSegmentation, LabelsTalliedInRangesAreTheWholeVolumesAndItsFirstBadVo
   voxels[late] = 0.5f;
   segmentVolume(volume, SegmentationOptions{}, &choice);
   EXPECT_NE(choice.find("a voxel is negative (-1)"), std::string::npos) << choice;
+  // 65536 values, 0 to 65535: 0 to 39999 in the first range, 40000 to 65535 in runs of ten at the
+  // start of the second (the rest 0). The count passes 65535 in the second range, and the account
+  // names the value that took it there, the last; a bad voxel after it changes nothing, one before
+  // it is named instead.
+  const std::size_t second = std::size_t(1) << 22; // the second range's first voxel
+  for (std::size_t n = 0; n < count; ++n)
+    voxels[n] = n < second                 ? static_cast<float>((n / 100) % 40000)
+                : n < second + 10 * 25536 ? static_cast<float>(40000 + (n - second) / 10)
+                                           : 0.0f;
+  segmentVolume(volume, SegmentationOptions{}, &choice);
+  EXPECT_NE(choice.find("more than 65535 distinct values, the last (65535)"), std::string::npos) << choice;
+  voxels[second + 10 * 25536 + 10] = -1.0f;
+  segmentVolume(volume, SegmentationOptions{}, &choice);
+  EXPECT_NE(choice.find("more than 65535 distinct values, the last (65535)"), std::string::npos) << choice;
+  voxels[second + 5] = 0.5f;
+  segmentVolume(volume, SegmentationOptions{}, &choice);
+  EXPECT_NE(choice.find("a voxel is not a whole number (0.5)"), std::string::npos) << choice;
   // 5000 values of 65536 and over, more than a range's set holds (4096): tallied in order instead,
   // with the same result. Runs of 13 voxels along x, the same in every slice: a label map.
   for (std::size_t n = 0; n < count; ++n)
