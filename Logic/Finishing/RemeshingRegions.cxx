@@ -139,10 +139,21 @@ std::vector<int> seamBands(const TriangleMesh& mesh, const std::vector<char>& se
   return regionOf;
 }
 
+namespace
+{
+
+/** Throws unless a region's list of triangle numbers (32 bits each) can name `triangles` of them. */
+void checkListable(std::size_t triangles)
+{
+  if (triangles > std::numeric_limits<std::uint32_t>::max())
+    throw Error("remeshing regions: more triangles than a region's list can name");
+}
+
+} // namespace
+
 RegionTriangles trianglesByRegion(const std::vector<int>& regionOf, int count)
 {
-  if (regionOf.size() > std::numeric_limits<std::uint32_t>::max())
-    throw Error("remeshing regions: more triangles than a region's list can name");
+  checkListable(regionOf.size());
   RegionTriangles regions;
   regions.first.assign(static_cast<std::size_t>(std::max(count, 0)) + 1, 0);
   for (int r : regionOf)
@@ -185,8 +196,7 @@ MeshRegion extractRegion(const TriangleMesh& mesh, const std::uint32_t* begin, c
 
 MeshRegion extractRegion(const TriangleMesh& mesh, const std::vector<int>& regionOf, int region)
 {
-  if (mesh.triangles.size() > std::numeric_limits<std::uint32_t>::max())
-    throw Error("remeshing regions: more triangles than a region's list can name");
+  checkListable(mesh.triangles.size());
   std::vector<std::uint32_t> triangles;
   triangles.reserve(static_cast<std::size_t>(std::count(regionOf.begin(), regionOf.end(), region)));
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)

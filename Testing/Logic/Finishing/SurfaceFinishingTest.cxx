@@ -592,7 +592,7 @@ TEST(SurfaceFinishing, ATilingNotYetTestedForSelfIntersectionsIsTestedWhereItIsK
 namespace
 {
 
-/** octaSphere(24, 10) with its vertices pushed along the sphere (each by up to `fraction` of an
+/** octaSphere(subdivisions, 10) with its vertices pushed along the sphere (each by up to `fraction` of an
  *  edge, in a fixed pattern), as the filter crowds them where a surface folds; only the vertices
  *  above height `above` are pushed. */
 TriangleMesh crowdedSphere(double fraction, double above = -20.0, int subdivisions = 24)
