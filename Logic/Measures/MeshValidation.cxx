@@ -1,6 +1,7 @@
 #include "Measures/MeshValidation.h"
 
 #include "Core/AreaNormal.h"
+#include "Core/DefaultInitAllocator.h"
 #include "Core/ParallelFor.h"
 #include "Core/DisjointSets.h"
 #include "Core/MeasureText.h"
@@ -187,7 +188,7 @@ std::string MeshValidation::summary() const
 
 MeshValidation validateMeshTopology(const TriangleMesh& mesh)
 {
-  // Linear in the triangles but for three sorts of their edges: no hash maps, no per-vertex
+  // Linear in the triangles but for the sort of each vertex's few edges: no hash maps, no per-vertex
   // allocation, no inverse trigonometry per triangle (the cosine of its smallest angle; one arc
   // cosine at the end). The passes over triangles and over vertices run on every core, in ranges
   // fixed by the mesh alone, their counts and sums added in range order: the same result for any
@@ -206,112 +207,122 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
   std::vector<std::array<float, 3>> normals(nTriangles);
   measureTriangles(mesh, v, &normals);
 
-  // Edges, gathered by their smaller vertex (EdgeUses): the uses of one undirected edge tell boundary
-  // and non-manifold edges, their directions orientation (two uses the same way), and their
-  // triangles' normals folds (against the edge's first triangle).
-  struct EdgeCounts
-  {
-    std::size_t edges = 0, folded = 0, inconsistent = 0, boundary = 0, nonManifold = 0;
-  };
-  const std::size_t vertexRanges = fixedRangeCount(nPoints, rangeSize);
-  std::vector<EdgeCounts> edgeCounts;
-  {
-    const EdgeUses edgeUses(mesh, 0); // released once counted
-    edgeCounts = fixedRangeResults<EdgeCounts>(
-      nPoints, rangeSize, 0,
-      [&](EdgeCounts& counts, std::size_t firstPoint, std::size_t lastPoint)
-      {
-        for (std::size_t p = firstPoint; p < lastPoint; ++p)
-          edgeUses.forEachEdgeOf(
-            p,
-            [&](const EdgeUse* first, const EdgeUse* last)
-            {
-              std::size_t forward = first->forward ? 1 : 0;
-              const std::array<float, 3>& m = normals[first->triangle];
-              for (const EdgeUse* j = first + 1; j != last; ++j)
-              {
-                forward += j->forward ? 1 : 0;
-                counts.folded += folded(m, normals[j->triangle]);
-              }
-              const auto count = static_cast<std::size_t>(last - first);
-              const std::size_t backward = count - forward;
-              counts.inconsistent +=
-                (forward > 1 ? forward - 1 : 0) + (backward > 1 ? backward - 1 : 0);
-              ++counts.edges;
-              if (count == 1)
-                ++counts.boundary;
-              else if (count > 2)
-                ++counts.nonManifold;
-            });
-      });
-  }
-  std::size_t edges = 0;
-  for (const EdgeCounts& counts : edgeCounts)
-  {
-    edges += counts.edges;
-    v.foldedEdges += counts.folded;
-    v.inconsistentEdges += counts.inconsistent;
-    v.boundaryEdges += counts.boundary;
-    v.nonManifoldEdges += counts.nonManifold;
-  }
-  normals = std::vector<std::array<float, 3>>();
-
-  // A vertex is manifold when its triangles form one fan: the edges opposite it form one connected
-  // link. Links gathered per vertex (counting sort), each checked with a small union-find.
+  // Each vertex's corners (counting sort): the triangle and its two other corners in the triangle's
+  // order. They tell both what a vertex decides and what its edges do. A vertex is manifold when its
+  // triangles form one fan: the edges opposite it form one connected link. An edge is counted at its
+  // lower end, whose corners hold every use of it (a triangle holding both ends has a corner at
+  // each): the uses of one undirected edge tell boundary and non-manifold edges, their directions
+  // orientation (two uses the same way), and their triangles' normals folds (against the edge's
+  // first triangle). One pass over the corners, not a second table of every edge's uses.
   std::vector<std::size_t> start(nPoints + 1, 0);
   for (const Triangle& t : mesh.triangles)
     for (std::int32_t i : t)
       ++start[static_cast<std::size_t>(i) + 1];
   for (std::size_t p = 0; p < nPoints; ++p)
     start[p + 1] += start[p];
-  std::vector<std::pair<std::int32_t, std::int32_t>> links(start[nPoints]);
-  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-  for (const Triangle& t : mesh.triangles)
-    for (int i = 0; i < 3; ++i)
-      links[fill[static_cast<std::size_t>(t[i])]++] = { t[(i + 1) % 3], t[(i + 2) % 3] };
-  std::vector<std::size_t> nonManifoldVertices(vertexRanges, 0);
-  parallelForFixedRanges(nPoints, rangeSize, 0,
-                         [&](std::size_t r, std::size_t firstPoint, std::size_t lastPoint)
-                         {
-                           std::vector<std::int32_t> local;
-                           std::vector<std::size_t> parent;
-                           auto root = [&](std::size_t x)
-                           {
-                             while (parent[x] != x)
-                               x = parent[x] = parent[parent[x]];
-                             return x;
-                           };
-                           for (std::size_t p = firstPoint; p < lastPoint; ++p)
-                           {
-                             if (start[p] == start[p + 1])
-                               continue;
-                             local.clear();
-                             auto index = [&](std::int32_t vertex)
-                             {
-                               const auto at = std::find(local.begin(), local.end(), vertex);
-                               if (at != local.end())
-                                 return static_cast<std::size_t>(at - local.begin());
-                               local.push_back(vertex);
-                               return local.size() - 1;
-                             };
-                             parent.clear();
-                             for (std::size_t e = start[p]; e < start[p + 1]; ++e)
-                             {
-                               const std::size_t a = index(links[e].first), b = index(links[e].second);
-                               while (parent.size() < local.size())
-                                 parent.push_back(parent.size());
-                               const std::size_t ra = root(a), rb = root(b);
-                               if (ra != rb)
-                                 parent[std::max(ra, rb)] = std::min(ra, rb);
-                             }
-                             std::size_t fans = 0;
-                             for (std::size_t i = 0; i < local.size(); ++i)
-                               fans += root(i) == i;
-                             if (fans > 1)
-                               ++nonManifoldVertices[r];
-                           }
-                         });
-  v.nonManifoldVertices = std::accumulate(nonManifoldVertices.begin(), nonManifoldVertices.end(), std::size_t{ 0 });
+  struct Corner
+  {
+    std::int32_t next, previous; ///< the triangle's corners after this one and before it
+    std::uint32_t triangle;
+  };
+  std::vector<Corner, DefaultInitAllocator<Corner>> corners(start[nPoints]);
+  {
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t f = 0; f < nTriangles; ++f)
+    {
+      const Triangle& t = mesh.triangles[f];
+      for (int i = 0; i < 3; ++i)
+        corners[fill[static_cast<std::size_t>(t[i])]++] = { t[(i + 1) % 3], t[(i + 2) % 3], static_cast<std::uint32_t>(f) };
+    }
+  }
+  struct VertexCounts
+  {
+    std::size_t edges = 0, folded = 0, inconsistent = 0, boundary = 0, nonManifold = 0, nonManifoldVertices = 0;
+  };
+  const std::vector<VertexCounts> vertexCounts = fixedRangeResults<VertexCounts>(
+    nPoints, rangeSize, 0,
+    [&](VertexCounts& counts, std::size_t firstPoint, std::size_t lastPoint)
+    {
+      std::vector<std::int32_t> local;
+      std::vector<std::size_t> parent;
+      std::vector<EdgeUse> uses;
+      auto root = [&](std::size_t x)
+      {
+        while (parent[x] != x)
+          x = parent[x] = parent[parent[x]];
+        return x;
+      };
+      for (std::size_t p = firstPoint; p < lastPoint; ++p)
+      {
+        if (start[p] == start[p + 1])
+          continue;
+        const auto self = static_cast<std::int32_t>(p);
+        local.clear();
+        parent.clear();
+        uses.clear();
+        auto index = [&](std::int32_t vertex)
+        {
+          const auto at = std::find(local.begin(), local.end(), vertex);
+          if (at != local.end())
+            return static_cast<std::size_t>(at - local.begin());
+          local.push_back(vertex);
+          return local.size() - 1;
+        };
+        for (std::size_t c = start[p]; c < start[p + 1]; ++c)
+        {
+          const Corner& corner = corners[c];
+          const std::size_t a = index(corner.next), b = index(corner.previous);
+          while (parent.size() < local.size())
+            parent.push_back(parent.size());
+          const std::size_t ra = root(a), rb = root(b);
+          if (ra != rb)
+            parent[std::max(ra, rb)] = std::min(ra, rb);
+          // The edge to the next corner runs from p; the one from the previous corner runs to p. An
+          // edge from p to itself (a triangle with p twice) is one use, from the corner before it.
+          if (corner.next >= self)
+            uses.push_back({ corner.next, corner.triangle, corner.next > self });
+          if (corner.previous > self)
+            uses.push_back({ corner.previous, corner.triangle, false });
+        }
+        std::size_t fans = 0;
+        for (std::size_t i = 0; i < local.size(); ++i)
+          fans += root(i) == i;
+        counts.nonManifoldVertices += fans > 1;
+        // In the order of (other end, triangle): an edge's uses side by side, its first triangle first.
+        std::sort(uses.begin(), uses.end());
+        for (std::size_t first = 0; first < uses.size();)
+        {
+          std::size_t last = first + 1;
+          std::size_t forward = uses[first].forward ? 1 : 0;
+          const std::array<float, 3>& m = normals[uses[first].triangle];
+          for (; last < uses.size() && uses[last].other == uses[first].other; ++last)
+          {
+            forward += uses[last].forward ? 1 : 0;
+            counts.folded += folded(m, normals[uses[last].triangle]);
+          }
+          const std::size_t count = last - first, backward = count - forward;
+          counts.inconsistent += (forward > 1 ? forward - 1 : 0) + (backward > 1 ? backward - 1 : 0);
+          ++counts.edges;
+          if (count == 1)
+            ++counts.boundary;
+          else if (count > 2)
+            ++counts.nonManifold;
+          first = last;
+        }
+      }
+    });
+  std::size_t edges = 0;
+  for (const VertexCounts& counts : vertexCounts)
+  {
+    edges += counts.edges;
+    v.foldedEdges += counts.folded;
+    v.inconsistentEdges += counts.inconsistent;
+    v.boundaryEdges += counts.boundary;
+    v.nonManifoldEdges += counts.nonManifold;
+    v.nonManifoldVertices += counts.nonManifoldVertices;
+  }
+  corners = decltype(corners)();
+  normals = std::vector<std::array<float, 3>>();
 
   std::vector<char> used(nPoints, 0);
   DisjointSets pieces(nPoints);

@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <random>
+#include <set>
 #include <string>
 
 using namespace slicemesh;
@@ -197,4 +199,142 @@ TEST(MeshValidation, AfterMovingPointsIsTheWholeValidation)
   const MeshValidation whole = validateMesh(mesh, wholeCrossings);
   EXPECT_EQ(whole.misorientedComponents, 1u);
   expectSameValidation(validateMeshAfterMovingPoints(mesh, before, moved, crossings), whole, "inside out");
+}
+
+namespace
+{
+
+/** The topology counts of validateMeshTopology taken from their definitions, edge by edge and
+ *  vertex by vertex, with ordered maps: what the one pass over each vertex's corners must give. */
+struct TopologyByDefinition
+{
+  std::size_t boundary = 0, nonManifold = 0, inconsistent = 0, folded = 0, nonManifoldVertices = 0;
+  long eulerCharacteristic = 0;
+};
+
+TopologyByDefinition topologyByDefinition(const TriangleMesh& mesh)
+{
+  TopologyByDefinition d;
+  // Every directed edge of every triangle, under its two ends (lower first): its triangle, its way.
+  std::map<std::pair<std::int32_t, std::int32_t>, std::vector<std::pair<std::size_t, bool>>> uses;
+  std::map<std::int32_t, std::vector<std::pair<std::int32_t, std::int32_t>>> links; // the edges opposite each vertex
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+  {
+    const Triangle& t = mesh.triangles[f];
+    for (int i = 0; i < 3; ++i)
+    {
+      const std::int32_t p = t[i], q = t[(i + 1) % 3];
+      uses[{ std::min(p, q), std::max(p, q) }].push_back({ f, p < q });
+      links[p].push_back({ t[(i + 1) % 3], t[(i + 2) % 3] });
+    }
+  }
+  auto unitNormal = [&](std::size_t f)
+  {
+    const Triangle& t = mesh.triangles[f];
+    const Point3 &a = mesh.points[t[0]], &b = mesh.points[t[1]], &c = mesh.points[t[2]];
+    const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+    const std::array<double, 3> n{ uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx };
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    return length > 0.0 ? std::array<double, 3>{ n[0] / length, n[1] / length, n[2] / length }
+                        : std::array<double, 3>{ 0.0, 0.0, 0.0 };
+  };
+  for (auto& [edge, its] : uses)
+  {
+    std::sort(its.begin(), its.end());
+    const std::size_t forward = static_cast<std::size_t>(std::count_if(its.begin(), its.end(), [](const auto& u) { return u.second; }));
+    const std::size_t backward = its.size() - forward;
+    d.boundary += its.size() == 1;
+    d.nonManifold += its.size() > 2;
+    d.inconsistent += (forward > 1 ? forward - 1 : 0) + (backward > 1 ? backward - 1 : 0);
+    const std::array<double, 3> m = unitNormal(its.front().first); // against the edge's first triangle
+    for (std::size_t j = 1; j < its.size(); ++j)
+    {
+      const std::array<double, 3> n = unitNormal(its[j].first);
+      d.folded += m[0] * n[0] + m[1] * n[1] + m[2] * n[2] < -std::cos(M_PI / 180.0);
+    }
+  }
+  for (const auto& [vertex, link] : links)
+  {
+    // The link's vertices joined by its edges: more than one group, more than one fan.
+    std::map<std::int32_t, std::int32_t> group;
+    for (const auto& [a, b] : link)
+      group[a] = a, group[b] = b;
+    for (bool changed = true; changed;)
+    {
+      changed = false;
+      for (const auto& [a, b] : link)
+        if (group[a] != group[b])
+        {
+          group[a] = group[b] = std::min(group[a], group[b]);
+          changed = true;
+        }
+    }
+    std::set<std::int32_t> groups;
+    for (const auto& entry : group)
+      groups.insert(entry.second);
+    d.nonManifoldVertices += groups.size() > 1;
+  }
+  d.eulerCharacteristic =
+    static_cast<long>(links.size()) - static_cast<long>(uses.size()) + static_cast<long>(mesh.triangles.size());
+  return d;
+}
+
+} // namespace
+
+// A closed ball and its faults: triangles gone (holes), repeated (fins), turned over, with a corner
+// twice or three times (edges from a vertex to itself), vertices merged (pinched fans) and moved
+// onto a neighbour's far side (folds). The counts of validateMeshTopology are each edge's and each
+// vertex's own, by their definitions, on every variant.
+TEST(MeshValidation, TopologyCountsAreThoseOfEachEdgeAndVertexByDefinition)
+{
+  const TriangleMesh ball = tiledBall(0.0, 8.0);
+  std::mt19937 random(11);
+  auto any = [&](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(random); };
+  std::size_t seen[6] = {};
+  for (int trial = 0; trial < 40; ++trial)
+  {
+    TriangleMesh mesh = ball;
+    for (int fault = 0; fault < 1 + trial % 7; ++fault)
+    {
+      const std::size_t f = any(mesh.triangles.size());
+      Triangle& t = mesh.triangles[f];
+      switch (any(6))
+      {
+        case 0: mesh.triangles.erase(mesh.triangles.begin() + static_cast<std::ptrdiff_t>(f)); break;
+        case 1: mesh.triangles.push_back(t); break;
+        case 2: std::swap(t[1], t[2]); break;
+        case 3: t[any(3)] = t[any(3)]; break;
+        case 4: // a vertex merged into another anywhere on the ball
+        {
+          const auto from = static_cast<std::int32_t>(any(mesh.points.size()));
+          const auto to = static_cast<std::int32_t>(any(mesh.points.size()));
+          for (Triangle& each : mesh.triangles)
+            for (std::int32_t& corner : each)
+              corner = corner == from ? to : corner;
+          break;
+        }
+        default: // a corner moved through the opposite edge, beyond its neighbour: a fold
+        {
+          const Point3 a = mesh.points[t[1]], b = mesh.points[t[2]], c = mesh.points[t[0]];
+          mesh.points[t[0]] = { a.x + b.x - c.x, a.y + b.y - c.y, a.z + b.z - c.z };
+        }
+      }
+    }
+    const MeshValidation v = validateMeshTopology(mesh);
+    const TopologyByDefinition d = topologyByDefinition(mesh);
+    const std::string where = "trial " + std::to_string(trial);
+    EXPECT_EQ(v.boundaryEdges, d.boundary) << where;
+    EXPECT_EQ(v.nonManifoldEdges, d.nonManifold) << where;
+    EXPECT_EQ(v.inconsistentEdges, d.inconsistent) << where;
+    EXPECT_EQ(v.foldedEdges, d.folded) << where;
+    EXPECT_EQ(v.nonManifoldVertices, d.nonManifoldVertices) << where;
+    EXPECT_EQ(v.eulerCharacteristic, d.eulerCharacteristic) << where;
+    const std::size_t counts[6] = { d.boundary, d.nonManifold, d.inconsistent, d.folded, d.nonManifoldVertices,
+                                    v.degenerateTriangles };
+    for (int k = 0; k < 6; ++k)
+      seen[k] += counts[k];
+  }
+  // Every kind of fault was met.
+  for (int k = 0; k < 6; ++k)
+    EXPECT_GT(seen[k], 0u) << "count " << k;
 }
