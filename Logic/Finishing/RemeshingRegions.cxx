@@ -63,6 +63,18 @@ std::vector<std::size_t> mostWorkFirst(const TriangleMesh& mesh, const std::vect
   return order;
 }
 
+namespace
+{
+
+/** Throws unless a region's list of triangle numbers (32 bits each) can name `triangles` of them. */
+void checkListable(std::size_t triangles)
+{
+  if (triangles > std::numeric_limits<std::uint32_t>::max())
+    throw Error("remeshing regions: more triangles than a region's list can name");
+}
+
+} // namespace
+
 std::vector<char> seamVertices(const TriangleMesh& mesh, const std::vector<int>& regionOf)
 {
   constexpr int none = -2;
@@ -82,74 +94,73 @@ std::vector<char> seamVertices(const TriangleMesh& mesh, const std::vector<int>&
 
 std::vector<int> seamBands(const TriangleMesh& mesh, const std::vector<char>& seam, int rings, int& count)
 {
+  checkListable(mesh.triangles.size());
   std::vector<char> near = seam;
   growByRings(mesh, near, rings);
-  std::vector<char> inBand(mesh.triangles.size(), 0);
+  // The band's triangles in mesh order, each known below by its place in this list: the sets and
+  // lists below are as large as the band, not as the piece (a third of the piece on the scaling
+  // ellipsoid, whose band pass ran on one thread while the other waited).
+  std::vector<std::uint32_t> band;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
   {
     const Triangle& tri = mesh.triangles[t];
-    inBand[t] = near[tri[0]] || near[tri[1]] || near[tri[2]];
+    if (near[tri[0]] || near[tri[1]] || near[tri[2]])
+      band.push_back(static_cast<std::uint32_t>(t));
   }
   // Band triangles joined by their edges: each edge's other triangle is found among the band
   // triangles around one of its ends (a vertex has a few), not by sorting every band edge (half the
   // triangles of a piece in slabs: on the thick scaling ellipsoid that sort was 60 ms on one thread).
   std::vector<std::size_t> firstAround(mesh.points.size() + 1, 0);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    if (inBand[t])
-      for (std::int32_t v : mesh.triangles[t])
-        ++firstAround[static_cast<std::size_t>(v) + 1];
-  for (std::size_t v = 0; v < mesh.points.size(); ++v)
-    firstAround[v + 1] += firstAround[v];
-  std::vector<std::size_t> around(firstAround.back()), next(firstAround.begin(), firstAround.end() - 1);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    if (inBand[t])
-      for (std::int32_t v : mesh.triangles[t])
-        around[next[static_cast<std::size_t>(v)]++] = t;
+  for (std::uint32_t t : band)
+    for (std::int32_t v : mesh.triangles[t])
+      ++firstAround[static_cast<std::size_t>(v) + 1];
+  std::partial_sum(firstAround.begin(), firstAround.end(), firstAround.begin());
+  std::vector<std::uint32_t> around(firstAround.back()); // places in `band`
+  {
+    std::vector<std::size_t> next(firstAround.begin(), firstAround.end() - 1);
+    for (std::size_t b = 0; b < band.size(); ++b)
+      for (std::int32_t v : mesh.triangles[band[b]])
+        around[next[static_cast<std::size_t>(v)]++] = static_cast<std::uint32_t>(b);
+  }
   // A triangle holds edge ab (a != b) if it holds both ends, and a collapsed edge aa if it holds a
-  // twice; its candidates are the band triangles around the end with fewer of them.
+  // twice; its candidates are the band triangles around the end with fewer of them. Each pair is
+  // joined once, from its earlier triangle.
   auto occurrences = [](const Triangle& tri, std::int32_t v) { return (tri[0] == v) + (tri[1] == v) + (tri[2] == v); };
   auto aroundOf = [&](std::int32_t v)
   { return firstAround[static_cast<std::size_t>(v) + 1] - firstAround[static_cast<std::size_t>(v)]; };
-  DisjointSets sets(mesh.triangles.size());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    if (inBand[t])
-      for (int corner = 0; corner < 3; ++corner)
-      {
-        std::int32_t a = mesh.triangles[t][corner], b = mesh.triangles[t][(corner + 1) % 3];
-        if (aroundOf(b) < aroundOf(a))
-          std::swap(a, b);
-        const auto v = static_cast<std::size_t>(a);
-        for (std::size_t i = firstAround[v]; i < firstAround[v + 1]; ++i)
-        {
-          const Triangle& other = mesh.triangles[around[i]];
-          if (around[i] != t && (a != b ? occurrences(other, b) > 0 : occurrences(other, a) > 1))
-            sets.unite(t, around[i]);
-        }
-      }
-  std::vector<int> regionOf(mesh.triangles.size(), -1), numberOfRoot(mesh.triangles.size(), -1);
-  count = 0;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    if (inBand[t])
+  DisjointSets sets(band.size());
+  for (std::size_t b = 0; b < band.size(); ++b)
+  {
+    const Triangle& tri = mesh.triangles[band[b]];
+    for (int corner = 0; corner < 3; ++corner)
     {
-      int& number = numberOfRoot[sets.find(t)];
-      if (number < 0)
-        number = count++;
-      regionOf[t] = number;
+      std::int32_t u = tri[corner], w = tri[(corner + 1) % 3];
+      if (aroundOf(w) < aroundOf(u))
+        std::swap(u, w);
+      const auto v = static_cast<std::size_t>(u);
+      for (std::size_t i = firstAround[v]; i < firstAround[v + 1]; ++i)
+      {
+        if (around[i] <= b)
+          continue;
+        const Triangle& other = mesh.triangles[band[around[i]]];
+        if (u != w ? occurrences(other, w) > 0 : occurrences(other, u) > 1)
+          sets.unite(b, around[i]);
+      }
     }
+  }
+  // Numbered in the order of their first triangle: roots are the smallest members (DisjointSets),
+  // so a set's number is given at its root.
+  std::vector<int> regionOf(mesh.triangles.size(), -1), numberOf(band.size(), -1);
+  count = 0;
+  for (std::size_t b = 0; b < band.size(); ++b)
+  {
+    const std::size_t root = sets.find(b);
+    if (root == b)
+      numberOf[b] = count++;
+    regionOf[band[b]] = numberOf[root];
+  }
   return regionOf;
 }
-
-namespace
-{
-
-/** Throws unless a region's list of triangle numbers (32 bits each) can name `triangles` of them. */
-void checkListable(std::size_t triangles)
-{
-  if (triangles > std::numeric_limits<std::uint32_t>::max())
-    throw Error("remeshing regions: more triangles than a region's list can name");
-}
-
-} // namespace
 
 RegionTriangles trianglesByRegion(const std::vector<int>& regionOf, int count)
 {
