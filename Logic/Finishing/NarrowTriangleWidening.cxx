@@ -60,13 +60,20 @@ std::size_t widenNarrowTriangles(TriangleMesh& mesh, MeshValidation& validation,
   const CrossingRepair widening = widenNarrowTrianglesLocally(widened, widenable, edgeLength, narrowAngle);
   if (widening.operations() == 0)
     return 0;
-  // Every triangle the widening made has a widenable corner (an end of the flipped or collapsed
-  // edge), and the piece crossed nothing before: those triangles against the rest are the whole
-  // test's answer.
+  // Every triangle the widening made or removed has a widenable corner (an end of the flipped or
+  // collapsed edge): their corners are those of the triangles with a widenable corner, before the
+  // widening and after it. Elsewhere the piece is as it was, valid: the validation gathers the edges
+  // and tests the crossings around those corners only.
+  std::vector<char> changed = widenable;
+  growByRings(mesh, changed, 1);
+  renumber(widening, changed);
   std::vector<char> moved = widenable;
   renumber(widening, moved);
+  growByRings(widened, moved, 1);
+  for (std::size_t v = 0; v < changed.size(); ++v)
+    changed[v] = changed[v] || moved[v];
   std::vector<std::pair<std::size_t, std::size_t>> crossings;
-  const MeshValidation after = validateMeshAfterMoving(widened, validation.selfIntersectionChecked, moved, crossings);
+  const MeshValidation after = validateMeshAfterLocalChange(widened, validation, changed, crossings);
   if (!rejection(after, validation).empty())
     return 0;
   mesh = std::move(widened);

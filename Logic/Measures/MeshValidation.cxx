@@ -10,6 +10,7 @@
 #include "Measures/MeshComponents.h"
 #include "Measures/SelfIntersections.h"
 #include "Measures/TriangleAngles.h"
+#include "Measures/VertexFans.h"
 
 #include <algorithm>
 #include <array>
@@ -25,14 +26,6 @@ namespace
 
 /** Triangles or vertices per range of the validation's parallel passes. */
 constexpr std::size_t rangeSize = 8192;
-
-/** Two triangles on one edge fold onto each other: their unit normals within a degree of opposite. */
-bool folded(const std::array<float, 3>& m, const std::array<float, 3>& n)
-{
-  static const double foldCosine = std::cos(M_PI / 180.0);
-  return static_cast<double>(m[0]) * n[0] + static_cast<double>(m[1]) * n[1] + static_cast<double>(m[2]) * n[2] <
-         -foldCosine;
-}
 
 /** A triangle's unit normal in single precision (they only tell folds, far above its rounding);
  *  zero without area. `n`: its area normal, `twiceArea` that normal's length. */
@@ -106,6 +99,53 @@ void measureVolumeAndOrientation(const TriangleMesh& mesh, MeshValidation& v)
     v.misorientedComponents = v.components == 1 ? (v.volume > 0.0 ? 0 : 1) : misorientedComponents(mesh);
 }
 
+/** The edges' and fans' counts of a validation. */
+void setEdgeCounts(MeshValidation& v, const FanCounts& counts)
+{
+  v.foldedEdges = counts.folded;
+  v.inconsistentEdges = counts.inconsistent;
+  v.boundaryEdges = counts.boundary;
+  v.nonManifoldEdges = counts.nonManifold;
+  v.nonManifoldVertices = counts.nonManifoldVertices;
+}
+
+/** `v` completed, its triangles' and edges' counts known (`edges`: how many): the vertices in use,
+ *  the components, the volume and orientation, the Euler characteristic. */
+MeshValidation withComponentsAndVolume(const TriangleMesh& mesh, MeshValidation v, std::size_t edges)
+{
+  const std::size_t nPoints = mesh.points.size();
+  std::vector<char> used(nPoints, 0);
+  DisjointSets pieces(nPoints);
+  for (const Triangle& t : mesh.triangles)
+    for (int i = 0; i < 3; ++i)
+    {
+      used[t[i]] = 1;
+      pieces.unite(t[i], t[(i + 1) % 3]);
+    }
+  std::size_t usedCount = 0;
+  v.components = 0;
+  for (std::size_t p = 0; p < nPoints; ++p)
+    if (used[p])
+    {
+      ++usedCount;
+      v.components += pieces.find(p) == p;
+    }
+  v.vertices = usedCount;
+  measureVolumeAndOrientation(mesh, v);
+  v.eulerCharacteristic =
+    static_cast<long>(usedCount) - static_cast<long>(edges) + static_cast<long>(mesh.triangles.size());
+  return v;
+}
+
+/** Throws unless every corner of every triangle is a vertex of the mesh. */
+void checkCorners(const TriangleMesh& mesh)
+{
+  for (const Triangle& t : mesh.triangles)
+    for (std::int32_t i : t)
+      if (i < 0 || static_cast<std::size_t>(i) >= mesh.points.size())
+        throw Error("mesh: a triangle refers to a vertex that does not exist");
+}
+
 /** The folded edges among the edges of the triangles with a corner flagged in `moved`, on a closed
  *  mesh whose every edge has two triangles. Both triangles of such an edge have a corner among the
  *  corners of those triangles: only the triangles with one are gathered, and their edges sorted. */
@@ -156,7 +196,7 @@ std::size_t foldedEdgesAroundMoved(const TriangleMesh& mesh, const std::vector<c
     ++e;
     if (!hasCornerIn(moved, mesh.triangles[f]) && !hasCornerIn(moved, mesh.triangles[g]))
       continue; // neither moved: as it was
-    count += folded(unitNormalOf(mesh, f), unitNormalOf(mesh, g));
+    count += foldedNormals(unitNormalOf(mesh, f), unitNormalOf(mesh, g));
   }
   return count;
 }
@@ -197,35 +237,23 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
   const std::size_t nTriangles = mesh.triangles.size();
   v.triangles = nTriangles;
   const std::size_t nPoints = mesh.points.size();
-  for (const Triangle& t : mesh.triangles)
-    for (std::int32_t i : t)
-      if (i < 0 || static_cast<std::size_t>(i) >= nPoints)
-        throw Error("mesh: a triangle refers to a vertex that does not exist");
+  checkCorners(mesh);
 
   // Per triangle: degeneracy, area, unit normal, smallest angle.
   // A large piece's normals are held while its edges are gathered: single precision.
   std::vector<std::array<float, 3>> normals(nTriangles);
   measureTriangles(mesh, v, &normals);
 
-  // Each vertex's corners (counting sort): the triangle and its two other corners in the triangle's
-  // order. They tell both what a vertex decides and what its edges do. A vertex is manifold when its
-  // triangles form one fan: the edges opposite it form one connected link. An edge is counted at its
-  // lower end, whose corners hold every use of it (a triangle holding both ends has a corner at
-  // each): the uses of one undirected edge tell boundary and non-manifold edges, their directions
-  // orientation (two uses the same way), and their triangles' normals folds (against the edge's
-  // first triangle). One pass over the corners, not a second table of every edge's uses.
+  // Each vertex's corners (counting sort), each vertex then tallied from its own (VertexFans): its
+  // fan, and the edges it is the lower end of. One pass over the corners, not a second table of every
+  // edge's uses.
   std::vector<std::size_t> start(nPoints + 1, 0);
   for (const Triangle& t : mesh.triangles)
     for (std::int32_t i : t)
       ++start[static_cast<std::size_t>(i) + 1];
   for (std::size_t p = 0; p < nPoints; ++p)
     start[p + 1] += start[p];
-  struct Corner
-  {
-    std::int32_t next, previous; ///< the triangle's corners after this one and before it
-    std::uint32_t triangle;
-  };
-  std::vector<Corner, DefaultInitAllocator<Corner>> corners(start[nPoints]);
+  std::vector<VertexCorner, DefaultInitAllocator<VertexCorner>> corners(start[nPoints]);
   {
     std::vector<std::size_t> fill(start.begin(), start.end() - 1);
     for (std::size_t f = 0; f < nTriangles; ++f)
@@ -235,116 +263,28 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
         corners[fill[static_cast<std::size_t>(t[i])]++] = { t[(i + 1) % 3], t[(i + 2) % 3], static_cast<std::uint32_t>(f) };
     }
   }
-  struct VertexCounts
-  {
-    std::size_t edges = 0, folded = 0, inconsistent = 0, boundary = 0, nonManifold = 0, nonManifoldVertices = 0;
-  };
-  const std::vector<VertexCounts> vertexCounts = fixedRangeResults<VertexCounts>(
-    nPoints, rangeSize, 0,
-    [&](VertexCounts& counts, std::size_t firstPoint, std::size_t lastPoint)
-    {
-      std::vector<std::int32_t> local;
-      std::vector<std::size_t> parent;
-      std::vector<EdgeUse> uses;
-      auto root = [&](std::size_t x)
-      {
-        while (parent[x] != x)
-          x = parent[x] = parent[parent[x]];
-        return x;
-      };
-      for (std::size_t p = firstPoint; p < lastPoint; ++p)
-      {
-        if (start[p] == start[p + 1])
-          continue;
-        const auto self = static_cast<std::int32_t>(p);
-        local.clear();
-        parent.clear();
-        uses.clear();
-        auto index = [&](std::int32_t vertex)
-        {
-          const auto at = std::find(local.begin(), local.end(), vertex);
-          if (at != local.end())
-            return static_cast<std::size_t>(at - local.begin());
-          local.push_back(vertex);
-          return local.size() - 1;
-        };
-        for (std::size_t c = start[p]; c < start[p + 1]; ++c)
-        {
-          const Corner& corner = corners[c];
-          const std::size_t a = index(corner.next), b = index(corner.previous);
-          while (parent.size() < local.size())
-            parent.push_back(parent.size());
-          const std::size_t ra = root(a), rb = root(b);
-          if (ra != rb)
-            parent[std::max(ra, rb)] = std::min(ra, rb);
-          // The edge to the next corner runs from p; the one from the previous corner runs to p. An
-          // edge from p to itself (a triangle with p twice) is one use, from the corner before it.
-          if (corner.next >= self)
-            uses.push_back({ corner.next, corner.triangle, corner.next > self });
-          if (corner.previous > self)
-            uses.push_back({ corner.previous, corner.triangle, false });
-        }
-        std::size_t fans = 0;
-        for (std::size_t i = 0; i < local.size(); ++i)
-          fans += root(i) == i;
-        counts.nonManifoldVertices += fans > 1;
-        // In the order of (other end, triangle): an edge's uses side by side, its first triangle first.
-        std::sort(uses.begin(), uses.end());
-        for (std::size_t first = 0; first < uses.size();)
-        {
-          std::size_t last = first + 1;
-          std::size_t forward = uses[first].forward ? 1 : 0;
-          const std::array<float, 3>& m = normals[uses[first].triangle];
-          for (; last < uses.size() && uses[last].other == uses[first].other; ++last)
-          {
-            forward += uses[last].forward ? 1 : 0;
-            counts.folded += folded(m, normals[uses[last].triangle]);
-          }
-          const std::size_t count = last - first, backward = count - forward;
-          counts.inconsistent += (forward > 1 ? forward - 1 : 0) + (backward > 1 ? backward - 1 : 0);
-          ++counts.edges;
-          if (count == 1)
-            ++counts.boundary;
-          else if (count > 2)
-            ++counts.nonManifold;
-          first = last;
-        }
-      }
-    });
-  std::size_t edges = 0;
-  for (const VertexCounts& counts : vertexCounts)
-  {
-    edges += counts.edges;
-    v.foldedEdges += counts.folded;
-    v.inconsistentEdges += counts.inconsistent;
-    v.boundaryEdges += counts.boundary;
-    v.nonManifoldEdges += counts.nonManifold;
-    v.nonManifoldVertices += counts.nonManifoldVertices;
-  }
+  FanCounts counts;
+  for (const FanCounts& range : fixedRangeResults<FanCounts>(
+         nPoints, rangeSize, 0,
+         [&](FanCounts& rangeCounts, std::size_t firstPoint, std::size_t lastPoint)
+         {
+           VertexFanTally tally;
+           for (std::size_t p = firstPoint; p < lastPoint; ++p)
+           {
+             const auto self = static_cast<std::int32_t>(p);
+             tally.tally(
+               self, corners.data() + start[p], corners.data() + start[p + 1],
+               [self](std::int32_t w) { return w >= self; },
+               [&](std::uint32_t f) -> const std::array<float, 3>& { return normals[f]; }, rangeCounts);
+           }
+         }))
+    counts += range;
   corners = decltype(corners)();
   normals = std::vector<std::array<float, 3>>();
-
-  std::vector<char> used(nPoints, 0);
-  DisjointSets pieces(nPoints);
-  for (const Triangle& t : mesh.triangles)
-    for (int i = 0; i < 3; ++i)
-    {
-      used[t[i]] = 1;
-      pieces.unite(t[i], t[(i + 1) % 3]);
-    }
-  std::size_t usedCount = 0;
-  for (std::size_t p = 0; p < nPoints; ++p)
-    if (used[p])
-    {
-      ++usedCount;
-      v.components += pieces.find(p) == p;
-    }
-  v.vertices = usedCount;
-  measureVolumeAndOrientation(mesh, v);
-  v.eulerCharacteristic =
-    static_cast<long>(usedCount) - static_cast<long>(edges) + static_cast<long>(nTriangles);
-  return v;
+  setEdgeCounts(v, counts);
+  return withComponentsAndVolume(mesh, v, counts.edges);
 }
+
 
 namespace
 {
@@ -401,6 +341,71 @@ MeshValidation validateMeshAfterMovingPoints(const TriangleMesh& mesh, const Mes
   measureVolumeAndOrientation(mesh, v);
   crossings = before.selfIntersectionChecked ? selfIntersectingTrianglePairsAfterMoving(mesh, crossings, moved)
                                              : selfIntersectingTrianglePairs(mesh);
+  v.selfIntersections = crossings.size();
+  v.selfIntersectionChecked = true;
+  return v;
+}
+
+MeshValidation validateMeshAfterLocalChange(const TriangleMesh& mesh, const MeshValidation& before,
+                                            const std::vector<char>& changed,
+                                            std::vector<std::pair<std::size_t, std::size_t>>& crossings)
+{
+  const bool clean = before.closed() && before.manifold() && before.inconsistentEdges == 0 && before.foldedEdges == 0 &&
+                     before.selfIntersectionChecked && before.selfIntersections == 0 &&
+                     changed.size() == mesh.points.size();
+  if (!clean)
+    return validateMesh(mesh, crossings);
+  checkCorners(mesh);
+  MeshValidation v;
+  v.triangles = mesh.triangles.size();
+  measureTriangles(mesh, v, nullptr);
+  // The changed vertices' corners (counting sort over a list of them), each vertex tallied from its
+  // own: its fan, and its edges but those to a changed vertex below it (counted there).
+  std::vector<std::int32_t> changedVertices, slotOf(mesh.points.size(), -1);
+  for (std::size_t p = 0; p < mesh.points.size(); ++p)
+    if (changed[p])
+    {
+      slotOf[p] = static_cast<std::int32_t>(changedVertices.size());
+      changedVertices.push_back(static_cast<std::int32_t>(p));
+    }
+  std::vector<std::size_t> start(changedVertices.size() + 1, 0);
+  for (const Triangle& t : mesh.triangles)
+    for (std::int32_t i : t)
+      if (slotOf[static_cast<std::size_t>(i)] >= 0)
+        ++start[static_cast<std::size_t>(slotOf[static_cast<std::size_t>(i)]) + 1];
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<VertexCorner> corners(start.back());
+  {
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    {
+      const Triangle& t = mesh.triangles[f];
+      for (int i = 0; i < 3; ++i)
+        if (const std::int32_t slot = slotOf[static_cast<std::size_t>(t[i])]; slot >= 0)
+          corners[fill[static_cast<std::size_t>(slot)]++] = { t[(i + 1) % 3], t[(i + 2) % 3], static_cast<std::uint32_t>(f) };
+    }
+  }
+  FanCounts counts;
+  VertexFanTally tally;
+  for (std::size_t s = 0; s < changedVertices.size(); ++s)
+  {
+    const std::int32_t self = changedVertices[s];
+    tally.tally(
+      self, corners.data() + start[s], corners.data() + start[s + 1],
+      [&](std::int32_t w) { return w >= self || !changed[static_cast<std::size_t>(w)]; },
+      [&](std::uint32_t f) { return unitNormalOf(mesh, f); }, counts);
+  }
+  // Every edge not counted has its two uses of before: the uses add up to three per triangle. An
+  // odd remainder means `changed` missed a changed edge: the whole check then.
+  const std::size_t uses = 3 * mesh.triangles.size();
+  if (counts.edgeUses > uses || (uses - counts.edgeUses) % 2 != 0)
+    return validateMesh(mesh, crossings);
+  setEdgeCounts(v, counts);
+  v = withComponentsAndVolume(mesh, v, counts.edges + (uses - counts.edgeUses) / 2);
+  crossings.clear();
+  if (!(v.manifold() && v.inconsistentEdges == 0))
+    return v; // as validateMesh: no crossing test of a mesh it cannot judge
+  crossings = selfIntersectingTrianglePairsAfterMoving(mesh, crossings, changed);
   v.selfIntersections = crossings.size();
   v.selfIntersectionChecked = true;
   return v;

@@ -73,6 +73,18 @@ MeshValidation validateMeshAfterMovingPoints(const TriangleMesh& mesh, const Mes
                                              const std::vector<char>& moved,
                                              std::vector<std::pair<std::size_t, std::size_t>>& crossings);
 
+/** validateMesh of `mesh` after a local change of its triangles (flips, collapses: vertices gone and
+ *  the rest renumbered allowed) since `before`, which was closed, manifold, consistently wound, without
+ *  folds and without crossings. `changed`: a flag per vertex of `mesh`, set on every corner still in
+ *  the mesh of each triangle added or removed since. Elsewhere the triangles are as they were (two on
+ *  every edge, one fan at every vertex, no fold): only the edges and fans at changed vertices are
+ *  gathered again, and only the triangles with a changed corner are tested for crossings; what the
+ *  points decide and the components are measured again whole. The same result as validateMesh, which a
+ *  `before` that does not qualify gets (`crossings`: the new pairs, as validateMesh gives them). */
+MeshValidation validateMeshAfterLocalChange(const TriangleMesh& mesh, const MeshValidation& before,
+                                            const std::vector<char>& changed,
+                                            std::vector<std::pair<std::size_t, std::size_t>>& crossings);
+
 /** validateMesh without the self-intersection test (selfIntersectionChecked false): the topology,
  *  orientation and measures, in time linear in the triangles (and, for a mesh of several components
  *  whose boxes nest, O(n log n) to tell which component lies inside which). */

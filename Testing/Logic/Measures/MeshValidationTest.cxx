@@ -338,3 +338,151 @@ TEST(MeshValidation, TopologyCountsAreThoseOfEachEdgeAndVertexByDefinition)
   for (int k = 0; k < 6; ++k)
     EXPECT_GT(seen[k], 0u) << "count " << k;
 }
+
+// Flips without a link check, collapses, holes, fins and moved points, a few together in one place of
+// a mesh of three components (a ball, a cavity inside it, a ball apart), the unused vertices then
+// dropped and the rest renumbered: the validation after a local change is the whole validation, field
+// by field and crossing pair by crossing pair, given the corners of every triangle that changed.
+TEST(MeshValidation, AfterALocalChangeIsTheWholeValidation)
+{
+  const TriangleMesh outer = tiledBall(0.0, 8.0), cavity = tiledBall(0.0, 4.0, true), apart = tiledBall(30.0, 3.0);
+  const TriangleMesh joined = joinMeshes({ &outer, &cavity, &apart });
+  std::vector<std::pair<std::size_t, std::size_t>> crossings;
+  const MeshValidation before = validateMesh(joined, crossings);
+  ASSERT_TRUE(before.valid() && before.foldedEdges == 0) << before.summary();
+  std::mt19937 random(5);
+  auto any = [&](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(random); };
+  std::size_t seen[7] = {};
+  for (int trial = 0; trial < 60; ++trial)
+  {
+    TriangleMesh mesh = joined;
+    std::vector<char> changed(mesh.points.size(), 0);
+    auto flagCorners = [&](const Triangle& t)
+    {
+      for (std::int32_t v : t)
+        changed[static_cast<std::size_t>(v)] = 1;
+    };
+    // The operations stay near one triangle, as a repair's do.
+    const std::size_t centre = any(mesh.triangles.size());
+    auto nearTriangle = [&]
+    {
+      const Triangle& c = mesh.triangles[std::min(centre, mesh.triangles.size() - 1)];
+      const std::int32_t v = c[any(3)];
+      std::vector<std::size_t> around;
+      for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+        if (std::count(mesh.triangles[f].begin(), mesh.triangles[f].end(), v) > 0)
+          around.push_back(f);
+      return around.empty() ? std::min(centre, mesh.triangles.size() - 1) : around[any(around.size())];
+    };
+    for (int op = 0; op < 1 + trial % 4; ++op)
+    {
+      const std::size_t f = nearTriangle();
+      const Triangle t = mesh.triangles[f];
+      switch (any(7))
+      {
+        case 0: // the flip of edge t[0] t[1], wherever that leaves the edge between the far corners
+        {
+          for (std::size_t g = 0; g < mesh.triangles.size(); ++g)
+          {
+            const Triangle u = mesh.triangles[g];
+            for (int i = 0; i < 3 && g != f; ++i)
+              if (u[i] == t[1] && u[(i + 1) % 3] == t[0])
+              {
+                const std::int32_t a = t[0], b = t[1], c = t[2], d = u[(i + 2) % 3];
+                flagCorners(t);
+                flagCorners(u);
+                mesh.triangles[f] = { a, d, c };
+                mesh.triangles[g] = { b, c, d };
+                g = mesh.triangles.size() - 1;
+                break;
+              }
+          }
+          break;
+        }
+        case 1: // the collapse of edge t[0] t[1] onto t[0], wherever its link says no
+        case 5: // or t[0] glued to the far corner of the triangle across edge t[1] t[2]: a pinch
+        {
+          const std::int32_t keep = t[0];
+          std::int32_t gone = t[1];
+          for (const Triangle& u : mesh.triangles)
+            for (int i = 0; i < 3 && f % 2 == 0; ++i)
+              if (u[i] == t[2] && u[(i + 1) % 3] == t[1] && u[(i + 2) % 3] != keep)
+                gone = u[(i + 2) % 3];
+          std::vector<Triangle> kept;
+          for (const Triangle& u : mesh.triangles)
+          {
+            if (std::count(u.begin(), u.end(), gone) == 0)
+            {
+              kept.push_back(u);
+              continue;
+            }
+            flagCorners(u);
+            Triangle w = u;
+            for (std::int32_t& corner : w)
+              corner = corner == gone ? keep : corner;
+            if (std::count(w.begin(), w.end(), keep) == 1)
+              kept.push_back(w);
+          }
+          mesh.triangles = kept;
+          break;
+        }
+        case 2: // a corner moved by up to an edge: folds, crossings or nothing
+        {
+          const auto v = static_cast<std::size_t>(t[any(3)]);
+          for (const Triangle& u : mesh.triangles)
+            if (std::count(u.begin(), u.end(), static_cast<std::int32_t>(v)) > 0)
+              flagCorners(u);
+          std::uniform_real_distribution<double> reach(-1.5, 1.5);
+          mesh.points[v] = { mesh.points[v].x + reach(random), mesh.points[v].y + reach(random), mesh.points[v].z + reach(random) };
+          break;
+        }
+        case 6: // a corner moved onto the next one: triangles without area
+        {
+          const auto v = static_cast<std::size_t>(t[0]);
+          for (const Triangle& u : mesh.triangles)
+            if (std::count(u.begin(), u.end(), t[0]) > 0)
+              flagCorners(u);
+          mesh.points[v] = mesh.points[static_cast<std::size_t>(t[1])];
+          break;
+        }
+        case 3: // a hole
+          flagCorners(t);
+          mesh.triangles.erase(mesh.triangles.begin() + static_cast<std::ptrdiff_t>(f));
+          break;
+        default: // a fin: the triangle twice
+          flagCorners(t);
+          mesh.triangles.push_back(t);
+      }
+    }
+    // Unused vertices dropped, the rest renumbered in order, as a repair leaves its mesh.
+    std::vector<std::int32_t> index(mesh.points.size(), -1);
+    for (const Triangle& u : mesh.triangles)
+      for (std::int32_t v : u)
+        index[static_cast<std::size_t>(v)] = 0;
+    TriangleMesh renumbered;
+    std::vector<char> renumberedChanged;
+    for (std::size_t v = 0; v < mesh.points.size(); ++v)
+      if (index[v] == 0)
+      {
+        index[v] = static_cast<std::int32_t>(renumbered.points.size());
+        renumbered.points.push_back(mesh.points[v]);
+        renumberedChanged.push_back(changed[v]);
+      }
+    for (const Triangle& u : mesh.triangles)
+      renumbered.triangles.push_back({ index[u[0]], index[u[1]], index[u[2]] });
+    std::vector<std::pair<std::size_t, std::size_t>> local, whole;
+    const MeshValidation wholeValidation = validateMesh(renumbered, whole);
+    expectSameValidation(validateMeshAfterLocalChange(renumbered, before, renumberedChanged, local), wholeValidation,
+                         "trial " + std::to_string(trial));
+    EXPECT_EQ(local, whole) << "trial " << trial;
+    const std::size_t kinds[7] = { wholeValidation.boundaryEdges, wholeValidation.nonManifoldEdges,
+                                   wholeValidation.nonManifoldVertices, wholeValidation.foldedEdges,
+                                   wholeValidation.selfIntersections, wholeValidation.degenerateTriangles,
+                                   wholeValidation.valid() ? 1u : 0u };
+    for (int k = 0; k < 7; ++k)
+      seen[k] += kinds[k];
+  }
+  // Holes, fins, pinched fans, folds, crossings, triangles without area, and valid changes were met.
+  for (int k = 0; k < 7; ++k)
+    EXPECT_GT(seen[k], 0u) << "kind " << k;
+}
