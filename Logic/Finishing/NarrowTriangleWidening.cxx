@@ -67,11 +67,11 @@ std::size_t widenNarrowTriangles(TriangleMesh& mesh, MeshValidation& validation,
   std::vector<char> changed = widenable;
   growByRings(mesh, changed, 1);
   renumber(widening, changed);
-  std::vector<char> moved = widenable;
-  renumber(widening, moved);
-  growByRings(widened, moved, 1);
+  std::vector<char> changedAfter = widenable;
+  renumber(widening, changedAfter);
+  growByRings(widened, changedAfter, 1);
   for (std::size_t v = 0; v < changed.size(); ++v)
-    changed[v] = changed[v] || moved[v];
+    changed[v] = changed[v] || changedAfter[v];
   std::vector<std::pair<std::size_t, std::size_t>> crossings;
   const MeshValidation after = validateMeshAfterLocalChange(widened, validation, changed, crossings);
   if (!rejection(after, validation).empty())

@@ -39,7 +39,8 @@ std::vector<std::size_t> mostWorkFirst(const TriangleMesh& mesh, const std::vect
 std::vector<char> seamVertices(const TriangleMesh& mesh, const std::vector<int>& regionOf);
 
 /** The region of every triangle within `rings` rings of a seam vertex (`seam`: one flag per vertex), one region per set of such
- *  triangles joined by edges, numbered in the order of their first triangle; -1 elsewhere. */
+ *  triangles joined by edges, numbered in the order of their first triangle; -1 elsewhere. Throws for
+ *  a mesh of more triangles than 32 bits can number. */
 std::vector<int> seamBands(const TriangleMesh& mesh, const std::vector<char>& seam, int rings, int& count);
 
 /** The triangles of every region, in mesh order: region r's are ids[first[r]] .. ids[first[r + 1] - 1]

@@ -6,7 +6,6 @@
 #include "Core/DisjointSets.h"
 #include "Core/MeasureText.h"
 #include "Measures/ComponentOrientation.h"
-#include "Measures/EdgeUses.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/SelfIntersections.h"
 #include "Measures/TriangleAngles.h"
@@ -285,7 +284,6 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
   return withComponentsAndVolume(mesh, v, counts.edges);
 }
 
-
 namespace
 {
 
@@ -396,7 +394,8 @@ MeshValidation validateMeshAfterLocalChange(const TriangleMesh& mesh, const Mesh
       [&](std::uint32_t f) { return unitNormalOf(mesh, f); }, counts);
   }
   // Every edge not counted has its two uses of before: the uses add up to three per triangle. An
-  // odd remainder means `changed` missed a changed edge: the whole check then.
+  // odd remainder can only come from a `changed` that misses a changed edge (not every such miss
+  // gives one): the whole check then, a cheap guard, not a test of the contract.
   const std::size_t uses = 3 * mesh.triangles.size();
   if (counts.edgeUses > uses || (uses - counts.edgeUses) % 2 != 0)
     return validateMesh(mesh, crossings);
