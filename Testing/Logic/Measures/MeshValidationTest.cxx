@@ -1,4 +1,5 @@
 #include "ContourStacks.h"
+#include "SameValidation.h"
 #include "Measures/MeshComponents.h"
 #include "Measures/MeshValidation.h"
 #include "Tiling/SurfaceReconstruction.h"
@@ -12,6 +13,7 @@
 #include <string>
 
 using namespace slicemesh;
+using slicemesh::testing::expectSameValidation;
 
 namespace
 {
@@ -109,26 +111,6 @@ TriangleMesh tiledBall(double cx, double radius, bool facingIn = false)
   return mesh;
 }
 
-void expectSameValidation(const MeshValidation& a, const MeshValidation& b, const std::string& where)
-{
-  EXPECT_EQ(a.vertices, b.vertices) << where;
-  EXPECT_EQ(a.triangles, b.triangles) << where;
-  EXPECT_EQ(a.degenerateTriangles, b.degenerateTriangles) << where;
-  EXPECT_EQ(a.boundaryEdges, b.boundaryEdges) << where;
-  EXPECT_EQ(a.nonManifoldEdges, b.nonManifoldEdges) << where;
-  EXPECT_EQ(a.nonManifoldVertices, b.nonManifoldVertices) << where;
-  EXPECT_EQ(a.inconsistentEdges, b.inconsistentEdges) << where;
-  EXPECT_EQ(a.misorientedComponents, b.misorientedComponents) << where;
-  EXPECT_EQ(a.foldedEdges, b.foldedEdges) << where;
-  EXPECT_EQ(a.selfIntersections, b.selfIntersections) << where;
-  EXPECT_EQ(a.selfIntersectionChecked, b.selfIntersectionChecked) << where;
-  EXPECT_EQ(a.components, b.components) << where;
-  EXPECT_EQ(a.eulerCharacteristic, b.eulerCharacteristic) << where;
-  EXPECT_EQ(a.area, b.area) << where; // bit for bit: the same sums in the same order
-  EXPECT_EQ(a.volume, b.volume) << where;
-  EXPECT_EQ(a.minAngleDegrees, b.minAngleDegrees) << where;
-  EXPECT_EQ(a.fractionAnglesBelow30, b.fractionAnglesBelow30) << where;
-}
 
 } // namespace
 
