@@ -1,7 +1,6 @@
 #include "Measures/MeshValidation.h"
 
 #include "Core/AreaNormal.h"
-#include "Core/DefaultInitAllocator.h"
 #include "Core/ParallelFor.h"
 #include "Core/DisjointSets.h"
 #include "Core/MeasureText.h"
@@ -15,7 +14,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <numeric>
 #include <sstream>
 
 namespace slicemesh
@@ -136,6 +134,13 @@ MeshValidation withComponentsAndVolume(const TriangleMesh& mesh, MeshValidation 
   return v;
 }
 
+/** Whether every edge of the validated mesh had two triangles, wound against each other and not
+ *  folded, and every vertex one fan: what the validations after a change take as known elsewhere. */
+bool pairedWithoutFolds(const MeshValidation& v)
+{
+  return v.closed() && v.manifold() && v.inconsistentEdges == 0 && v.foldedEdges == 0;
+}
+
 /** Throws unless every corner of every triangle is a vertex of the mesh. */
 void checkCorners(const TriangleMesh& mesh)
 {
@@ -246,22 +251,7 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
   // Each vertex's corners (counting sort), each vertex then tallied from its own (VertexFans): its
   // fan, and the edges it is the lower end of. One pass over the corners, not a second table of every
   // edge's uses.
-  std::vector<std::size_t> start(nPoints + 1, 0);
-  for (const Triangle& t : mesh.triangles)
-    for (std::int32_t i : t)
-      ++start[static_cast<std::size_t>(i) + 1];
-  for (std::size_t p = 0; p < nPoints; ++p)
-    start[p + 1] += start[p];
-  std::vector<VertexCorner, DefaultInitAllocator<VertexCorner>> corners(start[nPoints]);
-  {
-    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t f = 0; f < nTriangles; ++f)
-    {
-      const Triangle& t = mesh.triangles[f];
-      for (int i = 0; i < 3; ++i)
-        corners[fill[static_cast<std::size_t>(t[i])]++] = { t[(i + 1) % 3], t[(i + 2) % 3], static_cast<std::uint32_t>(f) };
-    }
-  }
+  CornersBySlot filed = cornersBySlot(mesh, nPoints, [](std::int32_t v) { return v; });
   FanCounts counts;
   for (const FanCounts& range : fixedRangeResults<FanCounts>(
          nPoints, rangeSize, 0,
@@ -272,13 +262,13 @@ MeshValidation validateMeshTopology(const TriangleMesh& mesh)
            {
              const auto self = static_cast<std::int32_t>(p);
              tally.tally(
-               self, corners.data() + start[p], corners.data() + start[p + 1],
+               self, filed.corners.data() + filed.start[p], filed.corners.data() + filed.start[p + 1],
                [self](std::int32_t w) { return w >= self; },
                [&](std::uint32_t f) -> const std::array<float, 3>& { return normals[f]; }, rangeCounts);
            }
          }))
     counts += range;
-  corners = decltype(corners)();
+  filed = CornersBySlot();
   normals = std::vector<std::array<float, 3>>();
   setEdgeCounts(v, counts);
   return withComponentsAndVolume(mesh, v, counts.edges);
@@ -329,8 +319,7 @@ MeshValidation validateMeshAfterMovingPoints(const TriangleMesh& mesh, const Mes
   // characteristic too. On a closed mesh with two triangles on every edge and no folds before, a
   // fold can only be new, on an edge of a moved triangle.
   const bool sameEdgesAsBefore = before.triangles == mesh.triangles.size() && moved.size() == mesh.points.size() &&
-                                 before.closed() && before.manifold() && before.inconsistentEdges == 0 &&
-                                 before.foldedEdges == 0;
+                                 pairedWithoutFolds(before);
   if (!sameEdgesAsBefore)
     return validateMeshAfterMoving(mesh, before.selfIntersectionChecked, moved, crossings);
   MeshValidation v = before;
@@ -348,8 +337,7 @@ MeshValidation validateMeshAfterLocalChange(const TriangleMesh& mesh, const Mesh
                                             const std::vector<char>& changed,
                                             std::vector<std::pair<std::size_t, std::size_t>>& crossings)
 {
-  const bool clean = before.closed() && before.manifold() && before.inconsistentEdges == 0 && before.foldedEdges == 0 &&
-                     before.selfIntersectionChecked && before.selfIntersections == 0 &&
+  const bool clean = pairedWithoutFolds(before) && before.selfIntersectionChecked && before.selfIntersections == 0 &&
                      changed.size() == mesh.points.size();
   if (!clean)
     return validateMesh(mesh, crossings);
@@ -366,30 +354,15 @@ MeshValidation validateMeshAfterLocalChange(const TriangleMesh& mesh, const Mesh
       slotOf[p] = static_cast<std::int32_t>(changedVertices.size());
       changedVertices.push_back(static_cast<std::int32_t>(p));
     }
-  std::vector<std::size_t> start(changedVertices.size() + 1, 0);
-  for (const Triangle& t : mesh.triangles)
-    for (std::int32_t i : t)
-      if (slotOf[static_cast<std::size_t>(i)] >= 0)
-        ++start[static_cast<std::size_t>(slotOf[static_cast<std::size_t>(i)]) + 1];
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<VertexCorner> corners(start.back());
-  {
-    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    {
-      const Triangle& t = mesh.triangles[f];
-      for (int i = 0; i < 3; ++i)
-        if (const std::int32_t slot = slotOf[static_cast<std::size_t>(t[i])]; slot >= 0)
-          corners[fill[static_cast<std::size_t>(slot)]++] = { t[(i + 1) % 3], t[(i + 2) % 3], static_cast<std::uint32_t>(f) };
-    }
-  }
+  const CornersBySlot filed = cornersBySlot(mesh, changedVertices.size(),
+                                            [&](std::int32_t vertex) { return slotOf[static_cast<std::size_t>(vertex)]; });
   FanCounts counts;
   VertexFanTally tally;
   for (std::size_t s = 0; s < changedVertices.size(); ++s)
   {
     const std::int32_t self = changedVertices[s];
     tally.tally(
-      self, corners.data() + start[s], corners.data() + start[s + 1],
+      self, filed.corners.data() + filed.start[s], filed.corners.data() + filed.start[s + 1],
       [&](std::int32_t w) { return w >= self || !changed[static_cast<std::size_t>(w)]; },
       [&](std::uint32_t f) { return unitNormalOf(mesh, f); }, counts);
   }

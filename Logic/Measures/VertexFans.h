@@ -4,6 +4,8 @@
 #ifndef VertexFans_h
 #define VertexFans_h
 
+#include "Core/DefaultInitAllocator.h"
+#include "Core/SliceMeshTypes.h"
 #include "Measures/EdgeUses.h"
 
 #include <algorithm>
@@ -20,6 +22,39 @@ struct VertexCorner
   std::int32_t next, previous;
   std::uint32_t triangle;
 };
+
+/** Corners filed by slot: slot s's are corners[start[s]] .. corners[start[s + 1] - 1], in triangle order. */
+struct CornersBySlot
+{
+  std::vector<std::size_t> start;
+  std::vector<VertexCorner, DefaultInitAllocator<VertexCorner>> corners;
+};
+
+/** The corners of the vertices of `mesh` that have a slot (slotOf(vertex): below `slots`, or -1 for a
+ *  vertex left out), filed by slot in two passes over the triangles (counting sort). */
+template <typename SlotOf>
+CornersBySlot cornersBySlot(const TriangleMesh& mesh, std::size_t slots, SlotOf&& slotOf)
+{
+  CornersBySlot filed;
+  filed.start.assign(slots + 1, 0);
+  for (const Triangle& t : mesh.triangles)
+    for (std::int32_t v : t)
+      if (const std::int32_t slot = slotOf(v); slot >= 0)
+        ++filed.start[static_cast<std::size_t>(slot) + 1];
+  for (std::size_t s = 0; s < slots; ++s)
+    filed.start[s + 1] += filed.start[s];
+  filed.corners.resize(filed.start[slots]);
+  std::vector<std::size_t> fill(filed.start.begin(), filed.start.end() - 1);
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+  {
+    const Triangle& t = mesh.triangles[f];
+    for (int i = 0; i < 3; ++i)
+      if (const std::int32_t slot = slotOf(t[i]); slot >= 0)
+        filed.corners[fill[static_cast<std::size_t>(slot)]++] = { t[(i + 1) % 3], t[(i + 2) % 3],
+                                                                  static_cast<std::uint32_t>(f) };
+  }
+  return filed;
+}
 
 /** Counts over the vertices tallied and the edges they counted. */
 struct FanCounts
