@@ -81,7 +81,8 @@ class LocalRepair
 public:
   LocalRepair(TriangleMesh& mesh, const std::vector<std::pair<std::size_t, std::size_t>>& crossings,
               const std::vector<char>& movable, double edgeLength)
-    : m_Mesh(mesh), m_Movable(movable), m_Edge(edgeLength), m_FirstNew(mesh.points.size()), m_Alive(mesh.triangles.size(), 1),
+    : m_Mesh(mesh), m_Movable(movable), m_Changed(mesh.points.size(), 0), m_Edge(edgeLength), m_FirstNew(mesh.points.size()),
+      m_Alive(mesh.triangles.size(), 1),
       m_Crossings(crossings.begin(), crossings.end()), m_Cells(2.0 * edgeLength)
   {
     // Two rings past the movable vertices: every triangle an operation there rewrites, and the
@@ -329,12 +330,14 @@ public:
     const auto used = static_cast<std::size_t>(std::count(newNumber.begin(), newNumber.end(), 0));
     former.reserve(used);
     points.reserve(used);
+    done.changed.reserve(used);
     for (std::size_t v = 0; v < newNumber.size(); ++v)
       if (newNumber[v] == 0)
       {
         newNumber[v] = static_cast<std::int32_t>(former.size());
         former.push_back(v < m_FirstNew ? static_cast<std::int32_t>(v) : m_Origin[v - m_FirstNew]);
         points.push_back(m_Mesh.points[v]);
+        done.changed.push_back(m_Changed[v]);
       }
     for (Triangle& t : kept)
       for (std::int32_t& v : t)
@@ -464,6 +467,7 @@ private:
     const auto moved = static_cast<std::int32_t>(m_Mesh.points.size());
     m_Mesh.points.push_back(mean); // left unused, and dropped by compact, unless the move is made
     m_Movable.push_back(1);
+    m_Changed.push_back(0);
     m_Origin.push_back(static_cast<std::size_t>(u) < m_FirstNew ? u : m_Origin[static_cast<std::size_t>(u) - m_FirstNew]);
     if (!withinReach(u, moved))
       return std::nullopt;
@@ -588,6 +592,18 @@ private:
       for (auto pair = m_Crossings.begin(); pair != m_Crossings.end();)
         pair = pair->first == t || pair->second == t ? m_Crossings.erase(pair) : std::next(pair);
     };
+    const auto flag = [&](const Triangle& corners)
+    {
+      for (std::int32_t v : corners)
+        m_Changed[static_cast<std::size_t>(v)] = 1;
+    };
+    for (std::size_t t : operation.removed)
+      flag(m_Mesh.triangles[t]);
+    for (const auto& [slot, corners] : operation.rewritten)
+    {
+      flag(m_Mesh.triangles[slot]);
+      flag(corners);
+    }
     for (std::size_t t : operation.removed)
     {
       leave(t);
@@ -638,6 +654,7 @@ private:
 
   TriangleMesh& m_Mesh;
   std::vector<char> m_Movable; ///< grows with the points moves add
+  std::vector<char> m_Changed; ///< corners of the triangles operations removed or rewrote, before and after
   std::size_t m_FirstNew;       ///< the first point a move added
   std::vector<std::int32_t> m_Origin; ///< of each point a move added: the vertex it moved
   double m_Edge;

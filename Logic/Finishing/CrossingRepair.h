@@ -29,6 +29,11 @@ struct CrossingRepair
   /** For every vertex of the repaired mesh, its number before (collapsed vertices are gone; a moved
    *  one's new point has the number of the vertex it moved). */
   std::vector<std::int32_t> formerVertex;
+  /** For every vertex of the repaired mesh, whether it is a corner of a triangle the repair removed,
+   *  rewrote or made (the corners, before and after, of each operation made, including those an
+   *  undo took back). Elsewhere the triangles are as they were: the flags validateMeshAfterLocalChange
+   *  asks for, since the repair moves no point in place (a moved vertex's triangles take a new one). */
+  std::vector<char> changed;
 };
 
 /** Removes the crossings of `mesh` (`crossings`: pairs of triangle numbers, as the self-intersection

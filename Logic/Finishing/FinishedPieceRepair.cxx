@@ -105,27 +105,28 @@ std::size_t repairedLocally(TriangleMesh& mesh, MeshValidation& validation,
     validation.selfIntersections = std::max<std::size_t>(1, repair.stillCrossing.size());
     return repair.operations();
   }
-  // Every pair the repair undid had a triangle it changed, and every triangle it changed has a
-  // movable corner: those triangles tested against the rest give the whole test's answer, at the
-  // cost of the few that changed (the whole test of a piece of 1.5 million triangles takes a second
-  // and holds a grid of about 100 bytes a triangle).
-  crossings.clear();
-  validation = validateMeshAfterMoving(mesh, true, movable, crossings);
+  // Every pair the repair undid had a triangle it changed: the triangles it left as they were cross
+  // nothing among themselves, and those it changed, tested against the rest, give the whole test's
+  // answer at the cost of the few that changed (the whole test of a piece of 1.5 million triangles
+  // takes a second and holds a grid of about 100 bytes a triangle); the edges are gathered around
+  // them only.
+  MeshValidation leftAlone = validation;
+  leftAlone.selfIntersections = 0;
+  validation = validateMeshAfterLocalChange(mesh, leftAlone, repair.changed, crossings);
   crossedAt = crossingPlaces(mesh, crossings);
   if (validation.selfIntersections > 0 || !resmooth)
     return repair.operations();
   resmoothedAfterRepair(mesh, smoothed, unsmoothed, validation, crossings);
   unsmoothedVertices = verticesLeftUnsmoothed(mesh.points, smoothed, unsmoothed);
   TriangleMesh widened = mesh;
-  std::vector<char> widenable = repairableVertices(widened, places, heldNow, options);
+  const std::vector<char> widenable = repairableVertices(widened, places, heldNow, options);
   const CrossingRepair widening =
     widenNarrowTrianglesLocally(widened, widenable, options.remeshing.targetEdgeLength, besideRepairNarrowAngle);
   if (widening.operations() == 0)
     return repair.operations();
-  // The piece crossed nothing before: as above, the triangles the widening changed against the rest.
-  renumber(widening, widenable);
+  // The piece crossed nothing before: as above, around the triangles the widening changed.
   std::vector<std::pair<std::size_t, std::size_t>> widenedCrossings;
-  MeshValidation widenedValidation = validateMeshAfterMoving(widened, true, widenable, widenedCrossings);
+  MeshValidation widenedValidation = validateMeshAfterLocalChange(widened, validation, widening.changed, widenedCrossings);
   if (!rejection(widenedValidation, validation).empty()) // crossing a sheet the local test did not see
     return repair.operations();
   mesh = std::move(widened);

@@ -60,20 +60,10 @@ std::size_t widenNarrowTriangles(TriangleMesh& mesh, MeshValidation& validation,
   const CrossingRepair widening = widenNarrowTrianglesLocally(widened, widenable, edgeLength, narrowAngle);
   if (widening.operations() == 0)
     return 0;
-  // Every triangle the widening made or removed has a widenable corner (an end of the flipped or
-  // collapsed edge): their corners are those of the triangles with a widenable corner, before the
-  // widening and after it. Elsewhere the piece is as it was, valid: the validation gathers the edges
-  // and tests the crossings around those corners only.
-  std::vector<char> changed = widenable;
-  growByRings(mesh, changed, 1);
-  renumber(widening, changed);
-  std::vector<char> changedAfter = widenable;
-  renumber(widening, changedAfter);
-  growByRings(widened, changedAfter, 1);
-  for (std::size_t v = 0; v < changed.size(); ++v)
-    changed[v] = changed[v] || changedAfter[v];
+  // Elsewhere than at the corners of the triangles the widening made or removed, the piece is as it
+  // was, valid: the validation gathers the edges and tests the crossings around those corners only.
   std::vector<std::pair<std::size_t, std::size_t>> crossings;
-  const MeshValidation after = validateMeshAfterLocalChange(widened, validation, changed, crossings);
+  const MeshValidation after = validateMeshAfterLocalChange(widened, validation, widening.changed, crossings);
   if (!rejection(after, validation).empty())
     return 0;
   mesh = std::move(widened);

@@ -337,10 +337,13 @@ MeshValidation validateMeshAfterLocalChange(const TriangleMesh& mesh, const Mesh
                                             const std::vector<char>& changed,
                                             std::vector<std::pair<std::size_t, std::size_t>>& crossings)
 {
-  const bool clean = pairedWithoutFolds(before) && before.selfIntersectionChecked && before.selfIntersections == 0 &&
-                     changed.size() == mesh.points.size();
-  if (!clean)
+  crossings.clear(); // numbered as before the change: none carries over
+  if (!(before.selfIntersectionChecked && before.selfIntersections == 0 && changed.size() == mesh.points.size()))
     return validateMesh(mesh, crossings);
+  // The triangles left as they were cross nothing among themselves still: only those with a changed
+  // corner are tested. Where an edge was not paired or was folded before, the edges are gathered whole.
+  if (!pairedWithoutFolds(before))
+    return validateMeshAfterMoving(mesh, true, changed, crossings);
   checkCorners(mesh);
   MeshValidation v;
   v.triangles = mesh.triangles.size();
@@ -374,7 +377,6 @@ MeshValidation validateMeshAfterLocalChange(const TriangleMesh& mesh, const Mesh
     return validateMesh(mesh, crossings);
   setEdgeCounts(v, counts);
   v = withComponentsAndVolume(mesh, v, counts.edges + (uses - counts.edgeUses) / 2);
-  crossings.clear();
   if (!(v.manifold() && v.inconsistentEdges == 0))
     return v; // as validateMesh: no crossing test of a mesh it cannot judge
   crossings = selfIntersectingTrianglePairsAfterMoving(mesh, crossings, changed);

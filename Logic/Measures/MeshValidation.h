@@ -74,14 +74,16 @@ MeshValidation validateMeshAfterMovingPoints(const TriangleMesh& mesh, const Mes
                                              std::vector<std::pair<std::size_t, std::size_t>>& crossings);
 
 /** validateMesh of `mesh` after a local change (flips, collapses, moved points; vertices gone and the
- *  rest renumbered allowed) since `before`, which was closed, manifold, consistently wound, without
- *  folds and without crossings. `changed`: a flag per vertex of `mesh`, set on every corner still in
- *  the mesh of each triangle added or removed since, and on every corner of each triangle with a
- *  corner that moved. Elsewhere the triangles are as they were (two on every edge, one fan at every
- *  vertex, no fold): only the edges and fans at changed vertices are gathered again, and only the
- *  triangles with a changed corner are tested for crossings; what the points decide and the
- *  components are measured again whole. The same result as validateMesh, which a `before` that does
- *  not qualify gets (`crossings`: the new pairs, as validateMesh gives them). */
+ *  rest renumbered allowed) since `before`, whose self-intersection test found no crossing among the
+ *  triangles the change left as they were: `before.selfIntersections` counts only those (0; a repair
+ *  that undid every crossing by changing a triangle of each passes its validation with 0 there).
+ *  `changed`: a flag per vertex of `mesh`, set on every corner still in the mesh of each triangle
+ *  added or removed since, and on every corner of each triangle with a corner that moved. Elsewhere
+ *  the triangles are as they were: only the triangles with a changed corner are tested for
+ *  crossings, and where `before` was closed, manifold, consistently wound and without folds, only
+ *  the edges and fans at changed vertices are gathered again (else all); what the points decide and
+ *  the components are measured again whole. The same result as validateMesh, which a `before`
+ *  without that test gets (`crossings`: the new pairs, as validateMesh gives them). */
 MeshValidation validateMeshAfterLocalChange(const TriangleMesh& mesh, const MeshValidation& before,
                                             const std::vector<char>& changed,
                                             std::vector<std::pair<std::size_t, std::size_t>>& crossings);

@@ -112,20 +112,30 @@ TriangleMesh readObj(const std::string& path)
   return mesh;
 }
 
-/** What the finishing relies on to test only the changed part of a repaired piece: every triangle
- *  of `repaired` that `before` did not have (by the corners' former numbers and points) has a
- *  movable corner. */
-void expectEveryChangedTriangleHasAMovableCorner(const TriangleMesh& before, const TriangleMesh& repaired,
-                                                 const CrossingRepair& repair, const std::vector<char>& movable)
+/** What the finishing relies on to validate only the changed part of a repaired piece: every
+ *  triangle of `repaired` that `before` did not have (by the corners' former numbers and points) has
+ *  a movable corner and all its corners flagged in `repair.changed`, and every corner still in the
+ *  mesh of each triangle of `before` that `repaired` no longer has is flagged. */
+void expectTheChangeFlagged(const TriangleMesh& before, const TriangleMesh& repaired, const CrossingRepair& repair,
+                            const std::vector<char>& movable)
 {
+  ASSERT_EQ(repair.changed.size(), repaired.points.size());
   const auto canonical = [](Triangle t)
   {
     std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
     return t;
   };
-  std::set<Triangle> had;
+  std::set<Triangle> had, kept;
   for (const Triangle& t : before.triangles)
     had.insert(canonical(t));
+  // Each former vertex's number now, where it kept its point (a moved vertex's new point is not it).
+  std::map<std::int32_t, std::int32_t> nowOf;
+  for (std::size_t v = 0; v < repaired.points.size(); ++v)
+  {
+    const Point3 &now = repaired.points[v], &was = before.points[static_cast<std::size_t>(repair.formerVertex[v])];
+    if (now.x == was.x && now.y == was.y && now.z == was.z)
+      nowOf[repair.formerVertex[v]] = static_cast<std::int32_t>(v);
+  }
   std::size_t changed = 0;
   for (const Triangle& t : repaired.triangles)
   {
@@ -133,18 +143,40 @@ void expectEveryChangedTriangleHasAMovableCorner(const TriangleMesh& before, con
     bool moved = false;
     for (int i = 0; i < 3; ++i)
     {
-      const auto v = static_cast<std::size_t>(t[i]);
-      former[i] = repair.formerVertex[v];
-      const Point3 &now = repaired.points[v], &was = before.points[static_cast<std::size_t>(former[i])];
-      moved = moved || now.x != was.x || now.y != was.y || now.z != was.z;
+      former[i] = repair.formerVertex[static_cast<std::size_t>(t[i])];
+      moved = moved || !nowOf.count(former[i]) || nowOf.at(former[i]) != t[i];
     }
     if (!moved && had.count(canonical(former)))
+    {
+      kept.insert(canonical(former));
       continue;
+    }
     ++changed;
     EXPECT_TRUE(movable[static_cast<std::size_t>(former[0])] || movable[static_cast<std::size_t>(former[1])] ||
                 movable[static_cast<std::size_t>(former[2])]);
+    for (std::int32_t v : t)
+      EXPECT_TRUE(repair.changed[static_cast<std::size_t>(v)]) << "a corner of a new triangle, vertex " << v;
   }
   EXPECT_GT(changed, 0u);
+  for (const Triangle& t : before.triangles)
+    if (!kept.count(canonical(t)))
+      for (std::int32_t v : t)
+        if (nowOf.count(v))
+          EXPECT_TRUE(repair.changed[static_cast<std::size_t>(nowOf.at(v))]) << "a corner of a removed triangle, vertex " << v;
+}
+
+/** After a repair that undid every crossing of `before` (its validation: `validation`), the
+ *  validation around the changed triangles is the whole one, field by field. */
+void expectTheLocalValidationWhole(const TriangleMesh& repaired, const MeshValidation& validation,
+                                   const CrossingRepair& repair)
+{
+  MeshValidation leftAlone = validation; // every crossing had a triangle the repair changed
+  leftAlone.selfIntersections = 0;
+  std::vector<std::pair<std::size_t, std::size_t>> local, whole;
+  const MeshValidation around = validateMeshAfterLocalChange(repaired, leftAlone, repair.changed, local);
+  const MeshValidation all = validateMesh(repaired, whole);
+  slicemesh::testing::expectSameValidation(around, all, "repaired");
+  EXPECT_EQ(local, whole);
 }
 
 } // namespace
@@ -176,7 +208,8 @@ TEST(CrossingRepair, AFoldOnAFlatFaceIsCollapsedAwayAndTheFaceStaysFlat)
   EXPECT_EQ(after.eulerCharacteristic, before.eulerCharacteristic);
   EXPECT_EQ(after.components, 1u);
   EXPECT_GE(repair.collapses, 1u);
-  expectEveryChangedTriangleHasAMovableCorner(folding, box, repair, movable);
+  expectTheChangeFlagged(folding, box, repair, movable);
+  expectTheLocalValidationWhole(box, folded, repair);
   // No point moved: the box is the same solid (the top face flat at z = 8).
   EXPECT_NEAR(after.volume, 512.0, 1e-9);
   EXPECT_EQ(box.points.size(), before.vertices - repair.collapses);
@@ -227,13 +260,17 @@ TEST(CrossingRepair, AFoldWhoseEdgesMayNotChangeIsUndoneByMovingItsVertex)
   ASSERT_GE(pushed, 0);
   box.points[static_cast<std::size_t>(pushed)] = { 5.4, 5.4, 8.0 }; // within two edges of the mean
   std::vector<std::pair<std::size_t, std::size_t>> crossings;
-  ASSERT_GT(validateMesh(box, crossings).selfIntersections, 0u);
+  const MeshValidation folded = validateMesh(box, crossings);
+  ASSERT_GT(folded.selfIntersections, 0u);
   std::vector<char> movable(box.points.size(), 0);
   movable[static_cast<std::size_t>(pushed)] = 1;
+  const TriangleMesh folding = box;
 
   const CrossingRepair repair = repairCrossingsLocally(box, crossings, movable, 1.1);
 
   EXPECT_TRUE(repair.undone);
+  expectTheChangeFlagged(folding, box, repair, movable);
+  expectTheLocalValidationWhole(box, folded, repair);
   EXPECT_EQ(repair.flips + repair.collapses, 0u);
   EXPECT_GE(repair.moves, 1u);
   const MeshValidation after = validateMesh(box);
@@ -273,7 +310,8 @@ TEST(CrossingRepair, ARemeshFoldThatNoSingleOperationImprovesIsUndoneInTwo)
   const CrossingRepair repair = repairCrossingsLocally(patch, crossings, movable, edge);
 
   EXPECT_TRUE(repair.undone);
-  expectEveryChangedTriangleHasAMovableCorner(folded, patch, repair, movable);
+  expectTheChangeFlagged(folded, patch, repair, movable);
+  expectTheLocalValidationWhole(patch, before, repair); // an open patch: its edges gathered whole
   EXPECT_TRUE(selfIntersectingTrianglePairs(patch).empty());
   const MeshValidation after = validateMesh(patch);
   EXPECT_EQ(after.boundaryEdges, before.boundaryEdges); // the patch's rim, untouched
@@ -330,6 +368,12 @@ TEST(NarrowTriangleWidening, TheNeedlesAroundAPushedVertexAreTakenAwayAndTheFace
   const MeshValidation again = validateMesh(widened);
   EXPECT_EQ(again.selfIntersections, 0u);
   slicemesh::testing::expectSameValidation(after, again, "widened");
+  // The widening's own record of what it changed, on which that validation relies.
+  TriangleMesh locally = box;
+  const std::vector<char> everyVertex(box.points.size(), 1);
+  const CrossingRepair widening = widenNarrowTrianglesLocally(locally, everyVertex, 1.0, 30.0);
+  EXPECT_GT(widening.operations(), 0u);
+  expectTheChangeFlagged(box, locally, widening, everyVertex);
   // Collapses and flips move no point: every vertex is one of the box's, the pushed one included.
   for (const Point3& p : widened.points)
     EXPECT_NE(vertexAt(box, p), -1);
