@@ -1,6 +1,7 @@
 #include "DistinctFiles.h"
 
 #include "Core/SliceMeshTypes.h"
+#include "DetachedDataFiles.h"
 #include "FileReplacement.h"
 
 #include <algorithm>
@@ -70,6 +71,12 @@ std::vector<RunFile> runFiles(const PipelineSettings& settings)
     { "--snapshot", settings.snapshotFile, true },
     { "--returnparameterfile", settings.returnParameterFile, true },
   };
+  // A detached header's data are read with it: "data file: payload.stl" is overwritten as surely.
+  const std::vector<std::string> dataFiles = detachedDataFiles(settings.inputVolume);
+  std::vector<RunFile> data;
+  for (const std::string& dataFile : dataFiles)
+    data.push_back({ "the data file of <inputVolume>", dataFile, false });
+  files.insert(files.begin() + 1, data.begin(), data.end());
   files.erase(std::remove_if(files.begin(), files.end(), [](const RunFile& file) { return file.path.empty(); }),
               files.end());
   for (RunFile& file : files)

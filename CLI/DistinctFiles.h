@@ -12,9 +12,11 @@ namespace slicemesh::cli
 
 /** Throws PipelineFailure(BadArguments), one line naming both options and the path, when an output
  *  (the mesh, --report, --snapshot, --returnparameterfile) is the same file as an input (the input
- *  volume or contour file, --inputContours or the structure set of a DICOM folder, --colorTable) or
- *  as another output. Paths are compared where they lead: links followed, as a write follows them,
- *  and "." and ".." resolved, whether or not the file exists yet. Nothing is read or written. */
+ *  volume or contour file, the files a detached volume header names as its data, --inputContours or
+ *  the structure set of a DICOM folder, --colorTable) or as another output. Paths are compared where
+ *  they lead: links followed, as a write follows them, and "." and ".." resolved, whether or not the
+ *  file exists yet. Nothing is written, and of the input only its header's text is read
+ *  (detachedDataFiles). */
 void requireDistinctFiles(const PipelineSettings& settings);
 
 /** The same for `structureFile`, the mesh of a label or ROI to be written into --outputDirectory,

@@ -279,7 +279,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
                            std::vector<LabelReport>* labels)
 {
   const auto began = Clock::now();
-  // A usage error, before the input is so much as opened.
+  // A usage error, before the input's voxels are read (of a detached header, its text is).
   requireDistinctFiles(settings);
   const bool fromContours = settings.contours.enabled();
   // A segmentation file (.seg.nrrd, DICOM SEG) names its structures: one mesh per segment.

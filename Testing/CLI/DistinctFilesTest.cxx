@@ -62,6 +62,17 @@ fs::path writeContourFile(const fs::path& path, const std::string& name)
   return path;
 }
 
+/** The ball's voxels, raw: the data file a detached header names. */
+std::string ballVoxels()
+{
+  std::string voxels;
+  for (int k = 0; k < 20; ++k)
+    for (int j = 0; j < 20; ++j)
+      for (int i = 0; i < 20; ++i)
+        voxels += (i - 9.5) * (i - 9.5) + (j - 9.5) * (j - 9.5) + (k - 9.5) * (k - 9.5) < 36.0 ? '\1' : '\0';
+  return voxels;
+}
+
 /** Byte for byte as it was (compared without printing a mesh's bytes when it is not). */
 void expectUnchanged(const fs::path& file, const std::string& before)
 {
@@ -165,6 +176,37 @@ TEST(DistinctFiles, AnROIsMeshNamedAsTheInputInTheOutputFolderIsRefused)
     << r.err;
   expectUnchanged(input, fileText(contours));
   EXPECT_FALSE(fs::exists(folder / "again.vtp"));
+}
+
+TEST(DistinctFiles, AnOutputNamedAsTheDataFileOfADetachedHeaderIsRefused)
+{
+  // A header's voxels are in a file of any name, even one of a mesh's extension: writing the mesh
+  // there would overwrite the input's voxels.
+  const fs::path folder = freshFolder("distinct-detached-data");
+  const std::string voxels = ballVoxels();
+  const fs::path nrrdData = folder / "payload.stl";
+  std::ofstream(nrrdData, std::ios::binary) << voxels;
+  const fs::path nrrd = folder / "ball.nhdr";
+  std::ofstream(nrrd) << "NRRD0004\ntype: unsigned char\ndimension: 3\nsizes: 20 20 20\n"
+                      << "spacings: 1 1 1\nencoding: raw\ndata file: payload.stl\n";
+  expectRefused(runSliceMesh(quoted(nrrd.string()) + " " + quoted(nrrdData.string())),
+                "the data file of <inputVolume>", "<outputModel>", nrrdData.string());
+  expectUnchanged(nrrdData, voxels);
+
+  const fs::path metaData = folder / "voxels.json";
+  std::ofstream(metaData, std::ios::binary) << voxels;
+  const fs::path meta = folder / "ball.mhd";
+  std::ofstream(meta) << "ObjectType = Image\nNDims = 3\nDimSize = 20 20 20\nElementSpacing = 1 1 1\n"
+                      << "ElementType = MET_UCHAR\nElementDataFile = voxels.json\n";
+  expectRefused(runSliceMesh("--report " + quoted(metaData.string()) + " " + quoted(meta.string()) + " " +
+                             quoted((folder / "out.vtp").string())),
+                "the data file of <inputVolume>", "--report", metaData.string());
+  expectUnchanged(metaData, voxels);
+  EXPECT_FALSE(fs::exists(folder / "out.vtp"));
+
+  // The headers are good ones: meshed into a file of its own, each run succeeds.
+  EXPECT_EQ(runSliceMesh(quoted(nrrd.string()) + " " + quoted((folder / "n.vtp").string())).exitCode, cli::Success);
+  EXPECT_EQ(runSliceMesh(quoted(meta.string()) + " " + quoted((folder / "m.vtp").string())).exitCode, cli::Success);
 }
 
 TEST(DistinctFiles, FilesOfTheirOwnAndOneInputGivenTwiceAreAccepted)
