@@ -111,6 +111,15 @@ FileReplacement::~FileReplacement()
 
 void FileReplacement::commit()
 {
+  // The replaced file's permission bits carry over: a mesh kept private (0600) is not made readable
+  // by all through the temporary's umask default. A file system without them may refuse: no matter.
+  std::error_code noEarlier;
+  const fs::file_status earlier = fs::status(m_Target, noEarlier);
+  if (!noEarlier && fs::is_regular_file(earlier))
+  {
+    std::error_code ignored;
+    fs::permissions(m_Temporary, earlier.permissions() & fs::perms::all, fs::perm_options::replace, ignored);
+  }
   // std::rename: one rename(2), atomic within the folder.
   if (std::rename(m_Temporary.c_str(), m_Target.c_str()) != 0)
     throw Error(m_Failure + ": renaming the finished file into place failed");

@@ -45,7 +45,9 @@ public:
   /** The file it replaces: writablePlace(path). */
   const std::filesystem::path& target() const { return m_Target; }
 
-  /** The temporary file moved into place; throws Error (the temporary removed) if it cannot be. */
+  /** The temporary file moved into place, with the permission bits of the file it replaces (read,
+   *  write and execute; not set-user-ID and the like, nor the owner); throws Error (the temporary
+   *  removed) if it cannot be. */
   void commit();
 
 private:

@@ -203,6 +203,29 @@ TEST(EndToEnd, OutputsThroughSymbolicLinksReplaceTheFilesTheyName)
 }
 
 TEST(EndToEnd, GrayscaleWithOtsuFindsTheBrightObject)
+TEST(EndToEnd, ReplacedOutputsKeepTheirPermissions)
+{
+  // A mesh and a report kept private (0600) stay so once replaced; the one-mesh and the multi-label
+  // runs write them differently (one file, files committed together).
+  const fs::path folder = freshFolder("e2e-permissions");
+  const fs::perms ownerOnly = fs::perms::owner_read | fs::perms::owner_write;
+  const auto permissionsOf = [](const fs::path& path) { return fs::status(path).permissions() & fs::perms::all; };
+  for (const std::string& run : { "-l 2", "--splitLabels" })
+  {
+    for (const std::string name : { "out.vtp", "report.json" })
+    {
+      std::ofstream(folder / name) << "an earlier run's";
+      fs::permissions(folder / name, ownerOnly);
+    }
+    const RunResult r = runSliceMesh(run + " --report " + quoted((folder / "report.json").string()) + " " +
+                                     quoted(twoBoxesLabelMap(folder).string()) + " " + quoted((folder / "out.vtp").string()));
+    ASSERT_EQ(r.exitCode, cli::Success) << r.err;
+    EXPECT_NE(fileText(folder / "out.vtp"), "an earlier run's") << run;
+    EXPECT_EQ(permissionsOf(folder / "out.vtp"), ownerOnly) << run;
+    EXPECT_EQ(permissionsOf(folder / "report.json"), ownerOnly) << run;
+  }
+}
+
 {
   const fs::path folder = freshFolder("e2e-grayscale");
   const fs::path input = folder / "bright-box.mha";

@@ -149,6 +149,35 @@ std::vector<std::unique_ptr<FileReplacement>> writtenReplacements(const fs::path
   return files;
 }
 
+TEST(FileReplacement, AReplacedFileKeepsItsPermissions)
+{
+  // The temporary is made with the umask's default (0644 as a rule): a private mesh stays private.
+  const fs::path folder = freshFolder("permissions");
+  const auto permissionsOf = [](const fs::path& path) { return fs::status(path).permissions() & fs::perms::all; };
+  std::ofstream(folder / "private.vtp") << "before";
+  fs::permissions(folder / "private.vtp", fs::perms::owner_read | fs::perms::owner_write);
+  {
+    FileReplacement file((folder / "private.vtp").string(), "mesh");
+    write(file, "after");
+    file.commit();
+  }
+  EXPECT_EQ(fileText(folder / "private.vtp"), "after");
+  EXPECT_EQ(permissionsOf(folder / "private.vtp"), fs::perms::owner_read | fs::perms::owner_write);
+
+  // Committed together, the same; a new file has the permissions any new file gets.
+  std::ofstream(folder / "group.vtp") << "before";
+  const fs::perms group = fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read;
+  fs::permissions(folder / "group.vtp", group);
+  std::ofstream(folder / "plain.txt") << "a new file";
+  {
+    const auto files = writtenReplacements(folder, { "group.vtp", "new.vtp" });
+    commitTogether(files);
+  }
+  EXPECT_EQ(fileText(folder / "group.vtp"), "group.vtp new");
+  EXPECT_EQ(permissionsOf(folder / "group.vtp"), group);
+  EXPECT_EQ(permissionsOf(folder / "new.vtp"), permissionsOf(folder / "plain.txt"));
+}
+
 TEST(FileReplacement, FilesCommittedTogetherReplaceTheirsAllAtOnce)
 {
   const fs::path folder = freshFolder("together");
