@@ -343,6 +343,37 @@ std::string volumeName(const itk::ImageBase<3>* volume)
   return name.str();
 }
 
+/** Why a label map's mask of every non-zero voxel is empty: "every voxel is 0", or, where some are
+ *  NaN (taken as background, as ITK's threshold filters leave them out), that and how many are NaN
+ *  and the first of them: a float volume masked with NaN outside its structures is common, and one
+ *  all 0 and NaN should not read as all 0. */
+template <typename TImage>
+std::string nothingNonZeroText(const TImage* volume)
+{
+  using Pixel = typename TImage::PixelType;
+  std::ostringstream text;
+  text << volumeName(volume) << ": every voxel is 0";
+  if constexpr (std::is_floating_point_v<Pixel>)
+  {
+    const Pixel* voxels = volume->GetBufferPointer();
+    const std::size_t count = volume->GetBufferedRegion().GetNumberOfPixels();
+    const auto isNaN = [](Pixel v) { return std::isnan(v); };
+    const Pixel* first = std::find_if(voxels, voxels + count, isNaN);
+    if (first != voxels + count)
+    {
+      const auto size = volume->GetBufferedRegion().GetSize();
+      const auto start = volume->GetBufferedRegion().GetIndex();
+      const std::size_t at = static_cast<std::size_t>(first - voxels);
+      text << " or NaN, taken as background (" << std::count_if(first, voxels + count, isNaN)
+           << " voxels are NaN, the first at index (" << start[0] + static_cast<long>(at % size[0]) << ", "
+           << start[1] + static_cast<long>(at / size[0] % size[1]) << ", "
+           << start[2] + static_cast<long>(at / (size[0] * size[1])) << "))";
+    }
+  }
+  text << "; nothing to mesh";
+  return text.str();
+}
+
 /** The label map's mask: the voxels of the label asked for, or every non-zero one; refined.
  *  `labels`: the label map's labels (for the message when the label is absent), if it is one. */
 template <typename TImage>
@@ -371,7 +402,7 @@ MaskVolume::Pointer labelMapMask(const TImage* volume, const SegmentationOptions
     }
   }
   else if (fillMask(volume, mask, [](Pixel v) { return v != Pixel(0) && !std::isnan(static_cast<float>(v)); }) == 0)
-    throw Error(volumeName(volume) + ": every voxel is 0; nothing to mesh");
+    throw Error(nothingNonZeroText(volume));
   refineMask(mask, options.refinement);
   return mask;
 }

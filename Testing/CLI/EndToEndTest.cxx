@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <type_traits>
@@ -202,7 +203,6 @@ TEST(EndToEnd, OutputsThroughSymbolicLinksReplaceTheFilesTheyName)
     << "no temporary files";
 }
 
-TEST(EndToEnd, GrayscaleWithOtsuFindsTheBrightObject)
 TEST(EndToEnd, ReplacedOutputsKeepTheirPermissions)
 {
   // A mesh and a report kept private (0600) stay so once replaced; the one-mesh and the multi-label
@@ -226,6 +226,7 @@ TEST(EndToEnd, ReplacedOutputsKeepTheirPermissions)
   }
 }
 
+TEST(EndToEnd, GrayscaleWithOtsuFindsTheBrightObject)
 {
   const fs::path folder = freshFolder("e2e-grayscale");
   const fs::path input = folder / "bright-box.mha";
@@ -1045,6 +1046,39 @@ TEST(EndToEnd, ANameTwoLabelsShareMeshesBothAndSaysSo)
             std::string::npos)
     << twice.out;
   EXPECT_TRUE(fs::exists(folder / "lung" / "002_LungDup.vtp"));
+}
+
+TEST(EndToEnd, ALabelMapsNaNVoxelsAreBackgroundAndSaidSoWhenNothingElseIsLeft)
+{
+  // NaN is no label: in a float volume given as a label map it is background (a map masked with NaN
+  // outside its structures meshes them), and one of nothing but 0 and NaN does not say "every voxel is 0".
+  const fs::path folder = freshFolder("e2e-nan-labels");
+  const auto inBall = [](int i, int j, int k) { return (i - 9.5) * (i - 9.5) + (j - 9.5) * (j - 9.5) + (k - 7.5) * (k - 7.5) < 25.0; };
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  writeMetaImageOf<float>(folder / "nan-ball.mha", { 20, 20, 16 }, { 1.0, 1.0, 1.0 },
+                          [&](int i, int j, int k) { return inBall(i, j, k) ? nan : 0.0f; });
+  std::array<int, 3> first{ -1, -1, -1 }; // in the file's order: i fastest
+  for (int k = 15; k >= 0; --k)
+    for (int j = 19; j >= 0; --j)
+      for (int i = 19; i >= 0; --i)
+        if (inBall(i, j, k))
+          first = { i, j, k };
+  const RunResult r = runSliceMesh("--inputKind LabelMap " + quoted((folder / "nan-ball.mha").string()) + " " +
+                                   quoted((folder / "nan.vtp").string()));
+  EXPECT_EQ(r.exitCode, cli::EmptySegmentation) << r.err;
+  EXPECT_EQ(linesOf(r.err).size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("every voxel is 0 or NaN, taken as background"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the first at index (" + std::to_string(first[0]) + ", " + std::to_string(first[1]) + ", " +
+                       std::to_string(first[2]) + ")"),
+            std::string::npos)
+    << r.err;
+  EXPECT_FALSE(fs::exists(folder / "nan.vtp"));
+
+  writeMetaImageOf<float>(folder / "nan-outside.mha", { 20, 20, 16 }, { 1.0, 1.0, 1.0 },
+                          [&](int i, int j, int k) { return inBall(i, j, k) ? 1.0f : i < 3 ? nan : 0.0f; });
+  const RunResult masked = runSliceMesh("--inputKind LabelMap " + quoted((folder / "nan-outside.mha").string()) + " " +
+                                        quoted((folder / "ball.vtp").string()));
+  EXPECT_EQ(masked.exitCode, cli::Success) << masked.err;
 }
 
 } // namespace slicemesh::testing
