@@ -452,6 +452,20 @@ StackedContours stackContours(const std::vector<Polygon3>& contours, const Conto
                              millimetres(largest) + " (usual " + millimetres(spacing) + ")");
   }
 
+  // A slice between two that are one spacing apart (a contour drawn on another image, or on a plane
+  // the planner interpolated): the tiling takes it as a slice of the structure, so what the slices
+  // on either side hold and it does not is closed at it. Meshed as drawn, but said: an organ drawn on
+  // every slice is split in two there, for the sake of one contour beside it.
+  for (std::size_t k = 1; k + 1 < slices.size(); ++k)
+  {
+    const double below = slices[k].z - slices[k - 1].z, above = slices[k + 1].z - slices[k].z;
+    if (std::max(below, above) < 0.9 * spacing && std::abs(below + above - spacing) <= 0.05 * spacing)
+      result.notes.push_back("the slice at " + millimetres(slices[k].z) + " lies between the slices at " +
+                             millimetres(slices[k - 1].z) + " and " + millimetres(slices[k + 1].z) +
+                             ", one spacing apart: what they hold and it does not is closed on both sides of it "
+                             "(a structure drawn across it is split there)");
+  }
+
   // A gap of one missing slice is tiled across, as a planner interpolates; a longer one means the
   // structure stops and starts again: empty slices there close each piece on its own.
   for (std::size_t k = 0; k < slices.size(); ++k)

@@ -216,6 +216,31 @@ TEST(ContourStacking, UnevenSpacingIsToleratedAndReported)
   EXPECT_TRUE(mentions(stacked.notes, "uneven"));
 }
 
+TEST(ContourStacking, ASliceBetweenTwoOneSpacingApartIsSaidToSplitWhatItDoesNotHold)
+{
+  // A square on every 2.5 mm slice and a small one beside it at 13.75 mm, between two of them: the
+  // square is closed on both sides of that slice, and a note says so.
+  std::vector<Polygon3> contours;
+  for (int k = 0; k <= 10; ++k)
+    contours.push_back(square({ 0.0, 0.0, 2.5 * k }, { 1, 0, 0 }, { 0, 1, 0 }, 10.0));
+  std::vector<Polygon3> between = contours;
+  between.push_back(square({ 40.0, 0.0, 13.75 }, { 1, 0, 0 }, { 0, 1, 0 }, 2.0));
+  const StackedContours stacked = stackContours(between);
+  EXPECT_NEAR(stacked.stack.sliceSpacing, 2.5, 1e-12);
+  EXPECT_TRUE(mentions(stacked.notes, "the slice at 13.75 mm lies between the slices at 12.5 mm and 15 mm"))
+    << (stacked.notes.empty() ? std::string() : stacked.notes.back());
+  // As well 0.3 mm above a slice, past the quarter-gap tolerance that would make it one with it.
+  std::vector<Polygon3> near = contours;
+  near.push_back(square({ 40.0, 0.0, 12.8 }, { 1, 0, 0 }, { 0, 1, 0 }, 2.0));
+  EXPECT_TRUE(mentions(stackContours(near).notes, "the slice at 12.8 mm lies between"));
+  // Evenly spaced, or merely uneven (2.9 and 3.2 mm gaps): nothing between.
+  EXPECT_FALSE(mentions(stackContours(contours).notes, "lies between"));
+  std::vector<Polygon3> uneven;
+  for (double z : { 0.0, 2.9, 6.1, 9.0, 12.0 })
+    uneven.push_back(square({ 0.0, 0.0, z }, { 1, 0, 0 }, { 0, 1, 0 }, 5.0));
+  EXPECT_FALSE(mentions(stackContours(uneven).notes, "lies between"));
+}
+
 TEST(ContourStacking, OneMissingSliceIsTiledAcrossALongerGapClosesEachSide)
 {
   std::vector<Polygon3> contours;
