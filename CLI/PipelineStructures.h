@@ -91,7 +91,7 @@ constexpr std::size_t speckNoiseCount = 1000;
 bool volumeShortfall(const LabelReport& report);
 
 /** The one line for the structures `shortOfVolume` (indices into `structures`, volumeShortfall):
- *  how many, and the first's volumes. */
+ *  how many, and the first's volumes (of its voxels; an ROI's, noun "ROI", of its contours' slabs). */
 std::string volumeShortfallWarning(const std::vector<Structure>& structures, const std::vector<std::size_t>& shortOfVolume,
                                    const std::string& noun);
 
