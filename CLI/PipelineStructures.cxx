@@ -355,22 +355,20 @@ bool volumeShortfall(const LabelReport& report)
 }
 
 std::string volumeShortfallWarning(const std::vector<Structure>& structures, const std::vector<std::size_t>& shortOfVolume,
-                                   const std::string& noun)
+                                   const std::string& noun, bool fromContours)
 {
   const Structure& first = structures[shortOfVolume.front()];
   const double enclosed = first.report.validation.volume, target = first.report.quality.targetVolume;
-  // An ROI's volume is its contours' (each a slab one slice thick), a label's its voxels'.
-  const bool contours = noun == "ROI";
   std::ostringstream text;
   if (structures.size() > 1)
     text << shortOfVolume.size() << " of the " << structures.size() << " meshes enclose more than 5% "
-         << "more or less than their " << (contours ? "contours" : "voxels") << "; the first, " << noun << " "
+         << "more or less than their " << (fromContours ? "contours" : "voxels") << "; the first, " << noun << " "
          << first.report.label << " (" << first.report.name << "), ";
   else
     text << "the mesh ";
   text << "encloses " << measureText(enclosed, 1) << " mm^3, " << measureText(100.0 * std::abs(enclosed - target) / target, 0)
        << "% " << (enclosed < target ? "less" : "more") << " than the " << measureText(target, 1)
-       << (contours ? " mm^3 of its contours' slabs" : " mm^3 of its voxels");
+       << (fromContours ? " mm^3 of its contours' slabs" : " mm^3 of its voxels");
   if (first.report.quality.trianglesKeptTiled > 0)
     text << " (" << first.report.quality.trianglesKeptTiled
          << " triangles kept in their tiled shape where finished pieces crossed: structures thinner or closer than "

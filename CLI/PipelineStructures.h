@@ -91,9 +91,10 @@ constexpr std::size_t speckNoiseCount = 1000;
 bool volumeShortfall(const LabelReport& report);
 
 /** The one line for the structures `shortOfVolume` (indices into `structures`, volumeShortfall):
- *  how many, and the first's volumes (of its voxels; an ROI's, noun "ROI", of its contours' slabs). */
+ *  how many, and the first's volumes: of its voxels, or `fromContours`, of its contours' slabs (an
+ *  ROI's volume as a planning system counts it). */
 std::string volumeShortfallWarning(const std::vector<Structure>& structures, const std::vector<std::size_t>& shortOfVolume,
-                                   const std::string& noun);
+                                   const std::string& noun, bool fromContours);
 
 /** One structure per ROI asked for (every ROI by default), in the file's order: its contours as a
  *  stack along the reference image's slice direction and spacing when they lie on its slices (else

@@ -590,7 +590,7 @@ PipelineResult runPipeline(const PipelineSettings& settings, ProgressReporter& p
   // On stdout: specks make most of these, as asked, and 3D Slicer marks a run that writes to
   // stderr as failing.
   if (!shortOfVolume.empty())
-    std::cout << "SliceMesh: " << volumeShortfallWarning(structures, shortOfVolume, noun) << std::endl;
+    std::cout << "SliceMesh: " << volumeShortfallWarning(structures, shortOfVolume, noun, fromContours) << std::endl;
   // One mesh per label asked for without a folder: said, since the help's "files" read as if they
   // were written anyway.
   if (perLabel && !structureFiles && structures.size() > 1)

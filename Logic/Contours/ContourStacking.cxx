@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <tuple>
 
 namespace slicemesh
 {
@@ -456,14 +457,33 @@ StackedContours stackContours(const std::vector<Polygon3>& contours, const Conto
   // the planner interpolated): the tiling takes it as a slice of the structure, so what the slices
   // on either side hold and it does not is closed at it. Meshed as drawn, but said: an organ drawn on
   // every slice is split in two there, for the sake of one contour beside it.
-  for (std::size_t k = 1; k + 1 < slices.size(); ++k)
+  // One note for all of them, naming the first: a stretch drawn on half-spacing slices has many.
+  std::vector<char> between(slices.size(), 0);
+  std::size_t firstBelow = 0, firstAbove = 0;
+  for (std::size_t k = 0; k + 2 < slices.size(); ++k)
   {
-    const double below = slices[k].z - slices[k - 1].z, above = slices[k + 1].z - slices[k].z;
-    if (std::max(below, above) < 0.9 * spacing && std::abs(below + above - spacing) <= 0.05 * spacing)
-      result.notes.push_back("the slice at " + millimetres(slices[k].z) + " lies between the slices at " +
-                             millimetres(slices[k - 1].z) + " and " + millimetres(slices[k + 1].z) +
-                             ", one spacing apart: what they hold and it does not is closed on both sides of it "
-                             "(a structure drawn across it is split there)");
+    std::size_t j = k + 2; // the slice about one spacing above k, slices between them
+    while (j + 1 < slices.size() && slices[j].z - slices[k].z < 0.95 * spacing)
+      ++j;
+    if (std::abs(slices[j].z - slices[k].z - spacing) > 0.05 * spacing)
+      continue;
+    if (std::find(between.begin(), between.end(), 1) == between.end())
+      std::tie(firstBelow, firstAbove) = std::pair{ k, j };
+    std::fill(between.begin() + static_cast<std::ptrdiff_t>(k + 1), between.begin() + static_cast<std::ptrdiff_t>(j), 1);
+  }
+  if (const auto count = std::count(between.begin(), between.end(), 1); count > 0)
+  {
+    std::ostringstream note;
+    if (count == 1)
+      note << "the slice at " << millimetres(slices[firstBelow + 1].z) << " lies between the slices at "
+           << millimetres(slices[firstBelow].z) << " and " << millimetres(slices[firstAbove].z) << ", one spacing apart";
+    else
+      note << count << " slices lie between two slices one spacing apart, the first at "
+           << millimetres(slices[firstBelow + 1].z) << " between the slices at " << millimetres(slices[firstBelow].z)
+           << " and " << millimetres(slices[firstAbove].z);
+    note << ": what those hold and it does not is closed on both sides of it (a structure drawn across it is "
+            "split there)";
+    result.notes.push_back(note.str());
   }
 
   // A gap of one missing slice is tiled across, as a planner interpolates; a longer one means the

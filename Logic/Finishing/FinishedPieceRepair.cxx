@@ -87,11 +87,14 @@ std::size_t repairedLocally(TriangleMesh& mesh, MeshValidation& validation,
                             std::size_t& unsmoothedVertices)
 {
   const std::vector<Point3> places = crossingPlaces(mesh, crossings);
+  // The repair starts from these pairs: only if they are every crossing the validation counted does
+  // undoing them all leave none among the triangles it did not change.
+  const bool everyCrossingListed = crossings.size() == validation.selfIntersections;
   std::vector<char> heldNow = held;
   const std::size_t atRemeshBefore = verticesAt(mesh.points, unsmoothed);
-  std::vector<char> movable = repairableVertices(mesh, places, held, options);
+  const std::vector<char> movable = repairableVertices(mesh, places, held, options);
   const CrossingRepair repair = repairCrossingsLocally(mesh, crossings, movable, options.remeshing.targetEdgeLength);
-  renumber(repair, unsmoothed, smoothed, heldNow, movable);
+  renumber(repair, unsmoothed, smoothed, heldNow);
   for (std::size_t v = 0; v < mesh.points.size(); ++v)
     if (!samePoint(mesh.points[v], unsmoothed[v]) && !samePoint(mesh.points[v], smoothed[v])) // moved by the repair
       unsmoothed[v] = smoothed[v] = mesh.points[v];
@@ -111,7 +114,8 @@ std::size_t repairedLocally(TriangleMesh& mesh, MeshValidation& validation,
   // takes a second and holds a grid of about 100 bytes a triangle); the edges are gathered around
   // them only.
   MeshValidation leftAlone = validation;
-  leftAlone.selfIntersections = 0;
+  if (everyCrossingListed)
+    leftAlone.selfIntersections = 0; // else validated whole
   validation = validateMeshAfterLocalChange(mesh, leftAlone, repair.changed, crossings);
   crossedAt = crossingPlaces(mesh, crossings);
   if (validation.selfIntersections > 0 || !resmooth)

@@ -364,8 +364,9 @@ std::string nothingNonZeroText(const TImage* volume)
       const auto size = volume->GetBufferedRegion().GetSize();
       const auto start = volume->GetBufferedRegion().GetIndex();
       const std::size_t at = static_cast<std::size_t>(first - voxels);
-      text << " or NaN, taken as background (" << std::count_if(first, voxels + count, isNaN)
-           << " voxels are NaN, the first at index (" << start[0] + static_cast<long>(at % size[0]) << ", "
+      const auto nans = std::count_if(first, voxels + count, isNaN);
+      text << " or NaN, taken as background (" << nans << (nans == 1 ? " voxel is" : " voxels are")
+           << " NaN, the first at index (" << start[0] + static_cast<long>(at % size[0]) << ", "
            << start[1] + static_cast<long>(at / size[0] % size[1]) << ", "
            << start[2] + static_cast<long>(at / (size[0] * size[1])) << "))";
     }

@@ -229,10 +229,25 @@ TEST(ContourStacking, ASliceBetweenTwoOneSpacingApartIsSaidToSplitWhatItDoesNotH
   EXPECT_NEAR(stacked.stack.sliceSpacing, 2.5, 1e-12);
   EXPECT_TRUE(mentions(stacked.notes, "the slice at 13.75 mm lies between the slices at 12.5 mm and 15 mm"))
     << (stacked.notes.empty() ? std::string() : stacked.notes.back());
-  // As well 0.3 mm above a slice, past the quarter-gap tolerance that would make it one with it.
+  // As well 0.3 mm above a slice, past the 0.25 mm that would make it one with it.
   std::vector<Polygon3> near = contours;
   near.push_back(square({ 40.0, 0.0, 12.8 }, { 1, 0, 0 }, { 0, 1, 0 }, 2.0));
   EXPECT_TRUE(mentions(stackContours(near).notes, "the slice at 12.8 mm lies between"));
+  // Two between one pair, and a stretch drawn on half-spacing slices: one note, counting them all.
+  std::vector<Polygon3> two = contours;
+  for (double z : { 13.3, 14.1 })
+    two.push_back(square({ 40.0, 0.0, z }, { 1, 0, 0 }, { 0, 1, 0 }, 2.0));
+  EXPECT_TRUE(mentions(stackContours(two).notes, "2 slices lie between two slices one spacing apart, the first at 13.3 mm "
+                                                 "between the slices at 12.5 mm and 15 mm"));
+  std::vector<Polygon3> halves = contours;
+  for (double z : { 3.75, 6.25, 8.75 })
+    halves.push_back(square({ 0.0, 0.0, z }, { 1, 0, 0 }, { 0, 1, 0 }, 10.0));
+  const StackedContours halved = stackContours(halves);
+  std::size_t betweenNotes = 0;
+  for (const std::string& note : halved.notes)
+    betweenNotes += note.find("lie between") != std::string::npos || note.find("lies between") != std::string::npos;
+  EXPECT_EQ(betweenNotes, 1u);
+  EXPECT_TRUE(mentions(halved.notes, "5 slices lie between two slices one spacing apart, the first at 3.75 mm between the slices at 2.5 mm and 5 mm"));
   // Evenly spaced, or merely uneven (2.9 and 3.2 mm gaps): nothing between.
   EXPECT_FALSE(mentions(stackContours(contours).notes, "lies between"));
   std::vector<Polygon3> uneven;
